@@ -1,0 +1,85 @@
+#ifndef bilayer_contact_solver_h
+#define bilayer_contact_solver_h
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <deal.II/lac/block_vector.h>
+
+#include <bilayer/interface.h>
+#include <bilayer/parameters.h>
+#include <bilayer/subproblem.h>
+
+#include <array>
+#include <string>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  /// The four subproblems, indexed by Interface::index().
+  using Subproblems = std::array<ElasticSubproblem *, 4>;
+
+  /// How an outer solve ended.
+  struct SolverResult
+  {
+    std::string   solver;
+    unsigned int  iterations       = 0;
+    unsigned long subdomain_solves = 0;
+    bool          converged        = false;
+    bool          diverged         = false;
+    /// Value of the stopping rule at the end [see StoppingRule].
+    double stopping_value = 0;
+    /// Why the solve ended, one line.
+    std::string message;
+  };
+
+  /**
+   * The subdomain solves that every outer solver repeats: the multiplier
+   * terms of the interface as loads, then the four independent solves (run
+   * as parallel tasks; the factorisations are reused).
+   */
+  void
+  solve_subproblems(const Subproblems         &subproblems,
+                    const Interface           &interface,
+                    const BlockVector<double> &multipliers,
+                    Solutions                 &solutions);
+
+  /**
+   * The Uzawa algorithm of paper.md §4:
+   *   1. mu^0 given (zero, or a warm start);
+   *   2. solve the four subproblems with the multiplier loads of mu^k;
+   *   3. mu^{k+1} = P(mu^k + theta g^k), g^k the jumps (Interface::jumps);
+   *   4. stop when the stopping rule holds at step k (k >= 1), else repeat.
+   * Iterations are counted as the k at which the rule holds, so the work is
+   * 4 (k + 1) subdomain solves.
+   *
+   * The iteration is stopped as divergent when the multipliers or solutions
+   * stop being finite, or when the D-norm of the multiplier increment
+   * exceeds its smallest value so far by Solver/Divergence growth factor:
+   * for theta below the threshold 2 / lambda_max(D^{-1} C A^{-1} C^T) the
+   * projected step is non-expansive, so the increments cannot grow.
+   */
+  class UzawaSolver
+  {
+  public:
+    UzawaSolver(const SolverParameters &parameters,
+                const OutputParameters &output,
+                const ConditionalOStream &pcout);
+
+    /// Run from the multipliers given in @p multipliers (sized by
+    /// Interface::initialize()); on return they and @p solutions hold the
+    /// last iterate.
+    SolverResult
+    solve(const Subproblems   &subproblems,
+          const Interface     &interface,
+          BlockVector<double> &multipliers,
+          Solutions           &solutions) const;
+
+  private:
+    const SolverParameters    parameters;
+    const OutputParameters    output;
+    const ConditionalOStream &pcout;
+  };
+} // namespace bilayer
+
+#endif

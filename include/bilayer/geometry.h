@@ -1,0 +1,96 @@
+#ifndef bilayer_geometry_h
+#define bilayer_geometry_h
+
+#include <deal.II/grid/tria.h>
+
+#include <bilayer/parameters.h>
+
+#include <array>
+#include <vector>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  /**
+   * Boundary ids of the subdomain meshes. The outer sides keep their own
+   * ids (so that each side can carry its own traction); which of them form
+   * Gamma_D is GeometryParameters::clamped. Sigma is split into the glued
+   * part Sigma \ gamma_c and the crack gamma_c.
+   */
+  namespace BoundaryIds
+  {
+    constexpr types::boundary_id left   = 0;
+    constexpr types::boundary_id right  = 1;
+    constexpr types::boundary_id bottom = 2;
+    constexpr types::boundary_id top    = 3;
+    constexpr types::boundary_id glued  = 4;
+    constexpr types::boundary_id crack  = 5;
+
+    inline types::boundary_id
+    of(const Side side)
+    {
+      return static_cast<types::boundary_id>(side);
+    }
+  } // namespace BoundaryIds
+
+  /// Size data of one subdomain mesh (the columns of the paper's Table 1).
+  struct MeshStatistics
+  {
+    unsigned int vertices = 0;
+    unsigned int cells    = 0;
+    /// Shortest and longest cell edge [length].
+    double h_min = 0;
+    double h_max = 0;
+  };
+
+  /**
+   * The two subdomains Omega- = (x_min, x_max) x (y_min, y_Sigma) and
+   * Omega+ = (x_min, x_max) x (y_Sigma, y_max), each with its own serial
+   * Triangulation. Both have the same number of cells along Sigma, so their
+   * traces match; the crack end points are mesh vertices (checked).
+   */
+  class Geometry
+  {
+  public:
+    Geometry(const GeometryParameters &geometry, const MeshParameters &mesh);
+
+    /// Build both meshes of refinement cycle @p cycle (cells along Sigma
+    /// times 2^cycle).
+    void
+    create_meshes(const unsigned int cycle);
+
+    const Triangulation<2> &
+    triangulation(const Subdomain subdomain) const;
+
+    MeshStatistics
+    statistics(const Subdomain subdomain) const;
+
+    /// P of Table 1: vertices on Sigma.
+    unsigned int
+    n_sigma_vertices() const;
+
+    /// M of Table 1: vertices on the outer boundary of Omega.
+    unsigned int
+    n_outer_vertices() const;
+
+    const GeometryParameters &
+    parameters() const
+    {
+      return geometry;
+    }
+
+  private:
+    void
+    make_subdomain(const Subdomain    subdomain,
+                   const unsigned int cells_along,
+                   const unsigned int cells_across,
+                   Triangulation<2>  &tria) const;
+
+    const GeometryParameters        geometry;
+    const MeshParameters            mesh;
+    std::array<Triangulation<2>, 2> triangulations;
+  };
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,252 @@
+#ifndef bilayer_interface_h
+#define bilayer_interface_h
+
+#include <deal.II/fe/fe_q.h>
+
+#include <deal.II/lac/block_vector.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <bilayer/parameters.h>
+#include <bilayer/subproblem.h>
+
+#include <array>
+#include <memory>
+#include <ostream>
+#include <vector>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  /// The four subproblem solutions, indexed by Interface::index().
+  using Solutions = std::array<Vector<double>, 4>;
+
+  /**
+   * Residuals of a computed solution (paper.md §3 and the KKT conditions of
+   * the discrete problem), all evaluated by the Interface.
+   */
+  struct InterfaceReport
+  {
+    /// The integral (12) of paper.md, Gauss quadrature on Sigma [length^2].
+    double constraint_violation = 0;
+    /// (12) divided by the integral of |u-|_1 + |u+|_1 + |v-|_1 + |v+|_1.
+    double relative_constraint_violation = 0;
+    /// Largest (u- - u+).nu on gamma_c at the Gauss points and nodes [length].
+    double max_penetration = 0;
+    /// Largest |trace| of the four subproblems on Sigma [length].
+    double displacement_scale = 0;
+    /// Largest violation of the discrete constraints (jumps that must vanish,
+    /// positive penetration at crack nodes) divided by displacement_scale.
+    double relative_discrete_violation = 0;
+    /// Smallest contact multiplier mu_c (0 without crack nodes) [stress].
+    double min_contact_multiplier = 0;
+    /// sum m mu_c |jump| / (sum m mu_c * displacement_scale) [-].
+    double complementarity = 0;
+    /// Largest |multiplier| / p [-].
+    double max_multiplier_over_bound = 0;
+  };
+
+  /**
+   * The interface Sigma: multiplier spaces, interface quadrature and the
+   * operators between multipliers and subproblems.
+   *
+   * <h3>Multipliers</h3>
+   * All multipliers live on one mesh of Sigma: the trace of the Omega-
+   * mesh (the breakpoints of its faces on Sigma), with continuous Lagrange
+   * elements of the degree of layer 1 whose nodes are the Gauss-Lobatto
+   * points of each segment. Three vector-valued multipliers (paper.md §3)
+   * are stored as the three blocks of a BlockVector, each with entries
+   * 2 a + c (node a, component c):
+   *  - block 0, layer 1 across Sigma: mu_c nu at nodes inside the open crack
+   *    (only the normal component, 0 <= mu_c <= p; the tangential component
+   *    is fixed to 0: no friction), mu_g at the other nodes (-p <= . <= p).
+   *    The crack tips belong to Sigma \ gamma_c: they are glued.
+   *  - blocks 1 and 2: lambda- and lambda+, which glue layer 1 to layer 2 on
+   *    each side (-p <= . <= p).
+   * Nodes on Gamma_D (the ends of Sigma on a clamped side) carry no
+   * multipliers (bounds [0, 0]): the Dirichlet condition already enforces
+   * the constraints there. Without non-penetration the crack nodes carry no
+   * layer-1 multiplier either (the linear problem of Fig. 3).
+   *
+   * <h3>Coupling</h3>
+   * For each subproblem s the matrix C_s, (C_s)_{2a+c, j} =
+   * int_Sigma phi_a psi_j^c ds, maps its dofs to the multiplier space. The
+   * quadrature is either the Gauss-Lobatto rule of the multiplier segments
+   * (lumped: C_s = D E_s with E_s the evaluation at the nodes, node-to-node
+   * coupling) or a Gauss rule on the common refinement of the multiplier
+   * mesh and the trace of s (consistent, mortar coupling). The trace of s at
+   * a point of Sigma is found by locating the point among the Sigma faces
+   * of s's mesh, so nothing assumes that the Omega- and Omega+ traces match:
+   * non-matching meshes only change the breakpoints of the common
+   * refinement. D = diag(int_Sigma phi_a ds) is the lumped multiplier mass.
+   *
+   * <h3>Discrete problem and update</h3>
+   * The multiplier terms of the four subproblems (paper.md §4, step 2) are
+   *   u-: -C^T (mu_1 + mu-),  u+: C^T (mu_1 - mu+),  v-: C^T mu-,
+   *   v+: C^T mu+.
+   * The jumps are g_1 = D^{-1} (C u- - C u+), g- = D^{-1} (C u- - C v-),
+   * g+ = D^{-1} (C u+ - C v+) ("weighted": the gradient of the Lagrangian in
+   * the D-metric, so that the Uzawa step mu <- P(mu + theta g) is a
+   * projected gradient step of the dual problem; the projection onto the
+   * box is the nodal clamp in that metric) or the traces evaluated at the
+   * nodes ("nodal", the paper's pointwise reading). With lumped coupling
+   * both are the nodal jumps and the discrete constraints are nodal:
+   * [u].nu >= 0 at crack nodes, u- = u+ at the other nodes, u = v at all
+   * nodes. Components that carry no multiplier have zero jump.
+   */
+  class Interface
+  {
+  public:
+    Interface(const GeometryParameters &geometry,
+              const ContactParameters  &contact);
+
+    /// Index of subproblem (layer, subdomain) in Solutions: u-, u+, v-, v+.
+    static unsigned int
+    index(const Layer layer, const Subdomain subdomain)
+    {
+      return 2 * static_cast<unsigned int>(layer) +
+             static_cast<unsigned int>(subdomain);
+    }
+
+    /// Build the multiplier mesh and all operators for the given
+    /// subproblems (indexed as in index()).
+    void
+    setup(const std::array<const ElasticSubproblem *, 4> &subproblems);
+
+    /// Zero multipliers of the right sizes.
+    void
+    initialize(BlockVector<double> &multipliers) const;
+
+    /// The multiplier terms of the four subproblems' loads.
+    void
+    apply(const BlockVector<double> &multipliers, Solutions &loads) const;
+
+    /// The jumps g (weighted or nodal, zero where no multiplier acts).
+    void
+    jumps(const Solutions &w, BlockVector<double> &g) const;
+
+    /// Clamp onto the multiplier sets.
+    void
+    project(BlockVector<double> &multipliers) const;
+
+    /// sqrt(sum_i D_i x_i^2) over all blocks.
+    double
+    weighted_norm(const BlockVector<double> &x) const;
+
+    /// Largest violation of the discrete constraints by the jumps g.
+    double
+    discrete_violation(const BlockVector<double> &g) const;
+
+    /// Largest |trace value| at the nodes of the four subproblems.
+    double
+    displacement_scale(const Solutions &w) const;
+
+    InterfaceReport
+    assess(const Solutions &w, const BlockVector<double> &multipliers) const;
+
+    /// One row per multiplier node: x, jumps, gaps, multipliers, traces.
+    void
+    write_csv(std::ostream              &out,
+              const Solutions           &w,
+              const BlockVector<double> &multipliers) const;
+
+    unsigned int
+    n_nodes() const
+    {
+      return node_x.size();
+    }
+
+    /// Multiplier components that are not fixed to zero.
+    unsigned int
+    n_multipliers() const;
+
+    /// Position x of node a.
+    double
+    node_position(const unsigned int a) const
+    {
+      return node_x[a];
+    }
+
+    bool
+    node_on_crack(const unsigned int a) const
+    {
+      return on_crack[a];
+    }
+
+  private:
+    /// A face of one subdomain mesh on Sigma.
+    struct SigmaFace
+    {
+      double                                x0, x1;
+      Triangulation<2>::active_cell_iterator cell;
+      /// Unit-cell coordinates of the face ends at x0 and x1.
+      Point<2> unit0, unit1;
+    };
+
+    /// A matrix with its own sparsity pattern.
+    struct PointMatrix
+    {
+      SparsityPattern      pattern;
+      SparseMatrix<double> matrix;
+    };
+
+    /// Sorted Sigma faces of a mesh.
+    static std::vector<SigmaFace>
+    sigma_faces(const Triangulation<2> &tria, const double sigma_height);
+
+    /**
+     * The matrix with rows 2 r + c whose product with the dofs of
+     * subproblem s gives sum_k weight_k * (component c of the trace at x_k),
+     * for the entries (r, x_k, weight_k) of @p points.
+     */
+    void
+    build_point_matrix(
+      const unsigned int                                    s,
+      const std::vector<std::tuple<unsigned int, double, double>> &points,
+      const unsigned int                                    n_rows,
+      PointMatrix                                          &result) const;
+
+    /// Multiplier segment containing x and the shape values there.
+    unsigned int
+    multiplier_shape_values(const double x, std::vector<double> &values) const;
+
+    /// The global multiplier node of local shape function i of segment e.
+    unsigned int
+    multiplier_node(const unsigned int e, const unsigned int i) const
+    {
+      return i == 0 ? e * degree : i == 1 ? (e + 1) * degree : e * degree + i - 1;
+    }
+
+    /// g = a - b, scaled by D^{-1} for the weighted sampling, masked.
+    void
+    difference(const Vector<double> &a,
+               const Vector<double> &b,
+               const unsigned int    block,
+               BlockVector<double>  &g) const;
+
+    const GeometryParameters geometry;
+    const ContactParameters  contact;
+
+    std::array<const ElasticSubproblem *, 4> subproblems;
+    std::array<std::vector<SigmaFace>, 2>    faces;
+
+    unsigned int             degree = 1;
+    std::unique_ptr<FE_Q<1>> fe_multiplier;
+    std::vector<double>      breakpoints;
+    std::vector<double>      node_x;
+    std::vector<bool>        on_crack;
+    /// D, per node.
+    std::vector<double> node_weight;
+    BlockVector<double> lower, upper;
+
+    /// C_s and E_s (evaluation at the nodes), per subproblem.
+    std::array<PointMatrix, 4> coupling, evaluation;
+    /// Traces at the Gauss points of the common refinement (diagnostics).
+    std::array<PointMatrix, 4> gauss_traces;
+    std::vector<double>        gauss_x, gauss_weight;
+  };
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,70 @@
+#ifndef bilayer_output_h
+#define bilayer_output_h
+
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <bilayer/contact_solver.h>
+#include <bilayer/interface.h>
+#include <bilayer/subproblem.h>
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  /**
+   * Plane-strain stresses of one layer from the displacement gradient:
+   * sigma = 2 mu eps + lambda tr(eps) I, sigma_zz = lambda tr(eps), and the
+   * von Mises stress
+   * sqrt(((s_xx - s_yy)^2 + (s_yy - s_zz)^2 + (s_zz - s_xx)^2) / 2
+   *      + 3 s_xy^2).
+   */
+  class StressPostprocessor : public DataPostprocessor<2>
+  {
+  public:
+    explicit StressPostprocessor(const LayerMaterial &material);
+
+    void
+    evaluate_vector_field(
+      const DataPostprocessorInputs::Vector<2> &inputs,
+      std::vector<Vector<double>> &computed_quantities) const override;
+
+    std::vector<std::string>
+    get_names() const override;
+
+    UpdateFlags
+    get_needed_update_flags() const override;
+
+  private:
+    const double mu, lambda;
+  };
+
+  /**
+   * Write @p path through a temporary file that is renamed when complete,
+   * so that a reader never sees a half-written file.
+   */
+  void
+  write_atomically(const std::string                         &path,
+                   const std::function<void(std::ostream &)> &writer);
+
+  /**
+   * One cycle's VTU output: a .vtu per subproblem (fields displacement,
+   * von_mises, stress_xx, stress_yy, stress_zz, stress_xy and the cell
+   * fields layer = 1, 2 and subdomain = -1, +1), a solution-NN.pvtu that
+   * groups them into one dataset, and solution.pvd over all cycles written
+   * so far (@p records is appended to).
+   */
+  void
+  write_vtu(const std::string                                  &directory,
+            const unsigned int                                  cycle,
+            const std::array<const ElasticSubproblem *, 4>     &subproblems,
+            const Solutions                                    &solutions,
+            std::vector<std::pair<double, std::string>>        &records);
+} // namespace bilayer
+
+#endif

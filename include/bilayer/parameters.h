@@ -1,0 +1,287 @@
+#ifndef bilayer_parameters_h
+#define bilayer_parameters_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+
+/**
+ * The scene: every entry of a parameter file, typed.
+ *
+ * One struct per subsection of the .prm file, each with
+ * `declare_parameters()` and `parse_parameters()`. Selections are mapped to
+ * `enum class` values once, here. Consistency checks that involve several
+ * entries (the crack inside Sigma, Sigma inside Omega, ...) are done in
+ * Scene::parse_parameters() and end with an ExcMessage that names the entry
+ * and the allowed range.
+ */
+namespace bilayer
+{
+  using namespace dealii;
+
+  /// The four sides of the rectangle Omega.
+  enum class Side
+  {
+    left   = 0,
+    right  = 1,
+    bottom = 2,
+    top    = 3
+  };
+
+  /// Name of a side as written in parameter files ("left", ...).
+  std::string
+  side_name(const Side side);
+
+  /// The two layers: layer 1 (displacement u, cracked), layer 2 (v).
+  enum class Layer
+  {
+    first  = 0,
+    second = 1
+  };
+
+  /// The two subdomains Omega- (below Sigma) and Omega+ (above Sigma).
+  enum class Subdomain
+  {
+    minus = 0,
+    plus  = 1
+  };
+
+  enum class ElementShape
+  {
+    quadrilateral,
+    triangle
+  };
+
+  /**
+   * How the multipliers act on the traces (the matrix C of interface.h).
+   * `lumped`: nodal quadrature of the multiplier mesh (node-to-node
+   * coupling); `consistent`: Gauss quadrature on the common refinement of
+   * the trace meshes (mortar coupling).
+   */
+  enum class MultiplierCoupling
+  {
+    lumped,
+    consistent
+  };
+
+  /**
+   * How the jumps in the Uzawa update are sampled. `weighted`: the weak
+   * jump D^{-1} C w (the gradient of the Lagrangian in the metric of the
+   * lumped multiplier mass D); `nodal`: the traces evaluated at the
+   * multiplier nodes. For lumped coupling and matching meshes both agree.
+   */
+  enum class JumpSampling
+  {
+    weighted,
+    nodal
+  };
+
+  /**
+   * Stopping rules of the Uzawa iteration.
+   * - `paper`: max over the four subproblems of
+   *   ||w^k - w^{k-1}|| / ||w^k||^2 < tol (energy norms), as printed in the
+   *   paper (paper.md §5); not scale invariant.
+   * - `paper_norm`: the same with ||w^k|| in the denominator.
+   * - `relative`: the relative change of the multipliers and the relative
+   *   violation of the discrete constraints both below tol.
+   */
+  enum class StoppingRule
+  {
+    paper,
+    paper_norm,
+    relative
+  };
+
+  enum class TerminalOutput
+  {
+    full,
+    checks
+  };
+
+  struct GeometryParameters
+  {
+    double x_min        = -1.0;
+    double x_max        = 1.0;
+    double y_min        = -1.0;
+    double y_max        = 1.0;
+    double sigma_height = 0.0;
+    double crack_start  = -0.5;
+    double crack_end    = 0.5;
+
+    /// clamped[side] is true if the side belongs to Gamma_D.
+    std::array<bool, 4> clamped = {{true, true, false, false}};
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool
+    has_crack() const
+    {
+      return crack_end > crack_start;
+    }
+  };
+
+  struct MeshParameters
+  {
+    ElementShape shape             = ElementShape::quadrilateral;
+    unsigned int cells_along_sigma = 16;
+    /// Cells across each subdomain; 0 chooses square-ish cells.
+    unsigned int cells_across = 0;
+    unsigned int degree_first  = 1;
+    unsigned int degree_second = 1;
+    unsigned int n_cycles      = 1;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    unsigned int
+    degree(const Layer layer) const
+    {
+      return layer == Layer::first ? degree_first : degree_second;
+    }
+  };
+
+  /// Isotropic plane-strain material of one layer.
+  struct LayerMaterial
+  {
+    double youngs_modulus = 200.0;
+    double poisson_ratio  = 0.28;
+
+    double
+    mu() const
+    {
+      return youngs_modulus / (2. * (1. + poisson_ratio));
+    }
+    double
+    lambda() const
+    {
+      return 2. * poisson_ratio * mu() / (1. - 2. * poisson_ratio);
+    }
+  };
+
+  struct MaterialParameters
+  {
+    std::array<LayerMaterial, 2> layer = {{{200.0, 0.28}, {112.0, 0.32}}};
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /**
+   * Tractions and prescribed displacements as muparser expressions of x and
+   * y. The named constants may use the material constants E1, nu1, mu1,
+   * lambda1, E2, nu2, mu2, lambda2 and the constants defined before them.
+   */
+  struct LoadParameters
+  {
+    std::string constants = "";
+    /// traction[layer][side], "f_x; f_y"
+    std::array<std::array<std::string, 4>, 2> traction;
+    /// prescribed[layer], "u_x; u_y", on the clamped sides
+    std::array<std::string, 2> prescribed = {{"0; 0", "0; 0"}};
+
+    /// The evaluated constants (material constants included).
+    std::map<std::string, double> constant_values;
+
+    LoadParameters();
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const MaterialParameters &materials);
+
+    std::unique_ptr<FunctionParser<2>>
+    traction_function(const Layer layer, const Side side) const;
+    std::unique_ptr<FunctionParser<2>>
+    prescribed_function(const Layer layer) const;
+    /// Whether the traction expression of a side is identically "0; 0".
+    bool
+    traction_is_zero(const Layer layer, const Side side) const;
+  };
+
+  struct ContactParameters
+  {
+    bool               non_penetration = true;
+    double             multiplier_bound = 1e7;
+    MultiplierCoupling coupling         = MultiplierCoupling::lumped;
+    JumpSampling       sampling         = JumpSampling::weighted;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct SolverParameters
+  {
+    double       theta          = 65.0;
+    unsigned int max_iterations = 100000;
+    StoppingRule stopping_rule  = StoppingRule::paper;
+    double       tolerance      = 1e-6;
+    /// Divergence: the multiplier increment grew by this factor over its
+    /// smallest value so far.
+    double divergence_factor = 1e3;
+    /// Tolerance of the acceptance checks of the final solution.
+    double acceptance_tolerance = 1e-6;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  struct OutputParameters
+  {
+    std::string    directory          = "results";
+    bool           write_vtu          = true;
+    bool           write_interface    = true;
+    unsigned int   progress_interval  = 100;
+    TerminalOutput terminal           = TerminalOutput::full;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /**
+   * All subsections together. parse_parameters() also checks the
+   * relations between entries.
+   */
+  struct Scene
+  {
+    std::string        name = "scene";
+    GeometryParameters geometry;
+    MeshParameters     mesh;
+    MaterialParameters materials;
+    LoadParameters     loads;
+    ContactParameters  contact;
+    SolverParameters   solver;
+    OutputParameters   output;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /**
+   * Declare, read a parameter file and parse it into a Scene. The Scene's
+   * name is the file name without directory and extension.
+   */
+  Scene
+  read_scene(ParameterHandler &prm, const std::string &filename);
+} // namespace bilayer
+
+#endif

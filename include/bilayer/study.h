@@ -1,0 +1,120 @@
+#ifndef bilayer_study_h
+#define bilayer_study_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/convergence_table.h>
+
+#include <deal.II/lac/block_vector.h>
+
+#include <bilayer/contact_solver.h>
+#include <bilayer/geometry.h>
+#include <bilayer/interface.h>
+#include <bilayer/parameters.h>
+#include <bilayer/subproblem.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  /// Everything reported about one cycle (one mesh) of a study.
+  struct CycleRecord
+  {
+    unsigned int   cycle = 0;
+    MeshStatistics minus, plus;
+    /// Vertices on Sigma and on the outer boundary (P and M of Table 1).
+    unsigned int    P = 0, M = 0;
+    unsigned int    dofs = 0, multipliers = 0;
+    double          theta = 0;
+    SolverResult    result;
+    double          energy = 0;
+    InterfaceReport report;
+    /// Acceptance checks: (description, passed).
+    std::vector<std::pair<std::string, bool>> checks;
+    double setup_seconds = 0, solve_seconds = 0, total_seconds = 0;
+
+    bool
+    accepted() const;
+  };
+
+  /**
+   * The outer loop: for each cycle build the two meshes, the four
+   * subproblems (assembled and factorised once) and the interface, run the
+   * contact solver, check the residuals of the result, and write the
+   * outputs (VTU/PVD, interface-NN.csv, summary.json, the mesh-size table).
+   */
+  class Study
+  {
+  public:
+    explicit Study(const Scene &scene, std::ostream &out);
+
+    /// All cycles; true if every cycle converged and passed its checks.
+    /// Stops at the first cycle that does not.
+    bool
+    run();
+
+    /// One cycle (mesh cycle @p cycle); appends to records().
+    const CycleRecord &
+    run_cycle(const unsigned int cycle);
+
+    const std::vector<CycleRecord> &
+    records() const
+    {
+      return cycle_records;
+    }
+    const Interface &
+    interface() const
+    {
+      return coupling;
+    }
+    const Solutions &
+    solutions() const
+    {
+      return w;
+    }
+    const BlockVector<double> &
+    multipliers() const
+    {
+      return mu;
+    }
+    const ElasticSubproblem &
+    subproblem(const Layer layer, const Subdomain subdomain) const
+    {
+      return *subproblems[Interface::index(layer, subdomain)];
+    }
+    const Geometry &
+    geometry() const
+    {
+      return domain;
+    }
+
+  private:
+    void
+    check(CycleRecord &record) const;
+    void
+    print_report(const CycleRecord &record) const;
+    void
+    write_summary() const;
+    void
+    add_to_table(const CycleRecord &record);
+
+    const Scene                                       scene;
+    std::ostream                                     &out;
+    ConditionalOStream                                pcout;
+    Geometry                                          domain;
+    std::array<std::unique_ptr<ElasticSubproblem>, 4> subproblems;
+    Interface                                         coupling;
+    Solutions                                         w;
+    BlockVector<double>                               mu;
+    std::vector<CycleRecord>                          cycle_records;
+    std::vector<std::pair<double, std::string>>       pvd_records;
+    ConvergenceTable                                  table;
+  };
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,143 @@
+#ifndef bilayer_subproblem_h
+#define bilayer_subproblem_h
+
+#include <deal.II/base/function.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <bilayer/parameters.h>
+
+#include <array>
+#include <memory>
+#include <string>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  /**
+   * One of the four linear elasticity subproblems of paper.md §2: one layer
+   * (u or v) on one subdomain (Omega- or Omega+), plane strain,
+   * sigma(w) = 2 mu eps(w) + lambda tr(eps(w)) I.
+   *
+   * It owns its FESystem (two Lagrange components of the layer's degree, on
+   * quadrilaterals or triangles as the mesh has), its DoFHandler and its
+   * constraints (hanging nodes and the prescribed displacement on its part
+   * of Gamma_D). setup() assembles and factorises the matrix once; solve()
+   * then only costs a forward/back substitution:
+   *
+   *   a(w, z) = (F, z) + (c, z)   for all z,
+   *
+   * where F holds the tractions on Gamma_N and c is any extra load vector
+   * given in the unconstrained dof numbering (the interface's multiplier
+   * terms). The subproblem knows nothing of the coupling.
+   */
+  class ElasticSubproblem
+  {
+  public:
+    ElasticSubproblem(const Layer             layer,
+                      const Subdomain         subdomain,
+                      const Triangulation<2> &triangulation,
+                      const unsigned int      degree,
+                      const LayerMaterial    &material);
+
+    /**
+     * Distribute dofs, build constraints, assemble the stiffness matrix and
+     * the traction load, factorise. @p traction[side] is used on the sides
+     * that are not clamped; @p prescribed on the clamped ones.
+     */
+    void
+    setup(const std::array<bool, 4>                     &clamped,
+          const Function<2>                             &prescribed,
+          const std::array<const Function<2> *, 4>      &traction);
+
+    /// Solve with the extra load vector @p coupling (may be empty = zero).
+    void
+    solve(const Vector<double> &coupling, Vector<double> &solution) const;
+
+    /// a(w, w) = int sigma(w) : eps(w) dx [energy].
+    double
+    energy_norm_squared(const Vector<double> &w) const;
+
+    /// Pi(w) = a(w, w) / 2 - (F, w) [energy].
+    double
+    energy(const Vector<double> &w) const;
+
+    /// "u-", "u+", "v-" or "v+".
+    std::string
+    name() const;
+
+    Layer
+    layer() const
+    {
+      return layer_;
+    }
+    Subdomain
+    subdomain() const
+    {
+      return subdomain_;
+    }
+    const DoFHandler<2> &
+    dof_handler() const
+    {
+      return dofs;
+    }
+    const FiniteElement<2> &
+    fe() const
+    {
+      return *fe_system;
+    }
+    const Mapping<2> &
+    mapping() const;
+    const LayerMaterial &
+    material() const
+    {
+      return material_;
+    }
+    unsigned int
+    n_dofs() const
+    {
+      return dofs.n_dofs();
+    }
+    /// Number of solve() calls so far.
+    unsigned long
+    n_solves() const
+    {
+      return solve_count;
+    }
+    /// Wall time of assembly and of factorisation in setup() [s].
+    double assembly_seconds      = 0;
+    double factorisation_seconds = 0;
+
+  private:
+    void
+    assemble(const std::array<bool, 4>                &clamped,
+             const std::array<const Function<2> *, 4> &traction);
+
+    const Layer                       layer_;
+    const Subdomain                   subdomain_;
+    const LayerMaterial               material_;
+    std::unique_ptr<FESystem<2>>      fe_system;
+    DoFHandler<2>                     dofs;
+    AffineConstraints<double>         constraints;
+    AffineConstraints<double>         homogeneous_constraints;
+    SparsityPattern                   sparsity;
+    SparseMatrix<double>              system_matrix;
+    SparseMatrix<double>              stiffness;
+    Vector<double>                    system_rhs;
+    Vector<double>                    traction_load;
+    SparseDirectUMFPACK               factorisation;
+    mutable unsigned long             solve_count = 0;
+  };
+} // namespace bilayer
+
+#endif

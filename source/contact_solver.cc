@@ -1,0 +1,159 @@
+#include <deal.II/base/thread_management.h>
+
+#include <bilayer/contact_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace bilayer
+{
+  void
+  solve_subproblems(const Subproblems         &subproblems,
+                    const Interface           &interface,
+                    const BlockVector<double> &multipliers,
+                    Solutions                 &solutions)
+  {
+    Solutions loads;
+    interface.apply(multipliers, loads);
+    Threads::TaskGroup<void> tasks;
+    for (unsigned int s = 0; s < 4; ++s)
+      tasks += Threads::new_task([&, s]() {
+        subproblems[s]->solve(loads[s], solutions[s]);
+      });
+    tasks.join_all();
+  }
+
+
+  UzawaSolver::UzawaSolver(const SolverParameters   &parameters,
+                           const OutputParameters   &output,
+                           const ConditionalOStream &pcout)
+    : parameters(parameters)
+    , output(output)
+    , pcout(pcout)
+  {}
+
+
+  SolverResult
+  UzawaSolver::solve(const Subproblems   &subproblems,
+                     const Interface     &interface,
+                     BlockVector<double> &mu,
+                     Solutions           &w) const
+  {
+    SolverResult result;
+    result.solver = "uzawa";
+
+    Solutions           w_old;
+    BlockVector<double> g, mu_new, mu_old;
+    Vector<double>      difference;
+    double min_increment  = std::numeric_limits<double>::max();
+    double last_increment = 0;
+
+    for (unsigned int k = 0;; ++k)
+      {
+        solve_subproblems(subproblems, interface, mu, w);
+        result.iterations       = k;
+        result.subdomain_solves = 4ul * (k + 1);
+        interface.jumps(w, g);
+
+        // Stopping rule at step k >= 1.
+        const double scale     = interface.displacement_scale(w);
+        const double violation = interface.discrete_violation(g);
+        const double relative_violation =
+          scale > 0 ? violation / scale : violation;
+        double value = std::numeric_limits<double>::infinity();
+        if (k >= 1)
+          {
+            if (parameters.stopping_rule == StoppingRule::relative)
+              {
+                const double norm = interface.weighted_norm(mu);
+                const double change =
+                  norm > 0 ? last_increment / norm : last_increment;
+                value = std::max(change, relative_violation);
+              }
+            else
+              {
+                value = 0;
+                for (unsigned int s = 0; s < 4; ++s)
+                  {
+                    difference = w[s];
+                    difference -= w_old[s];
+                    const double d =
+                      std::sqrt(subproblems[s]->energy_norm_squared(difference));
+                    const double n2 = subproblems[s]->energy_norm_squared(w[s]);
+                    const double denominator =
+                      parameters.stopping_rule == StoppingRule::paper ?
+                        n2 :
+                        std::sqrt(n2);
+                    value = std::max(value,
+                                     d == 0. ? 0. : d / denominator);
+                  }
+              }
+          }
+        result.stopping_value = value;
+
+        if (output.progress_interval > 0 && k > 0 &&
+            k % output.progress_interval == 0)
+          pcout << "    iteration " << std::setw(6) << k
+                << "  stopping value " << std::scientific
+                << std::setprecision(3) << value
+                << "  multiplier change " << last_increment
+                << "  relative violation " << relative_violation
+                << std::defaultfloat << std::endl;
+
+        if (value < parameters.tolerance)
+          {
+            result.converged = true;
+            std::ostringstream msg;
+            msg << "stopping rule met after " << k << " iterations";
+            result.message = msg.str();
+            return result;
+          }
+        if (k >= parameters.max_iterations)
+          {
+            std::ostringstream msg;
+            msg << "iteration limit " << parameters.max_iterations
+                << " reached (Solver/Maximum iterations) with stopping value "
+                << value << " > Solver/Tolerance " << parameters.tolerance;
+            result.message = msg.str();
+            return result;
+          }
+
+        // Multiplier update, step 3.
+        mu_new = mu;
+        mu_new.add(parameters.theta, g);
+        interface.project(mu_new);
+        mu_old = mu;
+        mu_old -= mu_new;
+        last_increment = interface.weighted_norm(mu_old);
+
+        if (!std::isfinite(last_increment) || (k >= 1 && !std::isfinite(value)))
+          {
+            result.diverged = true;
+            result.message  = "diverged: the iterates are no longer finite "
+                              "(reduce Solver/Uzawa step theta)";
+            return result;
+          }
+        if (last_increment > parameters.divergence_factor * min_increment &&
+            last_increment > 1e-12 * interface.weighted_norm(mu_new))
+          {
+            result.diverged = true;
+            std::ostringstream msg;
+            msg << "diverged at iteration " << k
+                << ": the multiplier increment grew by more than "
+                << parameters.divergence_factor
+                << " (Solver/Divergence growth factor); theta = "
+                << parameters.theta
+                << " is above the stability threshold, reduce "
+                   "Solver/Uzawa step theta";
+            result.message = msg.str();
+            return result;
+          }
+        min_increment = std::min(min_increment, last_increment);
+
+        w_old.swap(w);
+        mu.swap(mu_new);
+      }
+  }
+} // namespace bilayer

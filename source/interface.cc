@@ -1,0 +1,522 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <bilayer/geometry.h>
+#include <bilayer/interface.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <tuple>
+
+namespace bilayer
+{
+  namespace
+  {
+    constexpr unsigned int u_minus = 0, u_plus = 1, v_minus = 2, v_plus = 3;
+
+    /// Sorted union of two sorted break point lists, merging near-equal
+    /// points.
+    std::vector<double>
+    merge_breakpoints(const std::vector<double> &a,
+                      const std::vector<double> &b,
+                      const double               tol)
+    {
+      std::vector<double> all(a);
+      all.insert(all.end(), b.begin(), b.end());
+      std::sort(all.begin(), all.end());
+      std::vector<double> merged;
+      for (const double x : all)
+        if (merged.empty() || x - merged.back() > tol)
+          merged.push_back(x);
+      return merged;
+    }
+  } // namespace
+
+
+  Interface::Interface(const GeometryParameters &geometry,
+                       const ContactParameters  &contact)
+    : geometry(geometry)
+    , contact(contact)
+  {}
+
+
+  std::vector<Interface::SigmaFace>
+  Interface::sigma_faces(const Triangulation<2> &tria,
+                         const double            sigma_height)
+  {
+    std::vector<SigmaFace> result;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            (cell->face(f)->boundary_id() == BoundaryIds::glued ||
+             cell->face(f)->boundary_id() == BoundaryIds::crack))
+          {
+            const auto   face = cell->face(f);
+            const double tol  = 1e-10 * face->diameter();
+            std::array<std::pair<double, Point<2>>, 2> ends;
+            for (unsigned int fv = 0; fv < 2; ++fv)
+              for (const unsigned int v : cell->vertex_indices())
+                if (cell->vertex(v).distance(face->vertex(fv)) < tol)
+                  ends[fv] = {face->vertex(fv)[0],
+                              cell->reference_cell().template vertex<2>(v)};
+            Assert(std::abs(face->center()[1] - sigma_height) < 1e3 * tol,
+                   ExcInternalError());
+            (void)sigma_height;
+            if (ends[0].first > ends[1].first)
+              std::swap(ends[0], ends[1]);
+            result.push_back(
+              {ends[0].first, ends[1].first, cell, ends[0].second, ends[1].second});
+          }
+    std::sort(result.begin(),
+              result.end(),
+              [](const SigmaFace &a, const SigmaFace &b) { return a.x0 < b.x0; });
+    return result;
+  }
+
+
+  void
+  Interface::setup(const std::array<const ElasticSubproblem *, 4> &subs)
+  {
+    subproblems = subs;
+    for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+      faces[static_cast<unsigned int>(sd)] = sigma_faces(
+        subs[index(Layer::first, sd)]->dof_handler().get_triangulation(),
+        geometry.sigma_height);
+
+    const double length = geometry.x_max - geometry.x_min;
+    const double tol    = 1e-10 * length;
+
+    // The multiplier mesh: the trace of the Omega- mesh.
+    degree = subs[u_minus]->fe().degree;
+    fe_multiplier =
+      std::make_unique<FE_Q<1>>(QGaussLobatto<1>(degree + 1));
+    breakpoints.clear();
+    for (const auto &face : faces[0])
+      breakpoints.push_back(face.x0);
+    breakpoints.push_back(faces[0].back().x1);
+    const unsigned int n_segments = breakpoints.size() - 1;
+    const unsigned int n          = n_segments * degree + 1;
+
+    node_x.assign(n, 0.);
+    node_weight.assign(n, 0.);
+    const QGaussLobatto<1> lobatto(degree + 1);
+    for (unsigned int e = 0; e < n_segments; ++e)
+      {
+        const double h = breakpoints[e + 1] - breakpoints[e];
+        for (unsigned int i = 0; i <= degree; ++i)
+          {
+            const unsigned int a = multiplier_node(e, i);
+            node_x[a] =
+              breakpoints[e] + fe_multiplier->get_unit_support_points()[i][0] * h;
+            for (unsigned int q = 0; q < lobatto.size(); ++q)
+              node_weight[a] += fe_multiplier->shape_value(i, lobatto.point(q)) *
+                                lobatto.weight(q) * h;
+          }
+      }
+
+    // Multiplier sets (paper.md §3) as bounds per component.
+    const double p = contact.multiplier_bound;
+    on_crack.assign(n, false);
+    lower.reinit(std::vector<types::global_dof_index>(3, 2 * n));
+    upper.reinit(lower);
+    for (unsigned int a = 0; a < n; ++a)
+      {
+        const double x  = node_x[a];
+        on_crack[a]     = geometry.has_crack() && x > geometry.crack_start + tol &&
+                      x < geometry.crack_end - tol;
+        const bool on_gamma_d =
+          (std::abs(x - geometry.x_min) < tol &&
+           geometry.clamped[static_cast<unsigned int>(Side::left)]) ||
+          (std::abs(x - geometry.x_max) < tol &&
+           geometry.clamped[static_cast<unsigned int>(Side::right)]);
+        if (on_gamma_d)
+          continue;
+        for (unsigned int b = 0; b < 3; ++b)
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              lower.block(b)(2 * a + c) = -p;
+              upper.block(b)(2 * a + c) = p;
+            }
+        if (on_crack[a])
+          {
+            lower.block(0)(2 * a)     = 0;
+            upper.block(0)(2 * a)     = 0;
+            lower.block(0)(2 * a + 1) = 0;
+            upper.block(0)(2 * a + 1) = contact.non_penetration ? p : 0;
+          }
+      }
+
+    // Coupling (lumped or consistent), evaluation at the nodes, and the
+    // Gauss points of the common refinement of all three trace meshes.
+    std::vector<std::tuple<unsigned int, double, double>> nodal;
+    for (unsigned int a = 0; a < n; ++a)
+      nodal.emplace_back(a, node_x[a], 1.0);
+
+    unsigned int max_degree = degree;
+    for (const auto *s : subs)
+      max_degree = std::max(max_degree, s->fe().degree);
+    const QGauss<1> gauss(max_degree + 2);
+
+    const auto gauss_points = [&](const std::vector<double> &b,
+                                  const auto                &add) {
+      for (unsigned int k = 0; k + 1 < b.size(); ++k)
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+          add(b[k] + gauss.point(q)[0] * (b[k + 1] - b[k]),
+              gauss.weight(q) * (b[k + 1] - b[k]));
+    };
+    const auto face_breakpoints = [&](const unsigned int sd) {
+      std::vector<double> b;
+      for (const auto &face : faces[sd])
+        b.push_back(face.x0);
+      b.push_back(faces[sd].back().x1);
+      return b;
+    };
+
+    std::vector<double> values;
+    for (unsigned int s = 0; s < 4; ++s)
+      {
+        std::vector<std::tuple<unsigned int, double, double>> points;
+        if (contact.coupling == MultiplierCoupling::lumped)
+          for (unsigned int a = 0; a < n; ++a)
+            points.emplace_back(a, node_x[a], node_weight[a]);
+        else
+          gauss_points(merge_breakpoints(breakpoints,
+                                         face_breakpoints(s % 2),
+                                         tol),
+                       [&](const double x, const double w) {
+                         const unsigned int e =
+                           multiplier_shape_values(x, values);
+                         for (unsigned int i = 0; i <= degree; ++i)
+                           points.emplace_back(multiplier_node(e, i),
+                                               x,
+                                               w * values[i]);
+                       });
+        build_point_matrix(s, points, n, coupling[s]);
+        build_point_matrix(s, nodal, n, evaluation[s]);
+      }
+
+    gauss_x.clear();
+    gauss_weight.clear();
+    gauss_points(merge_breakpoints(merge_breakpoints(breakpoints,
+                                                     face_breakpoints(0),
+                                                     tol),
+                                   face_breakpoints(1),
+                                   tol),
+                 [&](const double x, const double w) {
+                   gauss_x.push_back(x);
+                   gauss_weight.push_back(w);
+                 });
+    std::vector<std::tuple<unsigned int, double, double>> at_gauss;
+    for (unsigned int q = 0; q < gauss_x.size(); ++q)
+      at_gauss.emplace_back(q, gauss_x[q], 1.0);
+    for (unsigned int s = 0; s < 4; ++s)
+      build_point_matrix(s, at_gauss, gauss_x.size(), gauss_traces[s]);
+  }
+
+
+  unsigned int
+  Interface::multiplier_shape_values(const double         x,
+                                     std::vector<double> &values) const
+  {
+    const auto it = std::upper_bound(breakpoints.begin() + 1,
+                                     breakpoints.end() - 1,
+                                     x);
+    const unsigned int e = (it - breakpoints.begin()) - 1;
+    const double       t =
+      (x - breakpoints[e]) / (breakpoints[e + 1] - breakpoints[e]);
+    values.resize(degree + 1);
+    for (unsigned int i = 0; i <= degree; ++i)
+      values[i] = fe_multiplier->shape_value(i, Point<1>(t));
+    return e;
+  }
+
+
+  void
+  Interface::build_point_matrix(
+    const unsigned int                                           s,
+    const std::vector<std::tuple<unsigned int, double, double>> &points,
+    const unsigned int                                           n_rows,
+    PointMatrix                                                 &result) const
+  {
+    const ElasticSubproblem &sub    = *subproblems[s];
+    const auto              &fe     = sub.fe();
+    const auto              &sfaces = faces[s % 2];
+    std::vector<double>      starts;
+    for (const auto &face : sfaces)
+      starts.push_back(face.x0);
+
+    std::vector<std::map<types::global_dof_index, double>> rows(2 * n_rows);
+    std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
+    for (const auto &[r, x, weight] : points)
+      {
+        if (weight == 0.)
+          continue;
+        const auto it = std::upper_bound(starts.begin() + 1, starts.end(), x);
+        const SigmaFace &face = sfaces[(it - starts.begin()) - 1];
+        const double     t    = (x - face.x0) / (face.x1 - face.x0);
+        const Point<2>   unit = face.unit0 + t * (face.unit1 - face.unit0);
+        const DoFHandler<2>::active_cell_iterator cell(
+          &sub.dof_handler().get_triangulation(),
+          face.cell->level(),
+          face.cell->index(),
+          &sub.dof_handler());
+        cell->get_dof_indices(local);
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const double v = fe.shape_value(i, unit);
+            if (std::abs(v) > 1e-14)
+              rows[2 * r + fe.system_to_component_index(i).first][local[i]] +=
+                weight * v;
+          }
+      }
+
+    DynamicSparsityPattern dsp(2 * n_rows, sub.n_dofs());
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      for (const auto &entry : rows[r])
+        dsp.add(r, entry.first);
+    result.matrix.clear();
+    result.pattern.copy_from(dsp);
+    result.matrix.reinit(result.pattern);
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      for (const auto &entry : rows[r])
+        result.matrix.set(r, entry.first, entry.second);
+  }
+
+
+  void
+  Interface::initialize(BlockVector<double> &multipliers) const
+  {
+    multipliers.reinit(lower);
+  }
+
+
+  unsigned int
+  Interface::n_multipliers() const
+  {
+    unsigned int count = 0;
+    for (unsigned int i = 0; i < lower.size(); ++i)
+      count += (lower(i) < upper(i));
+    return count;
+  }
+
+
+  void
+  Interface::apply(const BlockVector<double> &mu, Solutions &loads) const
+  {
+    Vector<double> combined(mu.block(0));
+    combined += mu.block(1);
+    loads[u_minus].reinit(subproblems[u_minus]->n_dofs());
+    coupling[u_minus].matrix.Tvmult(loads[u_minus], combined);
+    loads[u_minus] *= -1.;
+
+    combined = mu.block(0);
+    combined -= mu.block(2);
+    loads[u_plus].reinit(subproblems[u_plus]->n_dofs());
+    coupling[u_plus].matrix.Tvmult(loads[u_plus], combined);
+
+    loads[v_minus].reinit(subproblems[v_minus]->n_dofs());
+    coupling[v_minus].matrix.Tvmult(loads[v_minus], mu.block(1));
+    loads[v_plus].reinit(subproblems[v_plus]->n_dofs());
+    coupling[v_plus].matrix.Tvmult(loads[v_plus], mu.block(2));
+  }
+
+
+  void
+  Interface::difference(const Vector<double> &a,
+                        const Vector<double> &b,
+                        const unsigned int    block,
+                        BlockVector<double>  &g) const
+  {
+    const bool weighted = contact.sampling == JumpSampling::weighted;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      g.block(block)(i) =
+        lower.block(block)(i) < upper.block(block)(i) ?
+          (a(i) - b(i)) / (weighted ? node_weight[i / 2] : 1.) :
+          0.;
+  }
+
+
+  void
+  Interface::jumps(const Solutions &w, BlockVector<double> &g) const
+  {
+    const auto &op = contact.sampling == JumpSampling::weighted ? coupling :
+                                                                  evaluation;
+    g.reinit(lower, true);
+    std::array<Vector<double>, 4> traces;
+    for (unsigned int s = 0; s < 4; ++s)
+      {
+        traces[s].reinit(2 * n_nodes());
+        op[s].matrix.vmult(traces[s], w[s]);
+      }
+    difference(traces[u_minus], traces[u_plus], 0, g);
+    difference(traces[u_minus], traces[v_minus], 1, g);
+    difference(traces[u_plus], traces[v_plus], 2, g);
+  }
+
+
+  void
+  Interface::project(BlockVector<double> &mu) const
+  {
+    for (unsigned int i = 0; i < mu.size(); ++i)
+      mu(i) = std::min(std::max(mu(i), lower(i)), upper(i));
+  }
+
+
+  double
+  Interface::weighted_norm(const BlockVector<double> &x) const
+  {
+    double sum = 0;
+    for (unsigned int b = 0; b < x.n_blocks(); ++b)
+      for (unsigned int i = 0; i < x.block(b).size(); ++i)
+        sum += node_weight[i / 2] * x.block(b)(i) * x.block(b)(i);
+    return std::sqrt(sum);
+  }
+
+
+  double
+  Interface::discrete_violation(const BlockVector<double> &g) const
+  {
+    double violation = 0;
+    for (unsigned int i = 0; i < g.size(); ++i)
+      if (lower(i) < upper(i))
+        violation = std::max(violation,
+                             lower(i) == 0. ? std::max(g(i), 0.) :
+                                              std::abs(g(i)));
+    return violation;
+  }
+
+
+  double
+  Interface::displacement_scale(const Solutions &w) const
+  {
+    double         scale = 0;
+    Vector<double> trace(2 * n_nodes());
+    for (unsigned int s = 0; s < 4; ++s)
+      {
+        evaluation[s].matrix.vmult(trace, w[s]);
+        scale = std::max(scale, trace.linfty_norm());
+      }
+    return scale;
+  }
+
+
+  InterfaceReport
+  Interface::assess(const Solutions           &w,
+                    const BlockVector<double> &mu) const
+  {
+    InterfaceReport report;
+    BlockVector<double> g;
+    jumps(w, g);
+    const double scale        = displacement_scale(w);
+    report.displacement_scale = scale;
+    const double violation    = discrete_violation(g);
+    report.relative_discrete_violation =
+      scale > 0 ? violation / scale : violation;
+
+    // Contact multiplier: the normal component of block 0 at crack nodes.
+    double sum_mu = 0, sum_mu_jump = 0;
+    bool   any    = false;
+    for (unsigned int a = 0; a < n_nodes(); ++a)
+      if (on_crack[a] && upper.block(0)(2 * a + 1) > 0)
+        {
+          const double m = mu.block(0)(2 * a + 1);
+          report.min_contact_multiplier =
+            any ? std::min(report.min_contact_multiplier, m) : m;
+          any = true;
+          sum_mu += node_weight[a] * m;
+          sum_mu_jump += node_weight[a] * m * std::abs(g.block(0)(2 * a + 1));
+        }
+    report.complementarity =
+      sum_mu > 0 && scale > 0 ? sum_mu_jump / (sum_mu * scale) : 0.;
+    report.max_multiplier_over_bound =
+      mu.linfty_norm() / contact.multiplier_bound;
+
+    // The integral (12) and the pointwise penetration at the Gauss points.
+    std::array<Vector<double>, 4> t;
+    for (unsigned int s = 0; s < 4; ++s)
+      {
+        t[s].reinit(2 * gauss_x.size());
+        gauss_traces[s].matrix.vmult(t[s], w[s]);
+      }
+    const double tol = 1e-10 * (geometry.x_max - geometry.x_min);
+    double       size = 0;
+    for (unsigned int q = 0; q < gauss_x.size(); ++q)
+      {
+        const double x   = gauss_x[q];
+        const bool crack = geometry.has_crack() &&
+                           x > geometry.crack_start + tol &&
+                           x < geometry.crack_end - tol;
+        double       density = 0;
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            const double jump_1 = t[u_minus](2 * q + c) - t[u_plus](2 * q + c);
+            if (!crack)
+              density += std::abs(jump_1);
+            else if (c == 1)
+              {
+                report.max_penetration =
+                  std::max(report.max_penetration, jump_1);
+                if (contact.non_penetration)
+                  density += std::max(jump_1, 0.);
+              }
+            density += std::abs(t[u_minus](2 * q + c) - t[v_minus](2 * q + c));
+            density += std::abs(t[u_plus](2 * q + c) - t[v_plus](2 * q + c));
+            for (unsigned int s = 0; s < 4; ++s)
+              size += gauss_weight[q] * std::abs(t[s](2 * q + c));
+          }
+        report.constraint_violation += gauss_weight[q] * density;
+      }
+    // Penetration at the crack nodes as well (the Gauss points miss them).
+    Vector<double> tm(2 * n_nodes()), tp(2 * n_nodes());
+    evaluation[u_minus].matrix.vmult(tm, w[u_minus]);
+    evaluation[u_plus].matrix.vmult(tp, w[u_plus]);
+    for (unsigned int a = 0; a < n_nodes(); ++a)
+      if (on_crack[a])
+        report.max_penetration =
+          std::max(report.max_penetration, tm(2 * a + 1) - tp(2 * a + 1));
+    report.relative_constraint_violation =
+      size > 0 ? report.constraint_violation / size :
+                 report.constraint_violation;
+    return report;
+  }
+
+
+  void
+  Interface::write_csv(std::ostream              &out,
+                       const Solutions           &w,
+                       const BlockVector<double> &mu) const
+  {
+    std::array<Vector<double>, 4> t;
+    for (unsigned int s = 0; s < 4; ++s)
+      {
+        t[s].reinit(2 * n_nodes());
+        evaluation[s].matrix.vmult(t[s], w[s]);
+      }
+    out << "x,on_crack,jump_normal,jump_tangential,mu_c,mu_g_x,mu_g_y,"
+           "mu_minus_x,mu_minus_y,mu_plus_x,mu_plus_y,gap_minus_x,"
+           "gap_minus_y,gap_plus_x,gap_plus_y,u_minus_x,u_minus_y,u_plus_x,"
+           "u_plus_y,v_minus_x,v_minus_y,v_plus_x,v_plus_y\n";
+    out << std::setprecision(12);
+    for (unsigned int a = 0; a < n_nodes(); ++a)
+      {
+        const unsigned int x = 2 * a, y = 2 * a + 1;
+        out << node_x[a] << ',' << (on_crack[a] ? 1 : 0) << ','
+            << t[u_plus](y) - t[u_minus](y) << ','
+            << t[u_plus](x) - t[u_minus](x) << ','
+            << (on_crack[a] ? mu.block(0)(y) : 0.) << ','
+            << (on_crack[a] ? 0. : mu.block(0)(x)) << ','
+            << (on_crack[a] ? 0. : mu.block(0)(y)) << ',' << mu.block(1)(x)
+            << ',' << mu.block(1)(y) << ',' << mu.block(2)(x) << ','
+            << mu.block(2)(y) << ',' << t[u_minus](x) - t[v_minus](x) << ','
+            << t[u_minus](y) - t[v_minus](y) << ','
+            << t[u_plus](x) - t[v_plus](x) << ','
+            << t[u_plus](y) - t[v_plus](y);
+        for (unsigned int s = 0; s < 4; ++s)
+          out << ',' << t[s](x) << ',' << t[s](y);
+        out << '\n';
+      }
+  }
+} // namespace bilayer

@@ -1,0 +1,96 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <bilayer/parameters.h>
+#include <bilayer/study.h>
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace
+{
+  void
+  print_usage(std::ostream &out)
+  {
+    out << "Usage: bilayer PARAMETER_FILE.prm\n"
+           "       bilayer --print-parameters   print every entry with its "
+           "default and documentation\n"
+           "       bilayer --help               print this message\n\n"
+           "Computes the equilibrium of a two-layer elastic structure with a "
+           "through\ncrack whose faces must not penetrate each other "
+           "(domain decomposition\nand Uzawa iteration). Results go to the "
+           "directory Output/Output directory.\n";
+  }
+
+  /// The message of a deal.II exception on one line.
+  std::string
+  one_line(const dealii::ExceptionBase &e)
+  {
+    std::ostringstream info;
+    e.print_info(info);
+    std::string text = info.str();
+    for (char &c : text)
+      if (c == '\n')
+        c = ' ';
+    std::string collapsed;
+    for (const char c : text)
+      if (!(c == ' ' && (collapsed.empty() || collapsed.back() == ' ')))
+        collapsed += c;
+    while (!collapsed.empty() && collapsed.back() == ' ')
+      collapsed.pop_back();
+    return collapsed;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  using namespace dealii;
+  dealii::deal_II_exceptions::disable_abort_on_exception();
+  dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
+  try
+    {
+      if (argc != 2 || std::string(argv[1]) == "--help" ||
+          std::string(argv[1]) == "-h")
+        {
+          print_usage(argc == 2 ? std::cout : std::cerr);
+          return argc == 2 ? 0 : 1;
+        }
+      ParameterHandler prm;
+      if (std::string(argv[1]) == "--print-parameters")
+        {
+          bilayer::Scene::declare_parameters(prm);
+          prm.print_parameters(std::cout, ParameterHandler::PRM);
+          return 0;
+        }
+
+      const bilayer::Scene scene = bilayer::read_scene(prm, argv[1]);
+      std::filesystem::create_directories(scene.output.directory);
+      prm.print_parameters(scene.output.directory + "/used_parameters.prm",
+                           ParameterHandler::ShortPRM);
+
+      bilayer::Study study(scene, std::cout);
+      if (!study.run())
+        {
+          const auto &last = study.records().back();
+          std::cerr << "bilayer: cycle " << last.cycle
+                    << " did not pass its checks: " << last.result.message
+                    << std::endl;
+          return 2;
+        }
+      return 0;
+    }
+  catch (const ExceptionBase &e)
+    {
+      std::cerr << "bilayer: error: " << one_line(e) << std::endl;
+      return 1;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "bilayer: error: " << e.what() << std::endl;
+      return 1;
+    }
+}

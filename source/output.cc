@@ -1,0 +1,148 @@
+#include <deal.II/base/data_out_base.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <bilayer/output.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <memory>
+#include <sstream>
+
+namespace bilayer
+{
+  StressPostprocessor::StressPostprocessor(const LayerMaterial &material)
+    : mu(material.mu())
+    , lambda(material.lambda())
+  {}
+
+
+  std::vector<std::string>
+  StressPostprocessor::get_names() const
+  {
+    return {"von_mises", "stress_xx", "stress_yy", "stress_zz", "stress_xy"};
+  }
+
+
+  UpdateFlags
+  StressPostprocessor::get_needed_update_flags() const
+  {
+    return update_gradients;
+  }
+
+
+  void
+  StressPostprocessor::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<2> &inputs,
+    std::vector<Vector<double>>              &computed_quantities) const
+  {
+    for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+      {
+        const auto  &grad = inputs.solution_gradients[q];
+        const double exx  = grad[0][0];
+        const double eyy  = grad[1][1];
+        const double exy  = 0.5 * (grad[0][1] + grad[1][0]);
+        const double sxx  = 2 * mu * exx + lambda * (exx + eyy);
+        const double syy  = 2 * mu * eyy + lambda * (exx + eyy);
+        const double szz  = lambda * (exx + eyy);
+        const double sxy  = 2 * mu * exy;
+        computed_quantities[q](0) =
+          std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) +
+                           (syy - szz) * (syy - szz) +
+                           (szz - sxx) * (szz - sxx)) +
+                    3 * sxy * sxy);
+        computed_quantities[q](1) = sxx;
+        computed_quantities[q](2) = syy;
+        computed_quantities[q](3) = szz;
+        computed_quantities[q](4) = sxy;
+      }
+  }
+
+
+  void
+  write_atomically(const std::string                         &path,
+                   const std::function<void(std::ostream &)> &writer)
+  {
+    const std::string temporary = path + ".part";
+    {
+      std::ofstream out(temporary);
+      AssertThrow(out, ExcMessage("cannot write '" + temporary + "'"));
+      writer(out);
+      out.flush();
+      AssertThrow(out, ExcMessage("writing '" + temporary + "' failed"));
+    }
+    std::filesystem::rename(temporary, path);
+  }
+
+
+  void
+  write_vtu(const std::string                              &directory,
+            const unsigned int                              cycle,
+            const std::array<const ElasticSubproblem *, 4> &subproblems,
+            const Solutions                                &solutions,
+            std::vector<std::pair<double, std::string>>    &records)
+  {
+    std::ostringstream stem;
+    stem << "solution-" << std::setw(2) << std::setfill('0') << cycle;
+
+    std::vector<std::string> pieces;
+    // Declared before the DataOut objects that subscribe to them.
+    std::vector<std::unique_ptr<StressPostprocessor>> stresses;
+    std::array<DataOut<2>, 4>                         data_outs;
+    std::array<Vector<float>, 4>                      layers, subdomains;
+    for (unsigned int s = 0; s < 4; ++s)
+      {
+        const ElasticSubproblem &sub      = *subproblems[s];
+        DataOut<2>              &data_out = data_outs[s];
+        data_out.attach_dof_handler(sub.dof_handler());
+        const std::vector<std::string> names(2, "displacement");
+        const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+          interpretation(
+            2, DataComponentInterpretation::component_is_part_of_vector);
+        data_out.add_data_vector(solutions[s],
+                                 names,
+                                 DataOut<2>::type_dof_data,
+                                 interpretation);
+        stresses.push_back(
+          std::make_unique<StressPostprocessor>(sub.material()));
+        data_out.add_data_vector(solutions[s], *stresses.back());
+
+        const unsigned int n_cells =
+          sub.dof_handler().get_triangulation().n_active_cells();
+        layers[s].reinit(n_cells);
+        subdomains[s].reinit(n_cells);
+        layers[s]     = sub.layer() == Layer::first ? 1.f : 2.f;
+        subdomains[s] = sub.subdomain() == Subdomain::minus ? -1.f : 1.f;
+        data_out.add_data_vector(layers[s],
+                                 "layer",
+                                 DataOut<2>::type_cell_data);
+        data_out.add_data_vector(subdomains[s],
+                                 "subdomain",
+                                 DataOut<2>::type_cell_data);
+
+        const bool simplex =
+          !sub.dof_handler().get_triangulation().all_reference_cells_are_hyper_cube();
+        data_out.build_patches(sub.mapping(), simplex ? 1 : sub.fe().degree);
+
+        std::string piece = stem.str() + "-" + std::string(1, sub.name()[0]) +
+                            (sub.subdomain() == Subdomain::minus ? "-minus" :
+                                                                   "-plus") +
+                            ".vtu";
+        write_atomically(directory + "/" + piece,
+                         [&](std::ostream &out) { data_out.write_vtu(out); });
+        pieces.push_back(piece);
+      }
+    write_atomically(directory + "/" + stem.str() + ".pvtu",
+                     [&](std::ostream &out) {
+                       data_outs[0].write_pvtu_record(out, pieces);
+                     });
+    records.emplace_back(cycle, stem.str() + ".pvtu");
+    write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
+      DataOutBase::write_pvd_record(out, records);
+    });
+  }
+} // namespace bilayer

@@ -1,0 +1,635 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <bilayer/parameters.h>
+
+#include <filesystem>
+#include <regex>
+#include <sstream>
+
+namespace bilayer
+{
+  namespace
+  {
+    const std::array<Side, 4> all_sides = {
+      {Side::left, Side::right, Side::bottom, Side::top}};
+
+    /// Parse "a, b" into two doubles (the pattern has checked the format).
+    std::array<double, 2>
+    parse_pair(const std::string &text)
+    {
+      const auto parts = Utilities::split_string_list(text, ',');
+      return {{Utilities::string_to_double(parts[0]),
+               Utilities::string_to_double(parts[1])}};
+    }
+
+    std::string
+    layer_subsection(const unsigned int layer)
+    {
+      return "Layer " + std::to_string(layer + 1);
+    }
+
+    std::string
+    traction_entry(const Side side)
+    {
+      return "Traction on " + side_name(side) + " side";
+    }
+
+    /// Build a two-component parser from "f_x; f_y" and evaluate it once so
+    /// that syntax errors surface while the entry's name is known.
+    std::unique_ptr<FunctionParser<2>>
+    make_vector_function(const std::string                   &expression,
+                         const std::map<std::string, double> &constants,
+                         const std::string                   &entry)
+    {
+      const auto parts = Utilities::split_string_list(expression, ';');
+      AssertThrow(parts.size() == 2,
+                  ExcMessage(entry + " must have two components separated "
+                                     "by ';' (x-component; y-component), got '" +
+                             expression + "'"));
+      auto function = std::make_unique<FunctionParser<2>>(2);
+      try
+        {
+          function->initialize("x,y", parts, constants);
+          Vector<double> value(2);
+          function->vector_value(Point<2>(0.123, 0.456), value);
+        }
+      catch (const ExceptionBase &)
+        {
+          AssertThrow(false,
+                      ExcMessage(entry + ": cannot evaluate '" + expression +
+                                 "' as a function of x and y (known constants: "
+                                 "material constants E1, nu1, mu1, lambda1, "
+                                 "E2, nu2, mu2, lambda2 and Loads/Constants)"));
+        }
+      return function;
+    }
+  } // namespace
+
+
+  std::string
+  side_name(const Side side)
+  {
+    static const std::array<std::string, 4> names = {
+      {"left", "right", "bottom", "top"}};
+    return names[static_cast<unsigned int>(side)];
+  }
+
+
+  void
+  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    prm.declare_entry("Lower left corner",
+                      "-1, -1",
+                      Patterns::List(Patterns::Double(), 2, 2),
+                      "Corner (x, y) of the rectangle Omega with the smallest "
+                      "coordinates [length].");
+    prm.declare_entry("Upper right corner",
+                      "1, 1",
+                      Patterns::List(Patterns::Double(), 2, 2),
+                      "Corner (x, y) of the rectangle Omega with the largest "
+                      "coordinates [length].");
+    prm.declare_entry("Height of Sigma",
+                      "0",
+                      Patterns::Double(),
+                      "y-coordinate of the horizontal line Sigma that splits "
+                      "Omega into Omega- (below) and Omega+ (above) [length]. "
+                      "The normal nu = (0, 1) points into Omega+.");
+    prm.declare_entry("Crack interval on Sigma",
+                      "-0.5, 0.5",
+                      Patterns::List(Patterns::Double(), 2, 2),
+                      "End points (x_start, x_end) of the through crack "
+                      "gamma_c on Sigma [length]. Equal end points mean no "
+                      "crack. The crack must lie strictly inside Omega.");
+    prm.declare_entry("Clamped sides",
+                      "left, right",
+                      Patterns::MultipleSelection("left|right|bottom|top"),
+                      "Sides of Omega that form Gamma_D (both layers clamped "
+                      "to the prescribed displacement). The other sides form "
+                      "Gamma_N and carry the tractions of the Loads section.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  GeometryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    const auto lower = parse_pair(prm.get("Lower left corner"));
+    const auto upper = parse_pair(prm.get("Upper right corner"));
+    x_min            = lower[0];
+    y_min            = lower[1];
+    x_max            = upper[0];
+    y_max            = upper[1];
+    sigma_height     = prm.get_double("Height of Sigma");
+    const auto crack = parse_pair(prm.get("Crack interval on Sigma"));
+    crack_start      = crack[0];
+    crack_end        = crack[1];
+    clamped.fill(false);
+    for (const auto &name :
+         Utilities::split_string_list(prm.get("Clamped sides")))
+      for (const Side side : all_sides)
+        if (name == side_name(side))
+          clamped[static_cast<unsigned int>(side)] = true;
+    prm.leave_subsection();
+
+    std::ostringstream range;
+    AssertThrow(x_min < x_max && y_min < y_max,
+                ExcMessage("Geometry/Upper right corner must lie above and to "
+                           "the right of Geometry/Lower left corner"));
+    range << "(" << y_min << ", " << y_max << ")";
+    AssertThrow(y_min < sigma_height && sigma_height < y_max,
+                ExcMessage("Geometry/Height of Sigma must lie in " +
+                           range.str() + ", got " +
+                           std::to_string(sigma_height)));
+    range.str("");
+    range << "(" << x_min << ", " << x_max << ")";
+    AssertThrow(x_min < crack_start && crack_start <= crack_end &&
+                  crack_end < x_max,
+                ExcMessage("Geometry/Crack interval on Sigma must satisfy " +
+                           std::to_string(x_min) + " < x_start <= x_end < " +
+                           std::to_string(x_max) + ", got " +
+                           prm.get("Geometry.Crack interval on Sigma")));
+    const bool sides = clamped[0] || clamped[1];
+    AssertThrow(sides || (clamped[2] && clamped[3]),
+                ExcMessage("Geometry/Clamped sides must clamp a part of the "
+                           "boundary of both Omega- and Omega+ (left or right, "
+                           "or both bottom and top), got '" +
+                           prm.get("Geometry.Clamped sides") + "'"));
+  }
+
+
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Element shape",
+                      "quadrilaterals",
+                      Patterns::Selection("quadrilaterals|triangles"),
+                      "Cells of both subdomain meshes: quadrilaterals (Q_k) or "
+                      "triangles (P_k, each rectangle cut into two).");
+    prm.declare_entry("Cells along Sigma",
+                      "16",
+                      Patterns::Integer(1, 100000),
+                      "Number of cell edges along Sigma on the coarsest mesh "
+                      "[-]. The crack end points must be mesh vertices.");
+    prm.declare_entry("Cells across each subdomain",
+                      "0",
+                      Patterns::Integer(0, 100000),
+                      "Number of cells between Sigma and the top (bottom) side "
+                      "of each subdomain on the coarsest mesh [-]; 0 chooses "
+                      "the number that makes the cells closest to squares.");
+    prm.declare_entry("Polynomial degree of layer 1",
+                      "1",
+                      Patterns::Integer(1, 4),
+                      "Degree of the Lagrange elements of layer 1 (u) [-].");
+    prm.declare_entry("Polynomial degree of layer 2",
+                      "1",
+                      Patterns::Integer(1, 4),
+                      "Degree of the Lagrange elements of layer 2 (v) [-].");
+    prm.declare_entry("Number of cycles",
+                      "1",
+                      Patterns::Integer(1, 12),
+                      "Number of meshes in the sequence; cycle k halves the "
+                      "cells of cycle k-1 in each direction [-].");
+    prm.leave_subsection();
+  }
+
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    shape = prm.get("Element shape") == "triangles" ?
+              ElementShape::triangle :
+              ElementShape::quadrilateral;
+    cells_along_sigma = prm.get_integer("Cells along Sigma");
+    cells_across      = prm.get_integer("Cells across each subdomain");
+    degree_first      = prm.get_integer("Polynomial degree of layer 1");
+    degree_second     = prm.get_integer("Polynomial degree of layer 2");
+    n_cycles          = prm.get_integer("Number of cycles");
+    prm.leave_subsection();
+  }
+
+
+  void
+  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    const MaterialParameters defaults;
+    for (unsigned int l = 0; l < 2; ++l)
+      {
+        prm.enter_subsection(layer_subsection(l));
+        prm.declare_entry("Young's modulus",
+                          Patterns::Tools::to_string(
+                            defaults.layer[l].youngs_modulus),
+                          Patterns::Double(0),
+                          "Young's modulus E of the layer [stress, e.g. GPa; "
+                          "tractions use the same unit].");
+        prm.declare_entry("Poisson's ratio",
+                          Patterns::Tools::to_string(
+                            defaults.layer[l].poisson_ratio),
+                          Patterns::Double(-1, 0.5),
+                          "Poisson's ratio nu of the layer, plane strain "
+                          "[-], in (-1, 0.5).");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+  void
+  MaterialParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Materials");
+    for (unsigned int l = 0; l < 2; ++l)
+      {
+        prm.enter_subsection(layer_subsection(l));
+        layer[l].youngs_modulus = prm.get_double("Young's modulus");
+        layer[l].poisson_ratio  = prm.get_double("Poisson's ratio");
+        const std::string where = "Materials/" + layer_subsection(l) + "/";
+        AssertThrow(layer[l].youngs_modulus > 0,
+                    ExcMessage(where + "Young's modulus must be > 0, got " +
+                               prm.get("Young's modulus")));
+        AssertThrow(layer[l].poisson_ratio > -1 &&
+                      layer[l].poisson_ratio < 0.5,
+                    ExcMessage(where + "Poisson's ratio must lie in "
+                                       "(-1, 0.5), got " +
+                               prm.get("Poisson's ratio")));
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+  LoadParameters::LoadParameters()
+  {
+    for (auto &layer : traction)
+      layer.fill("0; 0");
+  }
+
+
+  void
+  LoadParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loads");
+    prm.declare_entry(
+      "Constants",
+      "",
+      Patterns::Anything(),
+      "Named constants for the expressions below, as 'name = expression; "
+      "name = expression'. An expression may use E1, nu1, mu1, lambda1, E2, "
+      "nu2, mu2, lambda2 (the Lame constants of the layers, from Materials) "
+      "and the constants defined before it, e.g. 'c = 1e-3*mu1'.");
+    for (unsigned int l = 0; l < 2; ++l)
+      {
+        prm.enter_subsection(layer_subsection(l));
+        for (const Side side : all_sides)
+          prm.declare_entry(traction_entry(side),
+                            "0; 0",
+                            Patterns::Anything(),
+                            "Traction (x-component; y-component) on this side "
+                            "of the layer as expressions of x and y [stress]. "
+                            "Used where the side is not clamped; must be "
+                            "'0; 0' on clamped sides.");
+        prm.declare_entry("Prescribed displacement",
+                          "0; 0",
+                          Patterns::Anything(),
+                          "Displacement (x-component; y-component) of the "
+                          "layer on the clamped sides Gamma_D as expressions "
+                          "of x and y [length].");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+  void
+  LoadParameters::parse_parameters(ParameterHandler         &prm,
+                                   const MaterialParameters &materials)
+  {
+    constant_values.clear();
+    for (unsigned int l = 0; l < 2; ++l)
+      {
+        const std::string n = std::to_string(l + 1);
+        const auto       &m = materials.layer[l];
+        constant_values["E" + n]      = m.youngs_modulus;
+        constant_values["nu" + n]     = m.poisson_ratio;
+        constant_values["mu" + n]     = m.mu();
+        constant_values["lambda" + n] = m.lambda();
+      }
+
+    prm.enter_subsection("Loads");
+    constants = prm.get("Constants");
+    const std::regex definition(R"(\s*([A-Za-z_][A-Za-z_0-9]*)\s*=\s*(.+))");
+    for (const auto &item : Utilities::split_string_list(constants, ';'))
+      {
+        std::smatch match;
+        AssertThrow(std::regex_match(item, match, definition),
+                    ExcMessage("Loads/Constants must read 'name = expression; "
+                               "...', cannot read '" +
+                               item + "'"));
+        FunctionParser<1> parser(1);
+        try
+          {
+            parser.initialize("t", match[2].str(), constant_values);
+            constant_values[match[1].str()] = parser.value(Point<1>());
+          }
+        catch (const ExceptionBase &)
+          {
+            AssertThrow(false,
+                        ExcMessage("Loads/Constants: cannot evaluate '" +
+                                   match[2].str() + "' for constant '" +
+                                   match[1].str() + "'"));
+          }
+      }
+
+    for (unsigned int l = 0; l < 2; ++l)
+      {
+        prm.enter_subsection(layer_subsection(l));
+        for (const Side side : all_sides)
+          traction[l][static_cast<unsigned int>(side)] =
+            prm.get(traction_entry(side));
+        prescribed[l] = prm.get("Prescribed displacement");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+
+    // Evaluate every expression once now, so that errors name the entry.
+    for (const Layer layer : {Layer::first, Layer::second})
+      {
+        prescribed_function(layer);
+        for (const Side side : all_sides)
+          traction_function(layer, side);
+      }
+  }
+
+
+  std::unique_ptr<FunctionParser<2>>
+  LoadParameters::traction_function(const Layer layer, const Side side) const
+  {
+    const unsigned int l = static_cast<unsigned int>(layer);
+    return make_vector_function(traction[l][static_cast<unsigned int>(side)],
+                                constant_values,
+                                "Loads/" + layer_subsection(l) + "/" +
+                                  traction_entry(side));
+  }
+
+
+  std::unique_ptr<FunctionParser<2>>
+  LoadParameters::prescribed_function(const Layer layer) const
+  {
+    const unsigned int l = static_cast<unsigned int>(layer);
+    return make_vector_function(prescribed[l],
+                                constant_values,
+                                "Loads/" + layer_subsection(l) +
+                                  "/Prescribed displacement");
+  }
+
+
+  bool
+  LoadParameters::traction_is_zero(const Layer layer, const Side side) const
+  {
+    const auto parts = Utilities::split_string_list(
+      traction[static_cast<unsigned int>(layer)]
+              [static_cast<unsigned int>(side)],
+      ';');
+    for (const auto &p : parts)
+      if (p != "0" && p != "0.0" && p != "0.")
+        return false;
+    return true;
+  }
+
+
+  void
+  ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Non-penetration on the crack",
+                      "true",
+                      Patterns::Bool(),
+                      "true: the crack faces of layer 1 must not penetrate "
+                      "each other ([u].nu >= 0, multiplier lambda_c). false: "
+                      "the linear problem with traction-free crack faces that "
+                      "may interpenetrate (the gluing multipliers stay).");
+    prm.declare_entry("Multiplier bound p",
+                      "1e7",
+                      Patterns::Double(0),
+                      "Bound p of the multiplier sets: 0 <= lambda_c <= p, "
+                      "-p <= lambda_g, lambda-, lambda+ <= p [stress].");
+    prm.declare_entry("Multiplier coupling",
+                      "lumped",
+                      Patterns::Selection("lumped|consistent"),
+                      "How the multipliers act on the traces: lumped (nodal "
+                      "quadrature of the multiplier mesh, node-to-node "
+                      "constraints) or consistent (Gauss quadrature on the "
+                      "common refinement of the trace meshes, mortar "
+                      "constraints).");
+    prm.declare_entry("Jump sampling",
+                      "weighted",
+                      Patterns::Selection("weighted|nodal"),
+                      "Jump used in the multiplier update: weighted (the weak "
+                      "jump D^-1 C w, D the lumped multiplier mass) or nodal "
+                      "(the traces evaluated at the multiplier nodes). Both "
+                      "agree for lumped coupling on matching meshes.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  ContactParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    non_penetration  = prm.get_bool("Non-penetration on the crack");
+    multiplier_bound = prm.get_double("Multiplier bound p");
+    AssertThrow(multiplier_bound > 0,
+                ExcMessage("Contact/Multiplier bound p must be > 0, got " +
+                           prm.get("Multiplier bound p")));
+    coupling = prm.get("Multiplier coupling") == "consistent" ?
+                 MultiplierCoupling::consistent :
+                 MultiplierCoupling::lumped;
+    sampling = prm.get("Jump sampling") == "nodal" ? JumpSampling::nodal :
+                                                     JumpSampling::weighted;
+    prm.leave_subsection();
+  }
+
+
+  void
+  SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    prm.declare_entry("Method",
+                      "uzawa",
+                      Patterns::Selection("uzawa"),
+                      "Outer solver on the multipliers: uzawa (the paper's "
+                      "projected Uzawa iteration, paper.md section 4).");
+    prm.declare_entry("Uzawa step theta",
+                      "65",
+                      Patterns::Double(0),
+                      "Step theta of the multiplier update [1/stress "
+                      "x stress/length, i.e. multiplier units per unit "
+                      "jump]; the paper uses 65 with moduli in GPa.");
+    prm.declare_entry("Maximum iterations",
+                      "100000",
+                      Patterns::Integer(1),
+                      "Iteration limit of the outer solver [-]; reaching it "
+                      "is reported as non-convergence.");
+    prm.declare_entry("Stopping rule",
+                      "paper",
+                      Patterns::Selection("paper|paper with norm|relative"),
+                      "paper: max ||w^k - w^(k-1)|| / ||w^k||^2 < Tolerance "
+                      "over u-, u+, v-, v+ in the energy norm, as printed; "
+                      "paper with norm: the same with ||w^k||; relative: "
+                      "relative change of the multipliers and relative "
+                      "constraint violation both < Tolerance.");
+    prm.declare_entry("Tolerance",
+                      "1e-6",
+                      Patterns::Double(0),
+                      "Tolerance of the stopping rule [-, or 1/energy^(1/2) "
+                      "for the paper's rule].");
+    prm.declare_entry("Divergence growth factor",
+                      "1000",
+                      Patterns::Double(1),
+                      "The iteration is declared divergent when the norm of "
+                      "the multiplier increment exceeds its smallest value so "
+                      "far by this factor [-].");
+    prm.declare_entry("Acceptance tolerance",
+                      "1e-6",
+                      Patterns::Double(0),
+                      "Bound on the relative constraint violation, relative "
+                      "interpenetration and complementarity of the final "
+                      "solution; a run beyond it fails [-].");
+    prm.leave_subsection();
+  }
+
+
+  void
+  SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    theta = prm.get_double("Uzawa step theta");
+    AssertThrow(theta > 0,
+                ExcMessage("Solver/Uzawa step theta must be > 0, got " +
+                           prm.get("Uzawa step theta")));
+    max_iterations      = prm.get_integer("Maximum iterations");
+    const auto rule     = prm.get("Stopping rule");
+    stopping_rule       = rule == "paper"           ? StoppingRule::paper :
+                          rule == "paper with norm" ? StoppingRule::paper_norm :
+                                                      StoppingRule::relative;
+    tolerance           = prm.get_double("Tolerance");
+    AssertThrow(tolerance > 0,
+                ExcMessage("Solver/Tolerance must be > 0, got " +
+                           prm.get("Tolerance")));
+    divergence_factor    = prm.get_double("Divergence growth factor");
+    acceptance_tolerance = prm.get_double("Acceptance tolerance");
+    AssertThrow(acceptance_tolerance > 0,
+                ExcMessage("Solver/Acceptance tolerance must be > 0, got " +
+                           prm.get("Acceptance tolerance")));
+    prm.leave_subsection();
+  }
+
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Output directory",
+                      "results",
+                      Patterns::Anything(),
+                      "Directory for all output files, created if missing; "
+                      "relative to the working directory.");
+    prm.declare_entry("Write VTU",
+                      "true",
+                      Patterns::Bool(),
+                      "Write solution.pvd with one .pvtu per cycle and one "
+                      ".vtu per layer and subdomain.");
+    prm.declare_entry("Write interface CSV",
+                      "true",
+                      Patterns::Bool(),
+                      "Write interface-NN.csv (jumps, gaps and multipliers "
+                      "at the multiplier nodes on Sigma) per cycle.");
+    prm.declare_entry("Progress interval",
+                      "100",
+                      Patterns::Integer(0),
+                      "Print the iteration, the stopping value and the "
+                      "constraint violation every this many iterations; 0 "
+                      "prints none [-].");
+    prm.declare_entry("Terminal output",
+                      "full",
+                      Patterns::Selection("full|checks"),
+                      "full: progress, per-cycle report, table and timings; "
+                      "checks: only the pass/fail lines of the acceptance "
+                      "checks (for regression tests).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory = prm.get("Output directory");
+    AssertThrow(!directory.empty(),
+                ExcMessage("Output/Output directory must not be empty"));
+    write_vtu         = prm.get_bool("Write VTU");
+    write_interface   = prm.get_bool("Write interface CSV");
+    progress_interval = prm.get_integer("Progress interval");
+    terminal          = prm.get("Terminal output") == "checks" ?
+                          TerminalOutput::checks :
+                          TerminalOutput::full;
+    prm.leave_subsection();
+  }
+
+
+  void
+  Scene::declare_parameters(ParameterHandler &prm)
+  {
+    GeometryParameters::declare_parameters(prm);
+    MeshParameters::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm);
+    LoadParameters::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
+    SolverParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+  }
+
+
+  void
+  Scene::parse_parameters(ParameterHandler &prm)
+  {
+    geometry.parse_parameters(prm);
+    mesh.parse_parameters(prm);
+    materials.parse_parameters(prm);
+    loads.parse_parameters(prm, materials);
+    contact.parse_parameters(prm);
+    solver.parse_parameters(prm);
+    output.parse_parameters(prm);
+
+    for (const Layer layer : {Layer::first, Layer::second})
+      for (const Side side : all_sides)
+        AssertThrow(!geometry.clamped[static_cast<unsigned int>(side)] ||
+                      loads.traction_is_zero(layer, side),
+                    ExcMessage("Loads/Layer " +
+                               std::to_string(static_cast<int>(layer) + 1) +
+                               "/" + traction_entry(side) +
+                               " must be '0; 0': the " + side_name(side) +
+                               " side is clamped (Geometry/Clamped sides)"));
+  }
+
+
+  Scene
+  read_scene(ParameterHandler &prm, const std::string &filename)
+  {
+    Scene::declare_parameters(prm);
+    AssertThrow(std::filesystem::exists(filename),
+                ExcMessage("cannot open parameter file '" + filename + "'"));
+    prm.parse_input(filename, "", true, true);
+    Scene scene;
+    scene.parse_parameters(prm);
+    scene.name = std::filesystem::path(filename).stem().string();
+    return scene;
+  }
+} // namespace bilayer

@@ -1,0 +1,315 @@
+#include <deal.II/base/timer.h>
+
+#include <bilayer/output.h>
+#include <bilayer/study.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace bilayer
+{
+  namespace
+  {
+    /// A JSON number (null for NaN and infinities).
+    std::string
+    json(const double value)
+    {
+      if (!std::isfinite(value))
+        return "null";
+      std::ostringstream s;
+      s << std::setprecision(12) << value;
+      return s.str();
+    }
+
+    std::string
+    json(const std::string &text)
+    {
+      std::string quoted = "\"";
+      for (const char c : text)
+        {
+          if (c == '"' || c == '\\')
+            quoted += '\\';
+          quoted += c;
+        }
+      return quoted + "\"";
+    }
+
+    std::string
+    two_digits(const unsigned int n)
+    {
+      std::ostringstream s;
+      s << std::setw(2) << std::setfill('0') << n;
+      return s.str();
+    }
+  } // namespace
+
+
+  bool
+  CycleRecord::accepted() const
+  {
+    for (const auto &c : checks)
+      if (!c.second)
+        return false;
+    return !checks.empty();
+  }
+
+
+  Study::Study(const Scene &scene, std::ostream &out)
+    : scene(scene)
+    , out(out)
+    , pcout(out, scene.output.terminal == TerminalOutput::full)
+    , domain(scene.geometry, scene.mesh)
+    , coupling(scene.geometry, scene.contact)
+  {}
+
+
+  bool
+  Study::run()
+  {
+    std::filesystem::create_directories(scene.output.directory);
+    for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
+      {
+        const CycleRecord &record = run_cycle(cycle);
+        if (!record.accepted())
+          return false;
+      }
+    if (scene.output.terminal == TerminalOutput::full)
+      {
+        out << "\n";
+        table.write_text(out, TableHandler::org_mode_table);
+      }
+    return true;
+  }
+
+
+  const CycleRecord &
+  Study::run_cycle(const unsigned int cycle)
+  {
+    Timer       total;
+    CycleRecord record;
+    record.cycle = cycle;
+    record.theta = scene.solver.theta;
+
+    domain.create_meshes(cycle);
+    record.minus = domain.statistics(Subdomain::minus);
+    record.plus  = domain.statistics(Subdomain::plus);
+    record.P     = domain.n_sigma_vertices();
+    record.M     = domain.n_outer_vertices();
+
+    for (const Layer layer : {Layer::first, Layer::second})
+      {
+        const auto prescribed = scene.loads.prescribed_function(layer);
+        std::array<std::unique_ptr<FunctionParser<2>>, 4> traction_owners;
+        std::array<const Function<2> *, 4>                traction;
+        for (unsigned int side = 0; side < 4; ++side)
+          {
+            traction_owners[side] =
+              scene.loads.traction_function(layer, static_cast<Side>(side));
+            traction[side] = traction_owners[side].get();
+          }
+        for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+          {
+            auto &sub = subproblems[Interface::index(layer, sd)];
+            sub       = std::make_unique<ElasticSubproblem>(
+              layer,
+              sd,
+              domain.triangulation(sd),
+              scene.mesh.degree(layer),
+              scene.materials.layer[static_cast<unsigned int>(layer)]);
+            sub->setup(scene.geometry.clamped, *prescribed, traction);
+            record.dofs += sub->n_dofs();
+          }
+      }
+    std::array<const ElasticSubproblem *, 4> views;
+    Subproblems                              solvers;
+    for (unsigned int s = 0; s < 4; ++s)
+      {
+        views[s]   = subproblems[s].get();
+        solvers[s] = subproblems[s].get();
+      }
+    coupling.setup(views);
+    coupling.initialize(mu);
+    record.multipliers   = coupling.n_multipliers();
+    record.setup_seconds = total.wall_time();
+
+    pcout << "Cycle " << cycle << ": " << record.minus.cells << " + "
+          << record.plus.cells << " "
+          << (scene.mesh.shape == ElementShape::quadrilateral ?
+                "quadrilaterals" :
+                "triangles")
+          << ", P = " << record.P << ", M = " << record.M << ", "
+          << record.dofs << " dofs, " << record.multipliers
+          << " multipliers" << std::endl;
+
+    Timer solve_timer;
+    const UzawaSolver solver(scene.solver, scene.output, pcout);
+    record.result        = solver.solve(solvers, coupling, mu, w);
+    record.solve_seconds = solve_timer.wall_time();
+
+    for (unsigned int s = 0; s < 4; ++s)
+      record.energy += subproblems[s]->energy(w[s]);
+    record.report = coupling.assess(w, mu);
+    check(record);
+
+    const std::string &dir = scene.output.directory;
+    std::filesystem::create_directories(dir);
+    if (scene.output.write_vtu)
+      write_vtu(dir, cycle, views, w, pvd_records);
+    if (scene.output.write_interface)
+      write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
+                       [&](std::ostream &o) { coupling.write_csv(o, w, mu); });
+    record.total_seconds = total.wall_time();
+
+    cycle_records.push_back(record);
+    add_to_table(record);
+    write_summary();
+    write_atomically(dir + "/table.txt", [&](std::ostream &o) {
+      table.write_text(o, TableHandler::org_mode_table);
+    });
+    write_atomically(dir + "/table.tex",
+                     [&](std::ostream &o) { table.write_tex(o); });
+    print_report(record);
+    return cycle_records.back();
+  }
+
+
+  void
+  Study::check(CycleRecord &record) const
+  {
+    const double       tol = scene.solver.acceptance_tolerance;
+    std::ostringstream t;
+    t << tol;
+    const auto &r = record.report;
+    record.checks.emplace_back("stopping rule met", record.result.converged);
+    record.checks.emplace_back("relative violation of the discrete "
+                               "constraints <= " +
+                                 t.str(),
+                               r.relative_discrete_violation <= tol);
+    if (scene.contact.non_penetration && scene.geometry.has_crack())
+      {
+        record.checks.emplace_back("contact multiplier mu_c >= 0",
+                                   r.min_contact_multiplier >= 0);
+        record.checks.emplace_back("complementarity <= " + t.str(),
+                                   r.complementarity <= tol);
+      }
+    record.checks.emplace_back("multipliers below the bound p",
+                               r.max_multiplier_over_bound < 1.);
+  }
+
+
+  void
+  Study::print_report(const CycleRecord &record) const
+  {
+    const auto &r = record.report;
+    pcout << "  " << record.result.solver << ": " << record.result.message
+          << " (" << record.result.subdomain_solves
+          << " subdomain solves, theta = " << record.theta << ")\n"
+          << std::scientific << std::setprecision(4)
+          << "  energy Pi                    " << record.energy << "\n"
+          << "  constraint violation (12)    " << r.constraint_violation
+          << "  (relative " << r.relative_constraint_violation << ")\n"
+          << "  largest interpenetration     " << r.max_penetration
+          << "  (displacement scale " << r.displacement_scale << ")\n"
+          << "  discrete violation           "
+          << r.relative_discrete_violation << " (relative)\n"
+          << "  smallest mu_c                " << r.min_contact_multiplier
+          << "\n"
+          << "  complementarity              " << r.complementarity << "\n"
+          << std::defaultfloat << std::setprecision(3)
+          << "  wall time                    setup " << record.setup_seconds
+          << " s, solve " << record.solve_seconds << " s, total "
+          << record.total_seconds << " s" << std::endl;
+    for (const auto &c : record.checks)
+      out << "cycle " << record.cycle << ": " << c.first << ": "
+          << (c.second ? "yes" : "NO") << std::endl;
+    if (!record.accepted())
+      std::cerr << "bilayer: cycle " << record.cycle
+                << " FAILED: " << record.result.message << std::endl;
+  }
+
+
+  void
+  Study::add_to_table(const CycleRecord &r)
+  {
+    table.add_value("cycle", r.cycle);
+    table.add_value("P", r.P);
+    table.add_value("M", r.M);
+    table.add_value("h-min", r.minus.h_min);
+    table.add_value("h-max", r.minus.h_max);
+    table.add_value("h+min", r.plus.h_min);
+    table.add_value("h+max", r.plus.h_max);
+    table.add_value("Nod-", r.minus.vertices);
+    table.add_value("Cells-", r.minus.cells);
+    table.add_value("Nod+", r.plus.vertices);
+    table.add_value("Cells+", r.plus.cells);
+    table.add_value("dofs", r.dofs);
+    table.add_value("iter", r.result.iterations);
+    table.add_value("solves", static_cast<unsigned int>(r.result.subdomain_solves));
+    table.add_value("energy", r.energy);
+    table.add_value("violation", r.report.constraint_violation);
+    table.add_value("time [s]", r.total_seconds);
+    for (const auto &key : {"h-min", "h-max", "h+min", "h+max"})
+      table.set_precision(key, 4);
+    table.set_precision("energy", 8);
+    table.set_scientific("energy", true);
+    table.set_precision("violation", 2);
+    table.set_scientific("violation", true);
+    table.set_precision("time [s]", 3);
+  }
+
+
+  void
+  Study::write_summary() const
+  {
+    write_atomically(scene.output.directory + "/summary.json", [&](std::ostream &o) {
+      o << "{\n  \"scene\": " << json(scene.name) << ",\n  \"cycles\": [";
+      for (unsigned int i = 0; i < cycle_records.size(); ++i)
+        {
+          const auto &r = cycle_records[i];
+          const auto &k = r.report;
+          o << (i ? "," : "") << "\n    {"
+            << "\"cycle\": " << r.cycle
+            << ", \"vertices_minus\": " << r.minus.vertices
+            << ", \"cells_minus\": " << r.minus.cells
+            << ", \"vertices_plus\": " << r.plus.vertices
+            << ", \"cells_plus\": " << r.plus.cells << ", \"P\": " << r.P
+            << ", \"M\": " << r.M
+            << ", \"h_min_minus\": " << json(r.minus.h_min)
+            << ", \"h_max_minus\": " << json(r.minus.h_max)
+            << ", \"h_min_plus\": " << json(r.plus.h_min)
+            << ", \"h_max_plus\": " << json(r.plus.h_max)
+            << ", \"dofs\": " << r.dofs
+            << ", \"multipliers\": " << r.multipliers
+            << ", \"solver\": " << json(r.result.solver)
+            << ", \"theta\": " << json(r.theta)
+            << ", \"iterations\": " << r.result.iterations
+            << ", \"subdomain_solves\": " << r.result.subdomain_solves
+            << ", \"converged\": " << (r.result.converged ? "true" : "false")
+            << ", \"diverged\": " << (r.result.diverged ? "true" : "false")
+            << ", \"stopping_value\": " << json(r.result.stopping_value)
+            << ", \"message\": " << json(r.result.message)
+            << ", \"energy\": " << json(r.energy)
+            << ", \"constraint_violation\": " << json(k.constraint_violation)
+            << ", \"relative_constraint_violation\": "
+            << json(k.relative_constraint_violation)
+            << ", \"max_penetration\": " << json(k.max_penetration)
+            << ", \"displacement_scale\": " << json(k.displacement_scale)
+            << ", \"relative_discrete_violation\": "
+            << json(k.relative_discrete_violation)
+            << ", \"min_contact_multiplier\": "
+            << json(k.min_contact_multiplier)
+            << ", \"complementarity\": " << json(k.complementarity)
+            << ", \"max_multiplier_over_bound\": "
+            << json(k.max_multiplier_over_bound)
+            << ", \"accepted\": " << (r.accepted() ? "true" : "false")
+            << ", \"wall_seconds\": {\"setup\": " << json(r.setup_seconds)
+            << ", \"solve\": " << json(r.solve_seconds)
+            << ", \"total\": " << json(r.total_seconds) << "}}";
+        }
+      o << "\n  ]\n}\n";
+    });
+  }
+} // namespace bilayer

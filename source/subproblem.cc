@@ -1,0 +1,211 @@
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <bilayer/geometry.h>
+#include <bilayer/subproblem.h>
+
+namespace bilayer
+{
+  ElasticSubproblem::ElasticSubproblem(const Layer             layer,
+                                       const Subdomain         subdomain,
+                                       const Triangulation<2> &triangulation,
+                                       const unsigned int      degree,
+                                       const LayerMaterial    &material)
+    : layer_(layer)
+    , subdomain_(subdomain)
+    , material_(material)
+    , dofs(triangulation)
+  {
+    if (triangulation.all_reference_cells_are_hyper_cube())
+      fe_system = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 2);
+    else
+      fe_system = std::make_unique<FESystem<2>>(FE_SimplexP<2>(degree), 2);
+  }
+
+
+  const Mapping<2> &
+  ElasticSubproblem::mapping() const
+  {
+    return fe_system->reference_cell().get_default_linear_mapping<2>();
+  }
+
+
+  std::string
+  ElasticSubproblem::name() const
+  {
+    return std::string(layer_ == Layer::first ? "u" : "v") +
+           (subdomain_ == Subdomain::minus ? "-" : "+");
+  }
+
+
+  void
+  ElasticSubproblem::setup(const std::array<bool, 4>                &clamped,
+                           const Function<2>                        &prescribed,
+                           const std::array<const Function<2> *, 4> &traction)
+  {
+    Timer timer;
+    dofs.distribute_dofs(*fe_system);
+
+    constraints.clear();
+    homogeneous_constraints.clear();
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    DoFTools::make_hanging_node_constraints(dofs, homogeneous_constraints);
+    const Functions::ZeroFunction<2> zero(2);
+    for (unsigned int side = 0; side < 4; ++side)
+      if (clamped[side])
+        {
+          VectorTools::interpolate_boundary_values(mapping(),
+                                                   dofs,
+                                                   side,
+                                                   prescribed,
+                                                   constraints);
+          VectorTools::interpolate_boundary_values(
+            mapping(), dofs, side, zero, homogeneous_constraints);
+        }
+    constraints.close();
+    homogeneous_constraints.close();
+
+    DynamicSparsityPattern dsp(dofs.n_dofs());
+    DoFTools::make_sparsity_pattern(dofs, dsp, constraints, true);
+    sparsity.copy_from(dsp);
+    system_matrix.reinit(sparsity);
+    stiffness.reinit(sparsity);
+    system_rhs.reinit(dofs.n_dofs());
+    traction_load.reinit(dofs.n_dofs());
+
+    assemble(clamped, traction);
+    assembly_seconds = timer.wall_time();
+
+    timer.restart();
+    factorisation.initialize(system_matrix);
+    factorisation_seconds = timer.wall_time();
+    solve_count           = 0;
+  }
+
+
+  void
+  ElasticSubproblem::assemble(
+    const std::array<bool, 4>                &clamped,
+    const std::array<const Function<2> *, 4> &traction)
+  {
+    const unsigned int     degree = fe_system->degree;
+    const ReferenceCell    cell_type = fe_system->reference_cell();
+    const Quadrature<2>    quadrature =
+      cell_type.get_gauss_type_quadrature<2>(degree + 1);
+    const Quadrature<1> face_quadrature =
+      ReferenceCells::Line.get_gauss_type_quadrature<1>(degree + 1);
+
+    FEValues<2>     fe_values(mapping(),
+                          *fe_system,
+                          quadrature,
+                          update_gradients | update_JxW_values);
+    FEFaceValues<2> fe_face_values(mapping(),
+                                   *fe_system,
+                                   face_quadrature,
+                                   update_values | update_quadrature_points |
+                                     update_JxW_values);
+
+    const unsigned int dofs_per_cell = fe_system->n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    Vector<double>     cell_rhs(dofs_per_cell);
+    std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
+    std::vector<SymmetricTensor<2, 2>>   eps(dofs_per_cell);
+    std::vector<double>                  div(dofs_per_cell);
+    Vector<double>                       t(2);
+    const FEValuesExtractors::Vector     displacement(0);
+
+    const double mu     = material_.mu();
+    const double lambda = material_.lambda();
+
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        cell_matrix = 0;
+        cell_rhs    = 0;
+        fe_values.reinit(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+                div[i] = fe_values[displacement].divergence(i, q);
+              }
+            const double JxW = fe_values.JxW(q);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              for (unsigned int j = i; j < dofs_per_cell; ++j)
+                cell_matrix(i, j) +=
+                  (2 * mu * scalar_product(eps[i], eps[j]) +
+                   lambda * div[i] * div[j]) *
+                  JxW;
+          }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            cell_matrix(i, j) = cell_matrix(j, i);
+
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() <= BoundaryIds::top &&
+              !clamped[cell->face(f)->boundary_id()])
+            {
+              const Function<2> &load = *traction[cell->face(f)->boundary_id()];
+              fe_face_values.reinit(cell, f);
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                {
+                  load.vector_value(fe_face_values.quadrature_point(q), t);
+                  const Tensor<1, 2> traction_q({t[0], t[1]});
+                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    cell_rhs(i) += fe_face_values[displacement].value(i, q) *
+                                   traction_q * fe_face_values.JxW(q);
+                }
+            }
+
+        cell->get_dof_indices(local_dofs);
+        constraints.distribute_local_to_global(
+          cell_matrix, cell_rhs, local_dofs, system_matrix, system_rhs);
+        stiffness.add(local_dofs, cell_matrix);
+        traction_load.add(local_dofs, cell_rhs);
+      }
+  }
+
+
+  void
+  ElasticSubproblem::solve(const Vector<double> &coupling,
+                           Vector<double>       &solution) const
+  {
+    if (coupling.size() > 0)
+      {
+        solution = coupling;
+        homogeneous_constraints.condense(solution);
+        solution += system_rhs;
+      }
+    else
+      solution = system_rhs;
+    factorisation.solve(solution);
+    constraints.distribute(solution);
+    ++solve_count;
+  }
+
+
+  double
+  ElasticSubproblem::energy_norm_squared(const Vector<double> &w) const
+  {
+    return stiffness.matrix_norm_square(w);
+  }
+
+
+  double
+  ElasticSubproblem::energy(const Vector<double> &w) const
+  {
+    return 0.5 * stiffness.matrix_norm_square(w) - traction_load * w;
+  }
+} // namespace bilayer
