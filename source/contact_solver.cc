@@ -19,9 +19,8 @@ namespace bilayer
     interface.apply(multipliers, loads);
     Threads::TaskGroup<void> tasks;
     for (unsigned int s = 0; s < 4; ++s)
-      tasks += Threads::new_task([&, s]() {
-        subproblems[s]->solve(loads[s], solutions[s]);
-      });
+      tasks += Threads::new_task(
+        [&, s]() { subproblems[s]->solve(loads[s], solutions[s]); });
     tasks.join_all();
   }
 
@@ -47,8 +46,8 @@ namespace bilayer
     Solutions           w_old;
     BlockVector<double> g, mu_new, mu_old;
     Vector<double>      difference;
-    double min_increment  = std::numeric_limits<double>::max();
-    double last_increment = 0;
+    double              min_increment  = std::numeric_limits<double>::max();
+    double              last_increment = 0;
 
     for (unsigned int k = 0;; ++k)
       {
@@ -79,15 +78,14 @@ namespace bilayer
                   {
                     difference = w[s];
                     difference -= w_old[s];
-                    const double d =
-                      std::sqrt(subproblems[s]->energy_norm_squared(difference));
+                    const double d = std::sqrt(
+                      subproblems[s]->energy_norm_squared(difference));
                     const double n2 = subproblems[s]->energy_norm_squared(w[s]);
                     const double denominator =
                       parameters.stopping_rule == StoppingRule::paper ?
                         n2 :
                         std::sqrt(n2);
-                    value = std::max(value,
-                                     d == 0. ? 0. : d / denominator);
+                    value = std::max(value, d == 0. ? 0. : d / denominator);
                   }
               }
           }
@@ -95,9 +93,8 @@ namespace bilayer
 
         if (output.progress_interval > 0 && k > 0 &&
             k % output.progress_interval == 0)
-          pcout << "    iteration " << std::setw(6) << k
-                << "  stopping value " << std::scientific
-                << std::setprecision(3) << value
+          pcout << "    iteration " << std::setw(6) << k << "  stopping value "
+                << std::scientific << std::setprecision(3) << value
                 << "  multiplier change " << last_increment
                 << "  relative violation " << relative_violation
                 << std::defaultfloat << std::endl;

@@ -33,17 +33,16 @@ namespace bilayer
             msg << "Mesh/Cells along Sigma = " << mesh.cells_along_sigma
                 << " does not make the crack end point x = " << c
                 << " a mesh vertex: choose a number of cells for which the "
-                << "spacing " << width << "/n divides "
-                << c - geometry.x_min;
+                << "spacing " << width << "/n divides " << c - geometry.x_min;
             AssertThrow(false, ExcMessage(msg.str()));
           }
       }
 
     for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
       {
-        const double height =
-          s == Subdomain::minus ? geometry.sigma_height - geometry.y_min :
-                                  geometry.y_max - geometry.sigma_height;
+        const double       height = s == Subdomain::minus ?
+                                      geometry.sigma_height - geometry.y_min :
+                                      geometry.y_max - geometry.sigma_height;
         const unsigned int n_y =
           mesh.cells_across > 0 ?
             mesh.cells_across * factor :
@@ -75,9 +74,8 @@ namespace bilayer
                                                                p1,
                                                                p2);
 
-    const double tol =
-      1e-10 * std::max(geometry.x_max - geometry.x_min,
-                       geometry.y_max - geometry.y_min);
+    const double tol = 1e-10 * std::max(geometry.x_max - geometry.x_min,
+                                        geometry.y_max - geometry.y_min);
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
@@ -175,7 +173,8 @@ namespace bilayer
     const auto outer = [](const types::boundary_id id) {
       return id <= BoundaryIds::top;
     };
-    auto keys = boundary_vertices(triangulation(Subdomain::minus), scale, outer);
+    auto keys =
+      boundary_vertices(triangulation(Subdomain::minus), scale, outer);
     const auto plus =
       boundary_vertices(triangulation(Subdomain::plus), scale, outer);
     keys.insert(plus.begin(), plus.end());

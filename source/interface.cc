@@ -1,5 +1,4 @@
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <bilayer/geometry.h>
@@ -67,12 +66,17 @@ namespace bilayer
             (void)sigma_height;
             if (ends[0].first > ends[1].first)
               std::swap(ends[0], ends[1]);
-            result.push_back(
-              {ends[0].first, ends[1].first, cell, ends[0].second, ends[1].second});
+            result.push_back({ends[0].first,
+                              ends[1].first,
+                              cell,
+                              ends[0].second,
+                              ends[1].second});
           }
     std::sort(result.begin(),
               result.end(),
-              [](const SigmaFace &a, const SigmaFace &b) { return a.x0 < b.x0; });
+              [](const SigmaFace &a, const SigmaFace &b) {
+                return a.x0 < b.x0;
+              });
     return result;
   }
 
@@ -90,9 +94,8 @@ namespace bilayer
     const double tol    = 1e-10 * length;
 
     // The multiplier mesh: the trace of the Omega- mesh.
-    degree = subs[u_minus]->fe().degree;
-    fe_multiplier =
-      std::make_unique<FE_Q<1>>(QGaussLobatto<1>(degree + 1));
+    degree        = subs[u_minus]->fe().degree;
+    fe_multiplier = std::make_unique<FE_Q<1>>(QGaussLobatto<1>(degree + 1));
     breakpoints.clear();
     for (const auto &face : faces[0])
       breakpoints.push_back(face.x0);
@@ -109,11 +112,12 @@ namespace bilayer
         for (unsigned int i = 0; i <= degree; ++i)
           {
             const unsigned int a = multiplier_node(e, i);
-            node_x[a] =
-              breakpoints[e] + fe_multiplier->get_unit_support_points()[i][0] * h;
+            node_x[a]            = breakpoints[e] +
+                        fe_multiplier->get_unit_support_points()[i][0] * h;
             for (unsigned int q = 0; q < lobatto.size(); ++q)
-              node_weight[a] += fe_multiplier->shape_value(i, lobatto.point(q)) *
-                                lobatto.weight(q) * h;
+              node_weight[a] +=
+                fe_multiplier->shape_value(i, lobatto.point(q)) *
+                lobatto.weight(q) * h;
           }
       }
 
@@ -124,8 +128,8 @@ namespace bilayer
     upper.reinit(lower);
     for (unsigned int a = 0; a < n; ++a)
       {
-        const double x  = node_x[a];
-        on_crack[a]     = geometry.has_crack() && x > geometry.crack_start + tol &&
+        const double x = node_x[a];
+        on_crack[a] = geometry.has_crack() && x > geometry.crack_start + tol &&
                       x < geometry.crack_end - tol;
         const bool on_gamma_d =
           (std::abs(x - geometry.x_min) < tol &&
@@ -183,28 +187,23 @@ namespace bilayer
           for (unsigned int a = 0; a < n; ++a)
             points.emplace_back(a, node_x[a], node_weight[a]);
         else
-          gauss_points(merge_breakpoints(breakpoints,
-                                         face_breakpoints(s % 2),
-                                         tol),
-                       [&](const double x, const double w) {
-                         const unsigned int e =
-                           multiplier_shape_values(x, values);
-                         for (unsigned int i = 0; i <= degree; ++i)
-                           points.emplace_back(multiplier_node(e, i),
-                                               x,
-                                               w * values[i]);
-                       });
+          gauss_points(
+            merge_breakpoints(breakpoints, face_breakpoints(s % 2), tol),
+            [&](const double x, const double w) {
+              const unsigned int e = multiplier_shape_values(x, values);
+              for (unsigned int i = 0; i <= degree; ++i)
+                points.emplace_back(multiplier_node(e, i), x, w * values[i]);
+            });
         build_point_matrix(s, points, n, coupling[s]);
         build_point_matrix(s, nodal, n, evaluation[s]);
       }
 
     gauss_x.clear();
     gauss_weight.clear();
-    gauss_points(merge_breakpoints(merge_breakpoints(breakpoints,
-                                                     face_breakpoints(0),
-                                                     tol),
-                                   face_breakpoints(1),
-                                   tol),
+    gauss_points(merge_breakpoints(
+                   merge_breakpoints(breakpoints, face_breakpoints(0), tol),
+                   face_breakpoints(1),
+                   tol),
                  [&](const double x, const double w) {
                    gauss_x.push_back(x);
                    gauss_weight.push_back(w);
@@ -221,9 +220,8 @@ namespace bilayer
   Interface::multiplier_shape_values(const double         x,
                                      std::vector<double> &values) const
   {
-    const auto it = std::upper_bound(breakpoints.begin() + 1,
-                                     breakpoints.end() - 1,
-                                     x);
+    const auto it =
+      std::upper_bound(breakpoints.begin() + 1, breakpoints.end() - 1, x);
     const unsigned int e = (it - breakpoints.begin()) - 1;
     const double       t =
       (x - breakpoints[e]) / (breakpoints[e + 1] - breakpoints[e]);
@@ -342,8 +340,8 @@ namespace bilayer
   void
   Interface::jumps(const Solutions &w, BlockVector<double> &g) const
   {
-    const auto &op = contact.sampling == JumpSampling::weighted ? coupling :
-                                                                  evaluation;
+    const auto &op =
+      contact.sampling == JumpSampling::weighted ? coupling : evaluation;
     g.reinit(lower, true);
     std::array<Vector<double>, 4> traces;
     for (unsigned int s = 0; s < 4; ++s)
@@ -382,9 +380,9 @@ namespace bilayer
     double violation = 0;
     for (unsigned int i = 0; i < g.size(); ++i)
       if (lower(i) < upper(i))
-        violation = std::max(violation,
-                             lower(i) == 0. ? std::max(g(i), 0.) :
-                                              std::abs(g(i)));
+        violation =
+          std::max(violation,
+                   lower(i) == 0. ? std::max(g(i), 0.) : std::abs(g(i)));
     return violation;
   }
 
@@ -403,11 +401,23 @@ namespace bilayer
   }
 
 
-  InterfaceReport
-  Interface::assess(const Solutions           &w,
-                    const BlockVector<double> &mu) const
+  std::vector<double>
+  Interface::normal_opening(const Solutions &w) const
   {
-    InterfaceReport report;
+    Vector<double> tm(2 * n_nodes()), tp(2 * n_nodes());
+    evaluation[u_minus].matrix.vmult(tm, w[u_minus]);
+    evaluation[u_plus].matrix.vmult(tp, w[u_plus]);
+    std::vector<double> result(n_nodes());
+    for (unsigned int a = 0; a < n_nodes(); ++a)
+      result[a] = tp(2 * a + 1) - tm(2 * a + 1);
+    return result;
+  }
+
+
+  InterfaceReport
+  Interface::assess(const Solutions &w, const BlockVector<double> &mu) const
+  {
+    InterfaceReport     report;
     BlockVector<double> g;
     jumps(w, g);
     const double scale        = displacement_scale(w);
@@ -418,7 +428,7 @@ namespace bilayer
 
     // Contact multiplier: the normal component of block 0 at crack nodes.
     double sum_mu = 0, sum_mu_jump = 0;
-    bool   any    = false;
+    bool   any = false;
     for (unsigned int a = 0; a < n_nodes(); ++a)
       if (on_crack[a] && upper.block(0)(2 * a + 1) > 0)
         {
@@ -441,15 +451,15 @@ namespace bilayer
         t[s].reinit(2 * gauss_x.size());
         gauss_traces[s].matrix.vmult(t[s], w[s]);
       }
-    const double tol = 1e-10 * (geometry.x_max - geometry.x_min);
+    const double tol  = 1e-10 * (geometry.x_max - geometry.x_min);
     double       size = 0;
     for (unsigned int q = 0; q < gauss_x.size(); ++q)
       {
-        const double x   = gauss_x[q];
-        const bool crack = geometry.has_crack() &&
+        const double x     = gauss_x[q];
+        const bool   crack = geometry.has_crack() &&
                            x > geometry.crack_start + tol &&
                            x < geometry.crack_end - tol;
-        double       density = 0;
+        double density = 0;
         for (unsigned int c = 0; c < 2; ++c)
           {
             const double jump_1 = t[u_minus](2 * q + c) - t[u_plus](2 * q + c);
@@ -470,13 +480,10 @@ namespace bilayer
         report.constraint_violation += gauss_weight[q] * density;
       }
     // Penetration at the crack nodes as well (the Gauss points miss them).
-    Vector<double> tm(2 * n_nodes()), tp(2 * n_nodes());
-    evaluation[u_minus].matrix.vmult(tm, w[u_minus]);
-    evaluation[u_plus].matrix.vmult(tp, w[u_plus]);
+    const std::vector<double> open = normal_opening(w);
     for (unsigned int a = 0; a < n_nodes(); ++a)
       if (on_crack[a])
-        report.max_penetration =
-          std::max(report.max_penetration, tm(2 * a + 1) - tp(2 * a + 1));
+        report.max_penetration = std::max(report.max_penetration, -open[a]);
     report.relative_constraint_violation =
       size > 0 ? report.constraint_violation / size :
                  report.constraint_violation;

@@ -25,24 +25,6 @@ namespace
            "directory Output/Output directory.\n";
   }
 
-  /// The message of a deal.II exception on one line.
-  std::string
-  one_line(const dealii::ExceptionBase &e)
-  {
-    std::ostringstream info;
-    e.print_info(info);
-    std::string text = info.str();
-    for (char &c : text)
-      if (c == '\n')
-        c = ' ';
-    std::string collapsed;
-    for (const char c : text)
-      if (!(c == ' ' && (collapsed.empty() || collapsed.back() == ' ')))
-        collapsed += c;
-    while (!collapsed.empty() && collapsed.back() == ' ')
-      collapsed.pop_back();
-    return collapsed;
-  }
 } // namespace
 
 int
@@ -85,7 +67,8 @@ main(int argc, char **argv)
     }
   catch (const ExceptionBase &e)
     {
-      std::cerr << "bilayer: error: " << one_line(e) << std::endl;
+      std::cerr << "bilayer: error: " << bilayer::one_line_message(e)
+                << std::endl;
       return 1;
     }
   catch (const std::exception &e)

@@ -1,5 +1,4 @@
 #include <deal.II/base/data_out_base.h>
-
 #include <deal.II/numerics/data_out.h>
 
 #include <bilayer/output.h>
@@ -42,19 +41,18 @@ namespace bilayer
   {
     for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
       {
-        const auto  &grad = inputs.solution_gradients[q];
-        const double exx  = grad[0][0];
-        const double eyy  = grad[1][1];
-        const double exy  = 0.5 * (grad[0][1] + grad[1][0]);
-        const double sxx  = 2 * mu * exx + lambda * (exx + eyy);
-        const double syy  = 2 * mu * eyy + lambda * (exx + eyy);
-        const double szz  = lambda * (exx + eyy);
-        const double sxy  = 2 * mu * exy;
-        computed_quantities[q](0) =
-          std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) +
-                           (syy - szz) * (syy - szz) +
-                           (szz - sxx) * (szz - sxx)) +
-                    3 * sxy * sxy);
+        const auto  &grad         = inputs.solution_gradients[q];
+        const double exx          = grad[0][0];
+        const double eyy          = grad[1][1];
+        const double exy          = 0.5 * (grad[0][1] + grad[1][0]);
+        const double sxx          = 2 * mu * exx + lambda * (exx + eyy);
+        const double syy          = 2 * mu * eyy + lambda * (exx + eyy);
+        const double szz          = lambda * (exx + eyy);
+        const double sxy          = 2 * mu * exy;
+        computed_quantities[q](0) = std::sqrt(
+          0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) +
+                 (szz - sxx) * (szz - sxx)) +
+          3 * sxy * sxy);
         computed_quantities[q](1) = sxx;
         computed_quantities[q](2) = syy;
         computed_quantities[q](3) = szz;
@@ -100,7 +98,8 @@ namespace bilayer
         DataOut<2>              &data_out = data_outs[s];
         data_out.attach_dof_handler(sub.dof_handler());
         const std::vector<std::string> names(2, "displacement");
-        const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+        const std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>
           interpretation(
             2, DataComponentInterpretation::component_is_part_of_vector);
         data_out.add_data_vector(solutions[s],
@@ -124,14 +123,14 @@ namespace bilayer
                                  "subdomain",
                                  DataOut<2>::type_cell_data);
 
-        const bool simplex =
-          !sub.dof_handler().get_triangulation().all_reference_cells_are_hyper_cube();
+        const bool simplex = !sub.dof_handler()
+                                .get_triangulation()
+                                .all_reference_cells_are_hyper_cube();
         data_out.build_patches(sub.mapping(), simplex ? 1 : sub.fe().degree);
 
-        std::string piece = stem.str() + "-" + std::string(1, sub.name()[0]) +
-                            (sub.subdomain() == Subdomain::minus ? "-minus" :
-                                                                   "-plus") +
-                            ".vtu";
+        std::string piece =
+          stem.str() + "-" + std::string(1, sub.name()[0]) +
+          (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus") + ".vtu";
         write_atomically(directory + "/" + piece,
                          [&](std::ostream &out) { data_out.write_vtu(out); });
         pieces.push_back(piece);

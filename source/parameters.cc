@@ -1,11 +1,11 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/lac/vector.h>
 
 #include <bilayer/parameters.h>
 
 #include <filesystem>
+#include <iostream>
 #include <regex>
 #include <sstream>
 
@@ -23,6 +23,15 @@ namespace bilayer
       const auto parts = Utilities::split_string_list(text, ',');
       return {{Utilities::string_to_double(parts[0]),
                Utilities::string_to_double(parts[1])}};
+    }
+
+    /// A number as a user would write it.
+    std::string
+    number(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
     }
 
     std::string
@@ -46,18 +55,26 @@ namespace bilayer
     {
       const auto parts = Utilities::split_string_list(expression, ';');
       AssertThrow(parts.size() == 2,
-                  ExcMessage(entry + " must have two components separated "
-                                     "by ';' (x-component; y-component), got '" +
+                  ExcMessage(entry +
+                             " must have two components separated "
+                             "by ';' (x-component; y-component), got '" +
                              expression + "'"));
       auto function = std::make_unique<FunctionParser<2>>(2);
+      // muparser reports syntax errors on std::cerr before deal.II throws;
+      // keep them off the terminal, the message below names the entry.
+      std::ostringstream muparser_noise;
+      std::streambuf    *cerr_buffer = std::cerr.rdbuf(muparser_noise.rdbuf());
+      const auto         restore     = [&]() { std::cerr.rdbuf(cerr_buffer); };
       try
         {
           function->initialize("x,y", parts, constants);
           Vector<double> value(2);
           function->vector_value(Point<2>(0.123, 0.456), value);
+          restore();
         }
       catch (const ExceptionBase &)
         {
+          restore();
           AssertThrow(false,
                       ExcMessage(entry + ": cannot evaluate '" + expression +
                                  "' as a function of x and y (known constants: "
@@ -118,16 +135,18 @@ namespace bilayer
   GeometryParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    const auto lower = parse_pair(prm.get("Lower left corner"));
-    const auto upper = parse_pair(prm.get("Upper right corner"));
-    x_min            = lower[0];
-    y_min            = lower[1];
-    x_max            = upper[0];
-    y_max            = upper[1];
-    sigma_height     = prm.get_double("Height of Sigma");
-    const auto crack = parse_pair(prm.get("Crack interval on Sigma"));
-    crack_start      = crack[0];
-    crack_end        = crack[1];
+    const auto lower               = parse_pair(prm.get("Lower left corner"));
+    const auto upper               = parse_pair(prm.get("Upper right corner"));
+    x_min                          = lower[0];
+    y_min                          = lower[1];
+    x_max                          = upper[0];
+    y_max                          = upper[1];
+    sigma_height                   = prm.get_double("Height of Sigma");
+    const std::string crack_text   = prm.get("Crack interval on Sigma");
+    const std::string clamped_text = prm.get("Clamped sides");
+    const auto        crack        = parse_pair(crack_text);
+    crack_start                    = crack[0];
+    crack_end                      = crack[1];
     clamped.fill(false);
     for (const auto &name :
          Utilities::split_string_list(prm.get("Clamped sides")))
@@ -136,29 +155,24 @@ namespace bilayer
           clamped[static_cast<unsigned int>(side)] = true;
     prm.leave_subsection();
 
-    std::ostringstream range;
     AssertThrow(x_min < x_max && y_min < y_max,
                 ExcMessage("Geometry/Upper right corner must lie above and to "
                            "the right of Geometry/Lower left corner"));
-    range << "(" << y_min << ", " << y_max << ")";
     AssertThrow(y_min < sigma_height && sigma_height < y_max,
-                ExcMessage("Geometry/Height of Sigma must lie in " +
-                           range.str() + ", got " +
-                           std::to_string(sigma_height)));
-    range.str("");
-    range << "(" << x_min << ", " << x_max << ")";
+                ExcMessage("Geometry/Height of Sigma must lie in (" +
+                           number(y_min) + ", " + number(y_max) + "), got " +
+                           number(sigma_height)));
     AssertThrow(x_min < crack_start && crack_start <= crack_end &&
                   crack_end < x_max,
                 ExcMessage("Geometry/Crack interval on Sigma must satisfy " +
-                           std::to_string(x_min) + " < x_start <= x_end < " +
-                           std::to_string(x_max) + ", got " +
-                           prm.get("Geometry.Crack interval on Sigma")));
+                           number(x_min) + " < x_start <= x_end < " +
+                           number(x_max) + ", got '" + crack_text + "'"));
     const bool sides = clamped[0] || clamped[1];
     AssertThrow(sides || (clamped[2] && clamped[3]),
                 ExcMessage("Geometry/Clamped sides must clamp a part of the "
                            "boundary of both Omega- and Omega+ (left or right, "
                            "or both bottom and top), got '" +
-                           prm.get("Geometry.Clamped sides") + "'"));
+                           clamped_text + "'"));
   }
 
 
@@ -203,9 +217,9 @@ namespace bilayer
   MeshParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    shape = prm.get("Element shape") == "triangles" ?
-              ElementShape::triangle :
-              ElementShape::quadrilateral;
+    shape             = prm.get("Element shape") == "triangles" ?
+                          ElementShape::triangle :
+                          ElementShape::quadrilateral;
     cells_along_sigma = prm.get_integer("Cells along Sigma");
     cells_across      = prm.get_integer("Cells across each subdomain");
     degree_first      = prm.get_integer("Polynomial degree of layer 1");
@@ -254,10 +268,10 @@ namespace bilayer
         AssertThrow(layer[l].youngs_modulus > 0,
                     ExcMessage(where + "Young's modulus must be > 0, got " +
                                prm.get("Young's modulus")));
-        AssertThrow(layer[l].poisson_ratio > -1 &&
-                      layer[l].poisson_ratio < 0.5,
-                    ExcMessage(where + "Poisson's ratio must lie in "
-                                       "(-1, 0.5), got " +
+        AssertThrow(layer[l].poisson_ratio > -1 && layer[l].poisson_ratio < 0.5,
+                    ExcMessage(where +
+                               "Poisson's ratio must lie in "
+                               "(-1, 0.5), got " +
                                prm.get("Poisson's ratio")));
         prm.leave_subsection();
       }
@@ -314,8 +328,8 @@ namespace bilayer
     constant_values.clear();
     for (unsigned int l = 0; l < 2; ++l)
       {
-        const std::string n = std::to_string(l + 1);
-        const auto       &m = materials.layer[l];
+        const std::string n           = std::to_string(l + 1);
+        const auto       &m           = materials.layer[l];
         constant_values["E" + n]      = m.youngs_modulus;
         constant_values["nu" + n]     = m.poisson_ratio;
         constant_values["mu" + n]     = m.mu();
@@ -332,14 +346,18 @@ namespace bilayer
                     ExcMessage("Loads/Constants must read 'name = expression; "
                                "...', cannot read '" +
                                item + "'"));
-        FunctionParser<1> parser(1);
+        FunctionParser<1>  parser(1);
+        std::ostringstream muparser_noise;
+        std::streambuf *cerr_buffer = std::cerr.rdbuf(muparser_noise.rdbuf());
         try
           {
             parser.initialize("t", match[2].str(), constant_values);
             constant_values[match[1].str()] = parser.value(Point<1>());
+            std::cerr.rdbuf(cerr_buffer);
           }
         catch (const ExceptionBase &)
           {
+            std::cerr.rdbuf(cerr_buffer);
             AssertThrow(false,
                         ExcMessage("Loads/Constants: cannot evaluate '" +
                                    match[2].str() + "' for constant '" +
@@ -393,10 +411,10 @@ namespace bilayer
   bool
   LoadParameters::traction_is_zero(const Layer layer, const Side side) const
   {
-    const auto parts = Utilities::split_string_list(
-      traction[static_cast<unsigned int>(layer)]
-              [static_cast<unsigned int>(side)],
-      ';');
+    const auto parts =
+      Utilities::split_string_list(traction[static_cast<unsigned int>(layer)]
+                                           [static_cast<unsigned int>(side)],
+                                   ';');
     for (const auto &p : parts)
       if (p != "0" && p != "0.0" && p != "0.")
         return false;
@@ -514,12 +532,12 @@ namespace bilayer
     AssertThrow(theta > 0,
                 ExcMessage("Solver/Uzawa step theta must be > 0, got " +
                            prm.get("Uzawa step theta")));
-    max_iterations      = prm.get_integer("Maximum iterations");
-    const auto rule     = prm.get("Stopping rule");
-    stopping_rule       = rule == "paper"           ? StoppingRule::paper :
-                          rule == "paper with norm" ? StoppingRule::paper_norm :
-                                                      StoppingRule::relative;
-    tolerance           = prm.get_double("Tolerance");
+    max_iterations  = prm.get_integer("Maximum iterations");
+    const auto rule = prm.get("Stopping rule");
+    stopping_rule   = rule == "paper"           ? StoppingRule::paper :
+                      rule == "paper with norm" ? StoppingRule::paper_norm :
+                                                  StoppingRule::relative;
+    tolerance       = prm.get_double("Tolerance");
     AssertThrow(tolerance > 0,
                 ExcMessage("Solver/Tolerance must be > 0, got " +
                            prm.get("Tolerance")));
@@ -577,9 +595,8 @@ namespace bilayer
     write_vtu         = prm.get_bool("Write VTU");
     write_interface   = prm.get_bool("Write interface CSV");
     progress_interval = prm.get_integer("Progress interval");
-    terminal          = prm.get("Terminal output") == "checks" ?
-                          TerminalOutput::checks :
-                          TerminalOutput::full;
+    terminal = prm.get("Terminal output") == "checks" ? TerminalOutput::checks :
+                                                        TerminalOutput::full;
     prm.leave_subsection();
   }
 
@@ -609,6 +626,13 @@ namespace bilayer
     output.parse_parameters(prm);
 
     for (const Layer layer : {Layer::first, Layer::second})
+      AssertThrow(mesh.shape == ElementShape::quadrilateral ||
+                    mesh.degree(layer) <= 2,
+                  ExcMessage("Mesh/Polynomial degree of layer " +
+                             std::to_string(static_cast<int>(layer) + 1) +
+                             " must be 1 or 2 on triangles, got " +
+                             std::to_string(mesh.degree(layer))));
+    for (const Layer layer : {Layer::first, Layer::second})
       for (const Side side : all_sides)
         AssertThrow(!geometry.clamped[static_cast<unsigned int>(side)] ||
                       loads.traction_is_zero(layer, side),
@@ -626,10 +650,42 @@ namespace bilayer
     Scene::declare_parameters(prm);
     AssertThrow(std::filesystem::exists(filename),
                 ExcMessage("cannot open parameter file '" + filename + "'"));
-    prm.parse_input(filename, "", true, true);
+    prm.parse_input(filename, "", false, true);
     Scene scene;
     scene.parse_parameters(prm);
     scene.name = std::filesystem::path(filename).stem().string();
     return scene;
+  }
+
+
+  Scene
+  scene_from_string(const std::string &text, const std::string &name)
+  {
+    ParameterHandler prm;
+    Scene::declare_parameters(prm);
+    prm.parse_input_from_string(text);
+    Scene scene;
+    scene.parse_parameters(prm);
+    scene.name = name;
+    return scene;
+  }
+
+
+  std::string
+  one_line_message(const ExceptionBase &exception)
+  {
+    std::ostringstream info;
+    exception.print_info(info);
+    std::string collapsed;
+    for (char c : info.str())
+      {
+        if (c == '\n' || c == '\t')
+          c = ' ';
+        if (!(c == ' ' && (collapsed.empty() || collapsed.back() == ' ')))
+          collapsed += c;
+      }
+    while (!collapsed.empty() && collapsed.back() == ' ')
+      collapsed.pop_back();
+    return collapsed;
   }
 } // namespace bilayer

@@ -140,11 +140,10 @@ namespace bilayer
           << (scene.mesh.shape == ElementShape::quadrilateral ?
                 "quadrilaterals" :
                 "triangles")
-          << ", P = " << record.P << ", M = " << record.M << ", "
-          << record.dofs << " dofs, " << record.multipliers
-          << " multipliers" << std::endl;
+          << ", P = " << record.P << ", M = " << record.M << ", " << record.dofs
+          << " dofs, " << record.multipliers << " multipliers" << std::endl;
 
-    Timer solve_timer;
+    Timer             solve_timer;
     const UzawaSolver solver(scene.solver, scene.output, pcout);
     record.result        = solver.solve(solvers, coupling, mu, w);
     record.solve_seconds = solve_timer.wall_time();
@@ -213,8 +212,8 @@ namespace bilayer
           << "  (relative " << r.relative_constraint_violation << ")\n"
           << "  largest interpenetration     " << r.max_penetration
           << "  (displacement scale " << r.displacement_scale << ")\n"
-          << "  discrete violation           "
-          << r.relative_discrete_violation << " (relative)\n"
+          << "  discrete violation           " << r.relative_discrete_violation
+          << " (relative)\n"
           << "  smallest mu_c                " << r.min_contact_multiplier
           << "\n"
           << "  complementarity              " << r.complementarity << "\n"
@@ -247,7 +246,8 @@ namespace bilayer
     table.add_value("Cells+", r.plus.cells);
     table.add_value("dofs", r.dofs);
     table.add_value("iter", r.result.iterations);
-    table.add_value("solves", static_cast<unsigned int>(r.result.subdomain_solves));
+    table.add_value("solves",
+                    static_cast<unsigned int>(r.result.subdomain_solves));
     table.add_value("energy", r.energy);
     table.add_value("violation", r.report.constraint_violation);
     table.add_value("time [s]", r.total_seconds);
@@ -264,52 +264,53 @@ namespace bilayer
   void
   Study::write_summary() const
   {
-    write_atomically(scene.output.directory + "/summary.json", [&](std::ostream &o) {
-      o << "{\n  \"scene\": " << json(scene.name) << ",\n  \"cycles\": [";
-      for (unsigned int i = 0; i < cycle_records.size(); ++i)
-        {
-          const auto &r = cycle_records[i];
-          const auto &k = r.report;
-          o << (i ? "," : "") << "\n    {"
-            << "\"cycle\": " << r.cycle
-            << ", \"vertices_minus\": " << r.minus.vertices
-            << ", \"cells_minus\": " << r.minus.cells
-            << ", \"vertices_plus\": " << r.plus.vertices
-            << ", \"cells_plus\": " << r.plus.cells << ", \"P\": " << r.P
-            << ", \"M\": " << r.M
-            << ", \"h_min_minus\": " << json(r.minus.h_min)
-            << ", \"h_max_minus\": " << json(r.minus.h_max)
-            << ", \"h_min_plus\": " << json(r.plus.h_min)
-            << ", \"h_max_plus\": " << json(r.plus.h_max)
-            << ", \"dofs\": " << r.dofs
-            << ", \"multipliers\": " << r.multipliers
-            << ", \"solver\": " << json(r.result.solver)
-            << ", \"theta\": " << json(r.theta)
-            << ", \"iterations\": " << r.result.iterations
-            << ", \"subdomain_solves\": " << r.result.subdomain_solves
-            << ", \"converged\": " << (r.result.converged ? "true" : "false")
-            << ", \"diverged\": " << (r.result.diverged ? "true" : "false")
-            << ", \"stopping_value\": " << json(r.result.stopping_value)
-            << ", \"message\": " << json(r.result.message)
-            << ", \"energy\": " << json(r.energy)
-            << ", \"constraint_violation\": " << json(k.constraint_violation)
-            << ", \"relative_constraint_violation\": "
-            << json(k.relative_constraint_violation)
-            << ", \"max_penetration\": " << json(k.max_penetration)
-            << ", \"displacement_scale\": " << json(k.displacement_scale)
-            << ", \"relative_discrete_violation\": "
-            << json(k.relative_discrete_violation)
-            << ", \"min_contact_multiplier\": "
-            << json(k.min_contact_multiplier)
-            << ", \"complementarity\": " << json(k.complementarity)
-            << ", \"max_multiplier_over_bound\": "
-            << json(k.max_multiplier_over_bound)
-            << ", \"accepted\": " << (r.accepted() ? "true" : "false")
-            << ", \"wall_seconds\": {\"setup\": " << json(r.setup_seconds)
-            << ", \"solve\": " << json(r.solve_seconds)
-            << ", \"total\": " << json(r.total_seconds) << "}}";
-        }
-      o << "\n  ]\n}\n";
-    });
+    write_atomically(
+      scene.output.directory + "/summary.json", [&](std::ostream &o) {
+        o << "{\n  \"scene\": " << json(scene.name) << ",\n  \"cycles\": [";
+        for (unsigned int i = 0; i < cycle_records.size(); ++i)
+          {
+            const auto &r = cycle_records[i];
+            const auto &k = r.report;
+            o << (i ? "," : "") << "\n    {"
+              << "\"cycle\": " << r.cycle
+              << ", \"vertices_minus\": " << r.minus.vertices
+              << ", \"cells_minus\": " << r.minus.cells
+              << ", \"vertices_plus\": " << r.plus.vertices
+              << ", \"cells_plus\": " << r.plus.cells << ", \"P\": " << r.P
+              << ", \"M\": " << r.M
+              << ", \"h_min_minus\": " << json(r.minus.h_min)
+              << ", \"h_max_minus\": " << json(r.minus.h_max)
+              << ", \"h_min_plus\": " << json(r.plus.h_min)
+              << ", \"h_max_plus\": " << json(r.plus.h_max)
+              << ", \"dofs\": " << r.dofs
+              << ", \"multipliers\": " << r.multipliers
+              << ", \"solver\": " << json(r.result.solver)
+              << ", \"theta\": " << json(r.theta)
+              << ", \"iterations\": " << r.result.iterations
+              << ", \"subdomain_solves\": " << r.result.subdomain_solves
+              << ", \"converged\": " << (r.result.converged ? "true" : "false")
+              << ", \"diverged\": " << (r.result.diverged ? "true" : "false")
+              << ", \"stopping_value\": " << json(r.result.stopping_value)
+              << ", \"message\": " << json(r.result.message)
+              << ", \"energy\": " << json(r.energy)
+              << ", \"constraint_violation\": " << json(k.constraint_violation)
+              << ", \"relative_constraint_violation\": "
+              << json(k.relative_constraint_violation)
+              << ", \"max_penetration\": " << json(k.max_penetration)
+              << ", \"displacement_scale\": " << json(k.displacement_scale)
+              << ", \"relative_discrete_violation\": "
+              << json(k.relative_discrete_violation)
+              << ", \"min_contact_multiplier\": "
+              << json(k.min_contact_multiplier)
+              << ", \"complementarity\": " << json(k.complementarity)
+              << ", \"max_multiplier_over_bound\": "
+              << json(k.max_multiplier_over_bound)
+              << ", \"accepted\": " << (r.accepted() ? "true" : "false")
+              << ", \"wall_seconds\": {\"setup\": " << json(r.setup_seconds)
+              << ", \"solve\": " << json(r.solve_seconds)
+              << ", \"total\": " << json(r.total_seconds) << "}}";
+          }
+        o << "\n  ]\n}\n";
+      });
   }
 } // namespace bilayer

@@ -1,14 +1,10 @@
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <bilayer/geometry.h>
@@ -64,11 +60,8 @@ namespace bilayer
     for (unsigned int side = 0; side < 4; ++side)
       if (clamped[side])
         {
-          VectorTools::interpolate_boundary_values(mapping(),
-                                                   dofs,
-                                                   side,
-                                                   prescribed,
-                                                   constraints);
+          VectorTools::interpolate_boundary_values(
+            mapping(), dofs, side, prescribed, constraints);
           VectorTools::interpolate_boundary_values(
             mapping(), dofs, side, zero, homogeneous_constraints);
         }
@@ -98,9 +91,9 @@ namespace bilayer
     const std::array<bool, 4>                &clamped,
     const std::array<const Function<2> *, 4> &traction)
   {
-    const unsigned int     degree = fe_system->degree;
-    const ReferenceCell    cell_type = fe_system->reference_cell();
-    const Quadrature<2>    quadrature =
+    const unsigned int  degree    = fe_system->degree;
+    const ReferenceCell cell_type = fe_system->reference_cell();
+    const Quadrature<2> quadrature =
       cell_type.get_gauss_type_quadrature<2>(degree + 1);
     const Quadrature<1> face_quadrature =
       ReferenceCells::Line.get_gauss_type_quadrature<1>(degree + 1);
@@ -142,10 +135,9 @@ namespace bilayer
             const double JxW = fe_values.JxW(q);
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               for (unsigned int j = i; j < dofs_per_cell; ++j)
-                cell_matrix(i, j) +=
-                  (2 * mu * scalar_product(eps[i], eps[j]) +
-                   lambda * div[i] * div[j]) *
-                  JxW;
+                cell_matrix(i, j) += (2 * mu * scalar_product(eps[i], eps[j]) +
+                                      lambda * div[i] * div[j]) *
+                                     JxW;
           }
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j < i; ++j)

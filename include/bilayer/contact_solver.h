@@ -2,7 +2,6 @@
 #define bilayer_contact_solver_h
 
 #include <deal.II/base/conditional_ostream.h>
-
 #include <deal.II/lac/block_vector.h>
 
 #include <bilayer/interface.h>
@@ -62,8 +61,8 @@ namespace bilayer
   class UzawaSolver
   {
   public:
-    UzawaSolver(const SolverParameters &parameters,
-                const OutputParameters &output,
+    UzawaSolver(const SolverParameters   &parameters,
+                const OutputParameters   &output,
                 const ConditionalOStream &pcout);
 
     /// Run from the multipliers given in @p multipliers (sized by

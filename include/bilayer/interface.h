@@ -2,7 +2,6 @@
 #define bilayer_interface_h
 
 #include <deal.II/fe/fe_q.h>
-
 #include <deal.II/lac/block_vector.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -143,6 +142,10 @@ namespace bilayer
     double
     displacement_scale(const Solutions &w) const;
 
+    /// The normal opening [u].nu = (u+ - u-).nu of layer 1 at every node.
+    std::vector<double>
+    normal_opening(const Solutions &w) const;
+
     InterfaceReport
     assess(const Solutions &w, const BlockVector<double> &multipliers) const;
 
@@ -179,7 +182,7 @@ namespace bilayer
     /// A face of one subdomain mesh on Sigma.
     struct SigmaFace
     {
-      double                                x0, x1;
+      double                                 x0, x1;
       Triangulation<2>::active_cell_iterator cell;
       /// Unit-cell coordinates of the face ends at x0 and x1.
       Point<2> unit0, unit1;
@@ -203,10 +206,10 @@ namespace bilayer
      */
     void
     build_point_matrix(
-      const unsigned int                                    s,
+      const unsigned int                                           s,
       const std::vector<std::tuple<unsigned int, double, double>> &points,
-      const unsigned int                                    n_rows,
-      PointMatrix                                          &result) const;
+      const unsigned int                                           n_rows,
+      PointMatrix &result) const;
 
     /// Multiplier segment containing x and the shape values there.
     unsigned int
@@ -216,7 +219,9 @@ namespace bilayer
     unsigned int
     multiplier_node(const unsigned int e, const unsigned int i) const
     {
-      return i == 0 ? e * degree : i == 1 ? (e + 1) * degree : e * degree + i - 1;
+      return i == 0 ? e * degree :
+             i == 1 ? (e + 1) * degree :
+                      e * degree + i - 1;
     }
 
     /// g = a - b, scaled by D^{-1} for the weighted sampling, masked.

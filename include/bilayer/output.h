@@ -60,11 +60,11 @@ namespace bilayer
    * so far (@p records is appended to).
    */
   void
-  write_vtu(const std::string                                  &directory,
-            const unsigned int                                  cycle,
-            const std::array<const ElasticSubproblem *, 4>     &subproblems,
-            const Solutions                                    &solutions,
-            std::vector<std::pair<double, std::string>>        &records);
+  write_vtu(const std::string                              &directory,
+            const unsigned int                              cycle,
+            const std::array<const ElasticSubproblem *, 4> &subproblems,
+            const Solutions                                &solutions,
+            std::vector<std::pair<double, std::string>>    &records);
 } // namespace bilayer
 
 #endif

@@ -133,7 +133,7 @@ namespace bilayer
     ElementShape shape             = ElementShape::quadrilateral;
     unsigned int cells_along_sigma = 16;
     /// Cells across each subdomain; 0 chooses square-ish cells.
-    unsigned int cells_across = 0;
+    unsigned int cells_across  = 0;
     unsigned int degree_first  = 1;
     unsigned int degree_second = 1;
     unsigned int n_cycles      = 1;
@@ -199,7 +199,8 @@ namespace bilayer
     static void
     declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm, const MaterialParameters &materials);
+    parse_parameters(ParameterHandler         &prm,
+                     const MaterialParameters &materials);
 
     std::unique_ptr<FunctionParser<2>>
     traction_function(const Layer layer, const Side side) const;
@@ -212,7 +213,7 @@ namespace bilayer
 
   struct ContactParameters
   {
-    bool               non_penetration = true;
+    bool               non_penetration  = true;
     double             multiplier_bound = 1e7;
     MultiplierCoupling coupling         = MultiplierCoupling::lumped;
     JumpSampling       sampling         = JumpSampling::weighted;
@@ -243,11 +244,11 @@ namespace bilayer
 
   struct OutputParameters
   {
-    std::string    directory          = "results";
-    bool           write_vtu          = true;
-    bool           write_interface    = true;
-    unsigned int   progress_interval  = 100;
-    TerminalOutput terminal           = TerminalOutput::full;
+    std::string    directory         = "results";
+    bool           write_vtu         = true;
+    bool           write_interface   = true;
+    unsigned int   progress_interval = 100;
+    TerminalOutput terminal          = TerminalOutput::full;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -282,6 +283,15 @@ namespace bilayer
    */
   Scene
   read_scene(ParameterHandler &prm, const std::string &filename);
+
+  /// Parse a Scene from parameter-file text (entries not given keep their
+  /// defaults).
+  Scene
+  scene_from_string(const std::string &text, const std::string &name);
+
+  /// The message of a deal.II exception (a user error) on one line.
+  std::string
+  one_line_message(const ExceptionBase &exception);
 } // namespace bilayer
 
 #endif

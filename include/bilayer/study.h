@@ -3,7 +3,6 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/convergence_table.h>
-
 #include <deal.II/lac/block_vector.h>
 
 #include <bilayer/contact_solver.h>

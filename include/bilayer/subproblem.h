@@ -2,12 +2,9 @@
 #define bilayer_subproblem_h
 
 #include <deal.II/base/function.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -56,9 +53,9 @@ namespace bilayer
      * that are not clamped; @p prescribed on the clamped ones.
      */
     void
-    setup(const std::array<bool, 4>                     &clamped,
-          const Function<2>                             &prescribed,
-          const std::array<const Function<2> *, 4>      &traction);
+    setup(const std::array<bool, 4>                &clamped,
+          const Function<2>                        &prescribed,
+          const std::array<const Function<2> *, 4> &traction);
 
     /// Solve with the extra load vector @p coupling (may be empty = zero).
     void
@@ -123,20 +120,20 @@ namespace bilayer
     assemble(const std::array<bool, 4>                &clamped,
              const std::array<const Function<2> *, 4> &traction);
 
-    const Layer                       layer_;
-    const Subdomain                   subdomain_;
-    const LayerMaterial               material_;
-    std::unique_ptr<FESystem<2>>      fe_system;
-    DoFHandler<2>                     dofs;
-    AffineConstraints<double>         constraints;
-    AffineConstraints<double>         homogeneous_constraints;
-    SparsityPattern                   sparsity;
-    SparseMatrix<double>              system_matrix;
-    SparseMatrix<double>              stiffness;
-    Vector<double>                    system_rhs;
-    Vector<double>                    traction_load;
-    SparseDirectUMFPACK               factorisation;
-    mutable unsigned long             solve_count = 0;
+    const Layer                  layer_;
+    const Subdomain              subdomain_;
+    const LayerMaterial          material_;
+    std::unique_ptr<FESystem<2>> fe_system;
+    DoFHandler<2>                dofs;
+    AffineConstraints<double>    constraints;
+    AffineConstraints<double>    homogeneous_constraints;
+    SparsityPattern              sparsity;
+    SparseMatrix<double>         system_matrix;
+    SparseMatrix<double>         stiffness;
+    Vector<double>               system_rhs;
+    Vector<double>               traction_load;
+    SparseDirectUMFPACK          factorisation;
+    mutable unsigned long        solve_count = 0;
   };
 } // namespace bilayer
 
