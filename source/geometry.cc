@@ -1,8 +1,11 @@
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
 
 #include <bilayer/geometry.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -18,39 +21,128 @@ namespace bilayer
   void
   Geometry::create_meshes(const unsigned int cycle)
   {
-    const unsigned int factor = 1u << cycle;
-    const double       width  = geometry.x_max - geometry.x_min;
-    const unsigned int n_x    = mesh.cells_along_sigma * factor;
-
-    // The crack end points must be vertices of the uniform grid along Sigma.
-    const double dx = width / n_x;
-    for (const double c : {geometry.crack_start, geometry.crack_end})
+    if (!mesh.mesh_files.empty())
       {
-        const double j = (c - geometry.x_min) / dx;
-        if (std::abs(j - std::round(j)) > 1e-8 * std::max(1.0, j))
+        const unsigned int n     = mesh.mesh_files.size();
+        const unsigned int entry = std::min(cycle, n - 1);
+        for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
           {
-            std::ostringstream msg;
-            msg << "Mesh/Cells along Sigma = " << mesh.cells_along_sigma
-                << " does not make the crack end point x = " << c
-                << " a mesh vertex: choose a number of cells for which the "
-                << "spacing " << width << "/n divides " << c - geometry.x_min;
-            AssertThrow(false, ExcMessage(msg.str()));
+            auto &tria = triangulations[static_cast<unsigned int>(s)];
+            tria.clear();
+            read_subdomain(s, mesh.mesh_files[entry], tria);
+            if (cycle > entry)
+              tria.refine_global(cycle - entry);
+          }
+      }
+    else
+      {
+        const unsigned int factor = 1u << cycle;
+        const double       width  = geometry.x_max - geometry.x_min;
+        const unsigned int n_x    = mesh.cells_along_sigma * factor;
+        for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+          {
+            const double       height = s == Subdomain::minus ?
+                                          geometry.sigma_height - geometry.y_min :
+                                          geometry.y_max - geometry.sigma_height;
+            const unsigned int n_y =
+              mesh.cells_across > 0 ?
+                mesh.cells_across * factor :
+                std::max<unsigned int>(1, std::lround(n_x * height / width));
+            auto &tria = triangulations[static_cast<unsigned int>(s)];
+            tria.clear();
+            make_subdomain(s, n_x, n_y, tria);
           }
       }
 
+    // The crack end points must be mesh vertices: no face on Sigma may
+    // straddle one.
     for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+      for (const auto &cell : triangulation(s).active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              (face->boundary_id() == BoundaryIds::glued ||
+               face->boundary_id() == BoundaryIds::crack))
+            for (const double c : {geometry.crack_start, geometry.crack_end})
+              {
+                const double x0 =
+                  std::min(face->vertex(0)[0], face->vertex(1)[0]);
+                const double x1 =
+                  std::max(face->vertex(0)[0], face->vertex(1)[0]);
+                const double tol = 1e-8 * (x1 - x0);
+                if (geometry.has_crack() && x0 + tol < c && c < x1 - tol)
+                  {
+                    std::ostringstream msg;
+                    if (mesh.mesh_files.empty())
+                      msg
+                        << "Mesh/Cells along Sigma = " << mesh.cells_along_sigma
+                        << " does not make the crack end point x = " << c
+                        << " a mesh vertex: choose a number of cells for which "
+                        << "the spacing " << geometry.x_max - geometry.x_min
+                        << "/n divides " << c - geometry.x_min;
+                    else
+                      msg << "Mesh/Mesh files: the crack end point x = " << c
+                          << " is not a vertex of the mesh of Omega"
+                          << (s == Subdomain::minus ? "-" : "+");
+                    AssertThrow(false, ExcMessage(msg.str()));
+                  }
+              }
+  }
+
+
+  void
+  Geometry::read_subdomain(const Subdomain    subdomain,
+                           const std::string &pattern,
+                           Triangulation<2>  &tria) const
+  {
+    std::string file = pattern;
+    const auto  at   = file.find("{side}");
+    AssertThrow(at != std::string::npos,
+                ExcMessage("Mesh/Mesh files: '" + pattern +
+                           "' must contain {side} (minus or plus)"));
+    file.replace(at, 6, subdomain == Subdomain::minus ? "minus" : "plus");
+    std::ifstream in(file);
+    AssertThrow(in, ExcMessage("Mesh/Mesh files: cannot open '" + file + "'"));
+    GridIn<2> grid_in;
+    grid_in.attach_triangulation(tria);
+    try
       {
-        const double       height = s == Subdomain::minus ?
-                                      geometry.sigma_height - geometry.y_min :
-                                      geometry.y_max - geometry.sigma_height;
-        const unsigned int n_y =
-          mesh.cells_across > 0 ?
-            mesh.cells_across * factor :
-            std::max<unsigned int>(1, std::lround(n_x * height / width));
-        auto &tria = triangulations[static_cast<unsigned int>(s)];
-        tria.clear();
-        make_subdomain(s, n_x, n_y, tria);
+        grid_in.read_msh(in);
       }
+    catch (const ExceptionBase &e)
+      {
+        AssertThrow(false,
+                    ExcMessage("Mesh/Mesh files: cannot read '" + file +
+                               "' as a Gmsh mesh: " + one_line_message(e)));
+      }
+
+    // The mesh must fill its subdomain.
+    const double y0 =
+      subdomain == Subdomain::minus ? geometry.y_min : geometry.sigma_height;
+    const double y1 =
+      subdomain == Subdomain::minus ? geometry.sigma_height : geometry.y_max;
+    double area = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      area += cell->measure();
+    const double expected = (geometry.x_max - geometry.x_min) * (y1 - y0);
+    Point<2>     lower(std::numeric_limits<double>::max(),
+                   std::numeric_limits<double>::max());
+    Point<2>     upper = -lower;
+    for (const auto &v : tria.get_vertices())
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          lower[d] = std::min(lower[d], v[d]);
+          upper[d] = std::max(upper[d], v[d]);
+        }
+    const double       tol = 1e-8 * expected;
+    std::ostringstream region;
+    region << "(" << geometry.x_min << ", " << geometry.x_max << ") x (" << y0
+           << ", " << y1 << ")";
+    AssertThrow(std::abs(area - expected) < tol &&
+                  lower.distance(Point<2>(geometry.x_min, y0)) < 1e-8 &&
+                  upper.distance(Point<2>(geometry.x_max, y1)) < 1e-8,
+                ExcMessage("Mesh/Mesh files: '" + file + "' does not fill " +
+                           region.str() + " (Geometry)"));
+    assign_boundary_ids(tria);
   }
 
 
@@ -73,7 +165,13 @@ namespace bilayer
                                                                {n_x, n_y},
                                                                p1,
                                                                p2);
+    assign_boundary_ids(tria);
+  }
 
+
+  void
+  Geometry::assign_boundary_ids(Triangulation<2> &tria) const
+  {
     const double tol = 1e-10 * std::max(geometry.x_max - geometry.x_min,
                                         geometry.y_max - geometry.y_min);
     for (const auto &cell : tria.active_cell_iterators())

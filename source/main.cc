@@ -9,16 +9,20 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
   void
   print_usage(std::ostream &out)
   {
-    out << "Usage: bilayer PARAMETER_FILE.prm\n"
+    out << "Usage: bilayer PARAMETER_FILE.prm [--set Section/Entry=value ...]\n"
            "       bilayer --print-parameters   print every entry with its "
            "default and documentation\n"
            "       bilayer --help               print this message\n\n"
+           "--set overrides an entry of the file, e.g.\n"
+           "  --set \"Solver/Uzawa step theta=70\" --set "
+           "\"Materials/Layer 1/Young's modulus=210\"\n\n"
            "Computes the equilibrium of a two-layer elastic structure with a "
            "through\ncrack whose faces must not penetrate each other "
            "(domain decomposition\nand Uzawa iteration). Results go to the "
@@ -35,11 +39,22 @@ main(int argc, char **argv)
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
   try
     {
-      if (argc != 2 || std::string(argv[1]) == "--help" ||
-          std::string(argv[1]) == "-h")
+      const bool help = argc >= 2 && (std::string(argv[1]) == "--help" ||
+                                      std::string(argv[1]) == "-h");
+      if (argc < 2 || help || argc % 2 != 0)
         {
-          print_usage(argc == 2 ? std::cout : std::cerr);
-          return argc == 2 ? 0 : 1;
+          print_usage(help ? std::cout : std::cerr);
+          return help ? 0 : 1;
+        }
+      std::vector<std::string> overrides;
+      for (int i = 2; i + 1 < argc; i += 2)
+        {
+          if (std::string(argv[i]) != "--set")
+            {
+              print_usage(std::cerr);
+              return 1;
+            }
+          overrides.emplace_back(argv[i + 1]);
         }
       ParameterHandler prm;
       if (std::string(argv[1]) == "--print-parameters")
@@ -49,7 +64,7 @@ main(int argc, char **argv)
           return 0;
         }
 
-      const bilayer::Scene scene = bilayer::read_scene(prm, argv[1]);
+      const bilayer::Scene scene = bilayer::read_scene(prm, argv[1], overrides);
       std::filesystem::create_directories(scene.output.directory);
       prm.print_parameters(scene.output.directory + "/used_parameters.prm",
                            ParameterHandler::ShortPRM);

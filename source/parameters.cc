@@ -204,6 +204,18 @@ namespace bilayer
                       "1",
                       Patterns::Integer(1, 4),
                       "Degree of the Lagrange elements of layer 2 (v) [-].");
+    prm.declare_entry(
+      "Mesh files",
+      "",
+      Patterns::List(Patterns::Anything(), 0),
+      "Gmsh (.msh, format 2) meshes of Omega- and Omega+, one "
+      "entry per cycle, with {side} standing for 'minus' and "
+      "'plus', e.g. 'meshes/a_{side}.msh, meshes/b_{side}.msh'. "
+      "Empty: structured meshes from Element shape and Cells "
+      "along Sigma. Relative paths are relative to the "
+      "parameter file; cycles beyond the list refine the last "
+      "meshes uniformly. Boundary ids are assigned from the "
+      "coordinates.");
     prm.declare_entry("Number of cycles",
                       "1",
                       Patterns::Integer(1, 12),
@@ -225,6 +237,9 @@ namespace bilayer
     degree_first      = prm.get_integer("Polynomial degree of layer 1");
     degree_second     = prm.get_integer("Polynomial degree of layer 2");
     n_cycles          = prm.get_integer("Number of cycles");
+    mesh_files        = Utilities::split_string_list(prm.get("Mesh files"));
+    if (!mesh_files.empty())
+      shape = ElementShape::triangle;
     prm.leave_subsection();
   }
 
@@ -645,15 +660,50 @@ namespace bilayer
 
 
   Scene
-  read_scene(ParameterHandler &prm, const std::string &filename)
+  read_scene(ParameterHandler               &prm,
+             const std::string              &filename,
+             const std::vector<std::string> &overrides)
   {
     Scene::declare_parameters(prm);
     AssertThrow(std::filesystem::exists(filename),
                 ExcMessage("cannot open parameter file '" + filename + "'"));
     prm.parse_input(filename, "", false, true);
+
+    // "Section/Subsection/Entry=value" from the command line.
+    for (const auto &assignment : overrides)
+      {
+        const auto equal = assignment.find('=');
+        AssertThrow(equal != std::string::npos,
+                    ExcMessage("--set expects 'Section/Entry=value', got '" +
+                               assignment + "'"));
+        const auto path =
+          Utilities::split_string_list(assignment.substr(0, equal), '/');
+        AssertThrow(path.size() >= 2,
+                    ExcMessage("--set expects 'Section/Entry=value', got '" +
+                               assignment + "'"));
+        for (unsigned int i = 0; i + 1 < path.size(); ++i)
+          prm.enter_subsection(path[i]);
+        try
+          {
+            prm.set(path.back(), assignment.substr(equal + 1));
+          }
+        catch (const ExceptionBase &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("--set " + assignment + ": " +
+                                   one_line_message(e)));
+          }
+        for (unsigned int i = 0; i + 1 < path.size(); ++i)
+          prm.leave_subsection();
+      }
+
     Scene scene;
     scene.parse_parameters(prm);
-    scene.name = std::filesystem::path(filename).stem().string();
+    scene.name      = std::filesystem::path(filename).stem().string();
+    const auto base = std::filesystem::path(filename).parent_path();
+    for (auto &file : scene.mesh.mesh_files)
+      if (std::filesystem::path(file).is_relative())
+        file = (base / file).string();
     return scene;
   }
 

@@ -170,6 +170,8 @@ namespace bilayer
     });
     write_atomically(dir + "/table.tex",
                      [&](std::ostream &o) { table.write_tex(o); });
+    write_atomically(dir + "/table.csv",
+                     [&](std::ostream &o) { write_csv_table(o); });
     print_report(record);
     return cycle_records.back();
   }
@@ -258,6 +260,28 @@ namespace bilayer
     table.set_precision("violation", 2);
     table.set_scientific("violation", true);
     table.set_precision("time [s]", 3);
+  }
+
+
+  void
+  Study::write_csv_table(std::ostream &o) const
+  {
+    o << "cycle,P,M,h_min_minus,h_max_minus,h_min_plus,h_max_plus,"
+         "vertices_minus,cells_minus,vertices_plus,cells_plus,dofs,"
+         "multipliers,theta,iterations,subdomain_solves,converged,energy,"
+         "constraint_violation,max_penetration,setup_seconds,solve_seconds,"
+         "total_seconds\n";
+    for (const auto &r : cycle_records)
+      o << r.cycle << ',' << r.P << ',' << r.M << ',' << json(r.minus.h_min)
+        << ',' << json(r.minus.h_max) << ',' << json(r.plus.h_min) << ','
+        << json(r.plus.h_max) << ',' << r.minus.vertices << ',' << r.minus.cells
+        << ',' << r.plus.vertices << ',' << r.plus.cells << ',' << r.dofs << ','
+        << r.multipliers << ',' << json(r.theta) << ',' << r.result.iterations
+        << ',' << r.result.subdomain_solves << ','
+        << (r.result.converged ? 1 : 0) << ',' << json(r.energy) << ','
+        << json(r.report.constraint_violation) << ','
+        << json(r.report.max_penetration) << ',' << json(r.setup_seconds) << ','
+        << json(r.solve_seconds) << ',' << json(r.total_seconds) << '\n';
   }
 
 

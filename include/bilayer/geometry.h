@@ -47,8 +47,9 @@ namespace bilayer
   /**
    * The two subdomains Omega- = (x_min, x_max) x (y_min, y_Sigma) and
    * Omega+ = (x_min, x_max) x (y_Sigma, y_max), each with its own serial
-   * Triangulation. Both have the same number of cells along Sigma, so their
-   * traces match; the crack end points are mesh vertices (checked).
+   * Triangulation: structured (GridGenerator, the same number of cells
+   * along Sigma on both sides, so the traces match) or read from Gmsh
+   * files (GridIn). The crack end points must be mesh vertices (checked).
    */
   class Geometry
   {
@@ -86,6 +87,16 @@ namespace bilayer
                    const unsigned int cells_along,
                    const unsigned int cells_across,
                    Triangulation<2>  &tria) const;
+
+    void
+    read_subdomain(const Subdomain    subdomain,
+                   const std::string &pattern,
+                   Triangulation<2>  &tria) const;
+
+    /// Side ids on the outer boundary, glued/crack ids on Sigma, from the
+    /// face centres.
+    void
+    assign_boundary_ids(Triangulation<2> &tria) const;
 
     const GeometryParameters        geometry;
     const MeshParameters            mesh;

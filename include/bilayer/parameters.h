@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 /**
  * The scene: every entry of a parameter file, typed.
@@ -137,6 +138,13 @@ namespace bilayer
     unsigned int degree_first  = 1;
     unsigned int degree_second = 1;
     unsigned int n_cycles      = 1;
+    /**
+     * Gmsh meshes of the two subdomains, one entry per cycle, "{side}"
+     * standing for "minus" and "plus". Empty: structured meshes. Relative
+     * paths are relative to the parameter file. Cycles beyond the list
+     * refine the last meshes uniformly.
+     */
+    std::vector<std::string> mesh_files;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -282,7 +290,9 @@ namespace bilayer
    * name is the file name without directory and extension.
    */
   Scene
-  read_scene(ParameterHandler &prm, const std::string &filename);
+  read_scene(ParameterHandler               &prm,
+             const std::string              &filename,
+             const std::vector<std::string> &overrides = {});
 
   /// Parse a Scene from parameter-file text (entries not given keep their
   /// defaults).

@@ -100,6 +100,8 @@ namespace bilayer
     void
     write_summary() const;
     void
+    write_csv_table(std::ostream &out) const;
+    void
     add_to_table(const CycleRecord &record);
 
     const Scene                                       scene;
