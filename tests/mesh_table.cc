@@ -1,0 +1,150 @@
+// The columns of the mesh-size table (the paper's Table 1) and the output
+// contract of summary.json and table.csv.
+//
+// Gmsh meshes of meshes/half_square.geo: P vertices on Sigma and M on the
+// outer boundary by construction; a triangulation of a simply connected
+// polygon with V vertices, B of them on the boundary, has exactly
+// 2 V - B - 2 triangles (Euler). Structured quadrilaterals with n cells
+// along Sigma and n/2 across each half: P = n + 1, M = 4 n, n^2/2 cells and
+// n^2/2 + 3n/2 + 1 vertices per half, h = 2/n.
+
+#include <deal.II/grid/tria.h>
+
+#include <bilayer/geometry.h>
+#include <bilayer/parameters.h>
+#include <bilayer/study.h>
+
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+using namespace dealii;
+using namespace bilayer;
+
+namespace
+{
+  unsigned int
+  boundary_vertices(const Triangulation<2> &tria)
+  {
+    std::set<unsigned int> vertices;
+    for (const auto &face : tria.active_face_iterators())
+      if (face->at_boundary())
+        for (const unsigned int v : face->vertex_indices())
+          vertices.insert(face->vertex_index(v));
+    return vertices.size();
+  }
+
+  const char *
+  yes(const bool b)
+  {
+    return b ? "yes" : "NO";
+  }
+} // namespace
+
+int
+main()
+{
+  for (const auto &[P, M] :
+       std::vector<std::pair<unsigned int, unsigned int>>{{12, 32}, {48, 80}})
+    {
+      const std::string file = std::string(SOURCE_DIR) + "/../meshes/table1_P" +
+                               std::to_string(P) + "_M" + std::to_string(M) +
+                               "_{side}.msh";
+      const Scene scene = scene_from_string(
+        "subsection Mesh\n set Mesh files = " + file + "\nend\n", "gmsh");
+      Geometry geometry(scene.geometry, scene.mesh);
+      geometry.create_meshes(0);
+      std::cout << "Gmsh P/M = " << P << "/" << M
+                << ": P matches: " << yes(geometry.n_sigma_vertices() == P)
+                << ", M matches: " << yes(geometry.n_outer_vertices() == M);
+      const double spacing_crack = 1.0 / (P - 1 - 2 * std::round((P - 1) / 4.));
+      for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+        {
+          const auto stats = geometry.statistics(s);
+          const auto B     = boundary_vertices(geometry.triangulation(s));
+          std::cout << ", Euler " << (s == Subdomain::minus ? "-" : "+") << ": "
+                    << yes(stats.cells == 2 * stats.vertices - B - 2)
+                    << ", h range "
+                    << yes(stats.h_min <= spacing_crack + 1e-12 &&
+                           spacing_crack <= stats.h_max + 1e-12);
+        }
+      std::cout << std::endl;
+    }
+
+  for (const unsigned int cycle : {0u, 1u})
+    {
+      const Scene scene =
+        scene_from_string("subsection Mesh\n set Cells along Sigma = 12\n"
+                          " set Number of cycles = 2\nend\n",
+                          "quads");
+      Geometry geometry(scene.geometry, scene.mesh);
+      geometry.create_meshes(cycle);
+      const unsigned int n     = 12u << cycle;
+      const auto         stats = geometry.statistics(Subdomain::minus);
+      std::cout << "quadrilaterals n = " << n
+                << ": P = n + 1: " << yes(geometry.n_sigma_vertices() == n + 1)
+                << ", M = 4n: " << yes(geometry.n_outer_vertices() == 4 * n)
+                << ", cells: " << yes(stats.cells == n * n / 2)
+                << ", vertices: "
+                << yes(stats.vertices == n * n / 2 + 3 * n / 2 + 1)
+                << ", h = 2/n: "
+                << yes(std::abs(stats.h_min - 2. / n) < 1e-12 &&
+                       std::abs(stats.h_max - 2. / n) < 1e-12)
+                << std::endl;
+    }
+
+  // The output contract read by scripts.
+  Study study(scene_from_string(
+                "subsection Mesh\n set Cells along Sigma = 4\nend\n"
+                "subsection Output\n set Output directory = results\n"
+                " set Write VTU = false\n set Terminal output = checks\nend\n",
+                "contract"),
+              std::cout);
+  study.run();
+  std::ifstream      json("results/summary.json");
+  std::ostringstream text;
+  text << json.rdbuf();
+  bool all_keys = true;
+  for (const std::string key : {"scene",
+                                "cycles",
+                                "cycle",
+                                "vertices_minus",
+                                "cells_minus",
+                                "vertices_plus",
+                                "cells_plus",
+                                "P",
+                                "M",
+                                "h_min_minus",
+                                "h_max_minus",
+                                "h_min_plus",
+                                "h_max_plus",
+                                "dofs",
+                                "multipliers",
+                                "solver",
+                                "theta",
+                                "iterations",
+                                "subdomain_solves",
+                                "converged",
+                                "energy",
+                                "constraint_violation",
+                                "max_penetration",
+                                "wall_seconds",
+                                "setup",
+                                "solve",
+                                "total"})
+    if (text.str().find("\"" + key + "\":") == std::string::npos)
+      {
+        std::cout << "missing key " << key << std::endl;
+        all_keys = false;
+      }
+  std::cout << "summary.json has every key of the contract: " << yes(all_keys)
+            << std::endl;
+  std::ifstream csv("results/table.csv");
+  std::string   header;
+  std::getline(csv, header);
+  std::cout << "table.csv header: " << header << std::endl;
+  std::ifstream interface_csv("results/interface-00.csv");
+  std::getline(interface_csv, header);
+  std::cout << "interface-00.csv header: " << header << std::endl;
+}
