@@ -21,6 +21,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "reference.h"
+
 using namespace dealii;
 using namespace bilayer;
 
@@ -52,11 +54,6 @@ namespace
     return study.interface().normal_opening(study.solutions());
   }
 
-  const char *
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
 } // namespace
 
 int

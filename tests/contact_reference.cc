@@ -54,6 +54,8 @@
 #include <memory>
 #include <set>
 
+#include "reference.h"
+
 using namespace dealii;
 
 namespace
@@ -299,17 +301,8 @@ end
             cell_matrix = 0;
             cell_rhs    = 0;
             fe_values.reinit(cell);
-            for (const unsigned int q : fe_values.quadrature_point_indices())
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = 0; j < n; ++j)
-                  cell_matrix(i, j) +=
-                    (2 * mu *
-                       scalar_product(
-                         fe_values[displacement].symmetric_gradient(i, q),
-                         fe_values[displacement].symmetric_gradient(j, q)) +
-                     lambda * fe_values[displacement].divergence(i, q) *
-                       fe_values[displacement].divergence(j, q)) *
-                    fe_values.JxW(q);
+            add_elasticity_matrix(
+              fe_values, displacement, mu, lambda, cell_matrix);
             for (const auto f : cell->face_indices())
               if (cell->face(f)->at_boundary() &&
                   (cell->face(f)->boundary_id() == 2 ||

@@ -19,6 +19,8 @@
 #include <set>
 #include <sstream>
 
+#include "reference.h"
+
 using namespace dealii;
 using namespace bilayer;
 
@@ -35,11 +37,6 @@ namespace
     return vertices.size();
   }
 
-  const char *
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
 } // namespace
 
 int

@@ -1,0 +1,39 @@
+#ifndef bilayer_tests_reference_h
+#define bilayer_tests_reference_h
+
+// Helpers shared by the tests: the plane-strain stiffness of the
+// independent reference solvers (written without the library, so that
+// they check it), and the yes/NO of an assertion line.
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+
+/// cell_matrix += int 2 mu eps(phi_i):eps(phi_j) + lambda div phi_i div phi_j
+inline void
+add_elasticity_matrix(const dealii::FEValues<2>                &fe_values,
+                      const dealii::FEValuesExtractors::Vector &displacement,
+                      const double                              mu,
+                      const double                              lambda,
+                      dealii::FullMatrix<double>               &cell_matrix)
+{
+  const unsigned int n = fe_values.dofs_per_cell;
+  for (const unsigned int q : fe_values.quadrature_point_indices())
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        cell_matrix(i, j) +=
+          (2 * mu *
+             scalar_product(fe_values[displacement].symmetric_gradient(i, q),
+                            fe_values[displacement].symmetric_gradient(j, q)) +
+           lambda * fe_values[displacement].divergence(i, q) *
+             fe_values[displacement].divergence(j, q)) *
+          fe_values.JxW(q);
+}
+
+inline const char *
+yes(const bool b)
+{
+  return b ? "yes" : "NO";
+}
+
+#endif
