@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <random>
 #include <sstream>
 
 namespace bilayer
@@ -25,6 +26,57 @@ namespace bilayer
   }
 
 
+  SpectrumEstimate
+  estimate_lambda_max(const Subproblems         &subproblems,
+                      const Interface           &interface,
+                      const unsigned int         max_iterations,
+                      const BlockVector<double> *mask)
+  {
+    SpectrumEstimate    estimate;
+    BlockVector<double> x, g;
+    interface.initialize(x);
+    // A fixed pseudo-random start, so that runs are reproducible and the
+    // start is not orthogonal to the top eigenvector.
+    std::mt19937                           random(42);
+    std::uniform_real_distribution<double> uniform(-1., 1.);
+    for (unsigned int i = 0; i < x.size(); ++i)
+      x(i) = uniform(random);
+    interface.restrict_to_free(x);
+    if (mask)
+      x.scale(*mask);
+    x /= interface.weighted_norm(x);
+
+    Solutions loads, w;
+    for (unsigned int k = 0; k < max_iterations; ++k)
+      {
+        interface.apply(x, loads);
+        Threads::TaskGroup<void> tasks;
+        for (unsigned int s = 0; s < 4; ++s)
+          tasks += Threads::new_task(
+            [&, s]() { subproblems[s]->solve_homogeneous(loads[s], w[s]); });
+        tasks.join_all();
+        estimate.subdomain_solves += 4;
+        estimate.iterations = k + 1;
+        interface.jumps(w, g);
+        g *= -1.; // S x
+        if (mask)
+          g.scale(*mask);
+
+        // Rayleigh quotient <x, S x>_D with ||x||_D = 1.
+        const double lambda = interface.weighted_dot(x, g);
+        const bool   settled =
+          k > 0 && std::abs(lambda - estimate.lambda_max) < 1e-4 * lambda;
+        estimate.lambda_max = lambda;
+        const double norm   = interface.weighted_norm(g);
+        if (settled || norm == 0.)
+          break;
+        x = g;
+        x /= norm;
+      }
+    return estimate;
+  }
+
+
   UzawaSolver::UzawaSolver(const SolverParameters   &parameters,
                            const OutputParameters   &output,
                            const ConditionalOStream &pcout)
@@ -41,7 +93,27 @@ namespace bilayer
                      Solutions           &w) const
   {
     SolverResult result;
-    result.solver = "uzawa";
+    result.solver                 = "uzawa";
+    result.theta                  = parameters.theta;
+    unsigned long spectrum_solves = 0;
+    if (parameters.auto_theta)
+      {
+        const SpectrumEstimate estimate =
+          estimate_lambda_max(subproblems,
+                              interface,
+                              parameters.spectrum_iterations);
+        spectrum_solves            = estimate.subdomain_solves;
+        result.lambda_max          = estimate.lambda_max;
+        result.predicted_threshold = 2. / estimate.lambda_max;
+        result.theta =
+          parameters.auto_theta_fraction * result.predicted_threshold;
+        pcout << "    theta = auto: lambda_max(S) = " << std::setprecision(6)
+              << estimate.lambda_max << " after " << estimate.iterations
+              << " power iterations, predicted threshold 2/lambda_max = "
+              << result.predicted_threshold << ", theta = " << result.theta
+              << std::defaultfloat << std::endl;
+      }
+    const double theta = result.theta;
 
     Solutions           w_old;
     BlockVector<double> g, mu_new, mu_old;
@@ -53,7 +125,7 @@ namespace bilayer
       {
         solve_subproblems(subproblems, interface, mu, w);
         result.iterations       = k;
-        result.subdomain_solves = 4ul * (k + 1);
+        result.subdomain_solves = spectrum_solves + 4ul * (k + 1);
         interface.jumps(w, g);
 
         // Stopping rule at step k >= 1.
@@ -102,6 +174,27 @@ namespace bilayer
         if (value < parameters.tolerance)
           {
             result.converged = true;
+            if (parameters.auto_theta)
+              {
+                // Components held at a bound by the projection drop out of
+                // the iteration near the solution.
+                BlockVector<double> free_set(mu), trial(mu);
+                trial.add(theta, g);
+                interface.project(trial);
+                for (unsigned int i = 0; i < mu.size(); ++i)
+                  free_set(i) = trial(i) == mu(i) + theta * g(i) ? 1. : 0.;
+                const SpectrumEstimate estimate =
+                  estimate_lambda_max(subproblems,
+                                      interface,
+                                      parameters.spectrum_iterations,
+                                      &free_set);
+                result.subdomain_solves += estimate.subdomain_solves;
+                result.threshold_at_solution = 2. / estimate.lambda_max;
+                pcout << "    threshold 2/lambda_max on the free multipliers "
+                         "at the solution: "
+                      << std::setprecision(6) << result.threshold_at_solution
+                      << std::defaultfloat << std::endl;
+              }
             std::ostringstream msg;
             msg << "stopping rule met after " << k << " iterations";
             result.message = msg.str();
@@ -119,7 +212,7 @@ namespace bilayer
 
         // Multiplier update, step 3.
         mu_new = mu;
-        mu_new.add(parameters.theta, g);
+        mu_new.add(theta, g);
         interface.project(mu_new);
         mu_old = mu;
         mu_old -= mu_new;
@@ -140,8 +233,7 @@ namespace bilayer
             msg << "diverged at iteration " << k
                 << ": the multiplier increment grew by more than "
                 << parameters.divergence_factor
-                << " (Solver/Divergence growth factor); theta = "
-                << parameters.theta
+                << " (Solver/Divergence growth factor); theta = " << theta
                 << " is above the stability threshold, reduce "
                    "Solver/Uzawa step theta";
             result.message = msg.str();

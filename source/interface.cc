@@ -363,14 +363,31 @@ namespace bilayer
   }
 
 
+  void
+  Interface::restrict_to_free(BlockVector<double> &x) const
+  {
+    for (unsigned int i = 0; i < x.size(); ++i)
+      if (!(lower(i) < upper(i)))
+        x(i) = 0;
+  }
+
+
   double
-  Interface::weighted_norm(const BlockVector<double> &x) const
+  Interface::weighted_dot(const BlockVector<double> &x,
+                          const BlockVector<double> &y) const
   {
     double sum = 0;
     for (unsigned int b = 0; b < x.n_blocks(); ++b)
       for (unsigned int i = 0; i < x.block(b).size(); ++i)
-        sum += node_weight[i / 2] * x.block(b)(i) * x.block(b)(i);
-    return std::sqrt(sum);
+        sum += node_weight[i / 2] * x.block(b)(i) * y.block(b)(i);
+    return sum;
+  }
+
+
+  double
+  Interface::weighted_norm(const BlockVector<double> &x) const
+  {
+    return std::sqrt(weighted_dot(x, x));
   }
 
 

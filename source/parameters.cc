@@ -501,10 +501,24 @@ namespace bilayer
                       "projected Uzawa iteration, paper.md section 4).");
     prm.declare_entry("Uzawa step theta",
                       "65",
-                      Patterns::Double(0),
-                      "Step theta of the multiplier update [1/stress "
-                      "x stress/length, i.e. multiplier units per unit "
-                      "jump]; the paper uses 65 with moduli in GPa.");
+                      Patterns::Anything(),
+                      "Step theta of the multiplier update [stress/length: "
+                      "multiplier units per unit jump], a number > 0 or "
+                      "'auto': Auto theta fraction * 2 / lambda_max of the "
+                      "dual operator S = D^-1 C A^-1 C^T, estimated by a "
+                      "power iteration. The paper uses 65 with moduli in "
+                      "GPa.");
+    prm.declare_entry("Auto theta fraction",
+                      "0.9",
+                      Patterns::Double(0, 1),
+                      "theta = fraction * 2 / lambda_max for 'auto' [-], in "
+                      "(0, 1).");
+    prm.declare_entry("Spectrum estimate iterations",
+                      "30",
+                      Patterns::Integer(1, 1000),
+                      "Most power iterations for lambda_max of S (each is "
+                      "four subdomain solves); it stops earlier when the "
+                      "estimate changes by less than 1e-4 [-].");
     prm.declare_entry("Maximum iterations",
                       "100000",
                       Patterns::Integer(1),
@@ -543,16 +557,32 @@ namespace bilayer
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    theta = prm.get_double("Uzawa step theta");
-    AssertThrow(theta > 0,
-                ExcMessage("Solver/Uzawa step theta must be > 0, got " +
-                           prm.get("Uzawa step theta")));
-    max_iterations  = prm.get_integer("Maximum iterations");
-    const auto rule = prm.get("Stopping rule");
-    stopping_rule   = rule == "paper"           ? StoppingRule::paper :
-                      rule == "paper with norm" ? StoppingRule::paper_norm :
-                                                  StoppingRule::relative;
-    tolerance       = prm.get_double("Tolerance");
+    const std::string step = prm.get("Uzawa step theta");
+    auto_theta             = step == "auto";
+    if (!auto_theta)
+      {
+        AssertThrow(Patterns::Double(0).match(step),
+                    ExcMessage("Solver/Uzawa step theta must be a number > 0 "
+                               "or 'auto', got '" +
+                               step + "'"));
+        theta = Utilities::string_to_double(step);
+        AssertThrow(theta > 0,
+                    ExcMessage("Solver/Uzawa step theta must be > 0 or "
+                               "'auto', got " +
+                               step));
+      }
+    auto_theta_fraction = prm.get_double("Auto theta fraction");
+    AssertThrow(auto_theta_fraction > 0 && auto_theta_fraction < 1,
+                ExcMessage("Solver/Auto theta fraction must lie in (0, 1), "
+                           "got " +
+                           prm.get("Auto theta fraction")));
+    spectrum_iterations = prm.get_integer("Spectrum estimate iterations");
+    max_iterations      = prm.get_integer("Maximum iterations");
+    const auto rule     = prm.get("Stopping rule");
+    stopping_rule       = rule == "paper"           ? StoppingRule::paper :
+                          rule == "paper with norm" ? StoppingRule::paper_norm :
+                                                      StoppingRule::relative;
+    tolerance           = prm.get_double("Tolerance");
     AssertThrow(tolerance > 0,
                 ExcMessage("Solver/Tolerance must be > 0, got " +
                            prm.get("Tolerance")));

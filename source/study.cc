@@ -91,7 +91,6 @@ namespace bilayer
     Timer       total;
     CycleRecord record;
     record.cycle = cycle;
-    record.theta = scene.solver.theta;
 
     domain.create_meshes(cycle);
     record.minus = domain.statistics(Subdomain::minus);
@@ -146,6 +145,7 @@ namespace bilayer
     Timer             solve_timer;
     const UzawaSolver solver(scene.solver, scene.output, pcout);
     record.result        = solver.solve(solvers, coupling, mu, w);
+    record.theta         = record.result.theta;
     record.solve_seconds = solve_timer.wall_time();
 
     for (unsigned int s = 0; s < 4; ++s)
@@ -227,8 +227,8 @@ namespace bilayer
       out << "cycle " << record.cycle << ": " << c.first << ": "
           << (c.second ? "yes" : "NO") << std::endl;
     if (!record.accepted())
-      std::cerr << "bilayer: cycle " << record.cycle
-                << " FAILED: " << record.result.message << std::endl;
+      out << "bilayer: cycle " << record.cycle
+          << " FAILED: " << record.result.message << std::endl;
   }
 
 
@@ -310,6 +310,11 @@ namespace bilayer
               << ", \"multipliers\": " << r.multipliers
               << ", \"solver\": " << json(r.result.solver)
               << ", \"theta\": " << json(r.theta)
+              << ", \"lambda_max\": " << json(r.result.lambda_max)
+              << ", \"predicted_threshold\": "
+              << json(r.result.predicted_threshold)
+              << ", \"threshold_at_solution\": "
+              << json(r.result.threshold_at_solution)
               << ", \"iterations\": " << r.result.iterations
               << ", \"subdomain_solves\": " << r.result.subdomain_solves
               << ", \"converged\": " << (r.result.converged ? "true" : "false")

@@ -188,6 +188,18 @@ namespace bilayer
   }
 
 
+  void
+  ElasticSubproblem::solve_homogeneous(const Vector<double> &coupling,
+                                       Vector<double>       &solution) const
+  {
+    solution = coupling;
+    homogeneous_constraints.condense(solution);
+    factorisation.solve(solution);
+    homogeneous_constraints.distribute(solution);
+    ++solve_count;
+  }
+
+
   double
   ElasticSubproblem::energy_norm_squared(const Vector<double> &w) const
   {

@@ -23,6 +23,7 @@ main()
     "subsection Geometry\n set Crack interval on Sigma = 0.5, -0.5\nend\n",
     "subsection Geometry\n set Clamped sides = bottom\nend\n",
     "subsection Solver\n set Uzawa step theta = 0\nend\n",
+    "subsection Solver\n set Uzawa step theta = fast\nend\n",
     "subsection Solver\n set Tolerance = 0\nend\n",
     "subsection Contact\n set Multiplier bound p = 0\nend\n",
     "subsection Loads\n set Constants = c = 1e-3*mu7\nend\n",

@@ -30,7 +30,41 @@ namespace bilayer
     double stopping_value = 0;
     /// Why the solve ended, one line.
     std::string message;
+    /// The step used.
+    double theta = 0;
+    /// Estimated lambda_max of S and the predicted stability threshold
+    /// 2 / lambda_max (0 when not estimated).
+    double lambda_max = 0, predicted_threshold = 0;
+    /// 2 / lambda_max of S restricted to the multipliers that the
+    /// projection does not hold at a bound at the solution: the threshold of
+    /// the final phase of the iteration (0 when not estimated).
+    double threshold_at_solution = 0;
   };
+
+  /// Largest eigenvalue of the dual operator and the work spent on it.
+  struct SpectrumEstimate
+  {
+    double        lambda_max       = 0;
+    unsigned int  iterations       = 0;
+    unsigned long subdomain_solves = 0;
+  };
+
+  /**
+   * lambda_max of S = D^{-1} C A^{-1} C^T (multipliers -> jumps of the
+   * homogeneous problem; symmetric positive semidefinite in the D inner
+   * product) by the power iteration with Rayleigh quotients in the D inner
+   * product, restricted to the components that carry multipliers. Each
+   * iteration is four homogeneous subdomain solves; it stops when the
+   * estimate changes by less than 1e-4 relative or after @p max_iterations.
+   * The Rayleigh quotient approaches lambda_max from below. With @p mask
+   * (1 or 0 per component) the operator is restricted further, e.g. to the
+   * components that the projection does not hold at a bound at a solution.
+   */
+  SpectrumEstimate
+  estimate_lambda_max(const Subproblems         &subproblems,
+                      const Interface           &interface,
+                      const unsigned int         max_iterations,
+                      const BlockVector<double> *mask = nullptr);
 
   /**
    * The subdomain solves that every outer solver repeats: the multiplier

@@ -126,9 +126,18 @@ namespace bilayer
     void
     jumps(const Solutions &w, BlockVector<double> &g) const;
 
+    /// Zero the components that carry no multiplier (bounds [0, 0]).
+    void
+    restrict_to_free(BlockVector<double> &x) const;
+
     /// Clamp onto the multiplier sets.
     void
     project(BlockVector<double> &multipliers) const;
+
+    /// sum_i D_i x_i y_i over all blocks.
+    double
+    weighted_dot(const BlockVector<double> &x,
+                 const BlockVector<double> &y) const;
 
     /// sqrt(sum_i D_i x_i^2) over all blocks.
     double

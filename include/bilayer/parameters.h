@@ -234,10 +234,15 @@ namespace bilayer
 
   struct SolverParameters
   {
-    double       theta          = 65.0;
-    unsigned int max_iterations = 100000;
-    StoppingRule stopping_rule  = StoppingRule::paper;
-    double       tolerance      = 1e-6;
+    /// The Uzawa step; ignored when auto_theta is set.
+    double theta = 65.0;
+    /// theta = auto_theta_fraction * 2 / lambda_max(S), S estimated.
+    bool         auto_theta          = false;
+    double       auto_theta_fraction = 0.9;
+    unsigned int spectrum_iterations = 30;
+    unsigned int max_iterations      = 100000;
+    StoppingRule stopping_rule       = StoppingRule::paper;
+    double       tolerance           = 1e-6;
     /// Divergence: the multiplier increment grew by this factor over its
     /// smallest value so far.
     double divergence_factor = 1e3;

@@ -61,6 +61,12 @@ namespace bilayer
     void
     solve(const Vector<double> &coupling, Vector<double> &solution) const;
 
+    /// Solve with the load @p coupling only: no tractions, zero prescribed
+    /// displacement (the linear part of the solution map).
+    void
+    solve_homogeneous(const Vector<double> &coupling,
+                      Vector<double>       &solution) const;
+
     /// a(w, w) = int sigma(w) : eps(w) dx [energy].
     double
     energy_norm_squared(const Vector<double> &w) const;
