@@ -93,8 +93,9 @@ namespace bilayer
                      Solutions           &w) const
   {
     SolverResult result;
-    result.solver                 = "uzawa";
-    result.theta                  = parameters.theta;
+    const bool   accelerated = parameters.method == SolverMethod::accelerated;
+    result.solver            = accelerated ? "accelerated" : "uzawa";
+    result.theta             = parameters.theta;
     unsigned long spectrum_solves = 0;
     if (parameters.auto_theta)
       {
@@ -106,7 +107,10 @@ namespace bilayer
         result.lambda_max          = estimate.lambda_max;
         result.predicted_threshold = 2. / estimate.lambda_max;
         result.theta =
-          parameters.auto_theta_fraction * result.predicted_threshold;
+          // Projected gradient steps are stable below 2 / lambda_max; the
+          // accelerated method needs a step below 1 / lambda_max.
+          parameters.auto_theta_fraction * result.predicted_threshold *
+          (accelerated ? 0.5 : 1.);
         pcout << "    theta = auto: lambda_max(S) = " << std::setprecision(6)
               << estimate.lambda_max << " after " << estimate.iterations
               << " power iterations, predicted threshold 2/lambda_max = "
@@ -117,6 +121,10 @@ namespace bilayer
 
     Solutions           w_old;
     BlockVector<double> g, mu_new, mu_old;
+    // The accelerated method: the last projected iterate x_k and the
+    // momentum parameter; mu is then the extrapolated point y_k.
+    BlockVector<double> projected(mu);
+    double              t = 1;
     Vector<double>      difference;
     double              min_increment  = std::numeric_limits<double>::max();
     double              last_increment = 0;
@@ -174,7 +182,7 @@ namespace bilayer
         if (value < parameters.tolerance)
           {
             result.converged = true;
-            if (parameters.auto_theta)
+            if (parameters.auto_theta && !accelerated)
               {
                 // Components held at a bound by the projection drop out of
                 // the iteration near the solution.
@@ -195,6 +203,14 @@ namespace bilayer
                       << std::setprecision(6) << result.threshold_at_solution
                       << std::defaultfloat << std::endl;
               }
+            if (accelerated)
+              {
+                // Report the projected iterate, which lies in the
+                // multiplier sets, with its own solutions.
+                mu = projected;
+                solve_subproblems(subproblems, interface, mu, w);
+                result.subdomain_solves += 4;
+              }
             std::ostringstream msg;
             msg << "stopping rule met after " << k << " iterations";
             result.message = msg.str();
@@ -210,12 +226,13 @@ namespace bilayer
             return result;
           }
 
-        // Multiplier update, step 3.
+        // Multiplier update, step 3: x_{k+1} = P(y_k + theta g(y_k)), with
+        // y_k = mu^k for the paper's iteration.
         mu_new = mu;
         mu_new.add(theta, g);
         interface.project(mu_new);
-        mu_old = mu;
-        mu_old -= mu_new;
+        mu_old = accelerated ? projected : mu;
+        mu_old -= mu_new; // x_k - x_{k+1}
         last_increment = interface.weighted_norm(mu_old);
 
         if (!std::isfinite(last_increment) || (k >= 1 && !std::isfinite(value)))
@@ -242,7 +259,22 @@ namespace bilayer
         min_increment = std::min(min_increment, last_increment);
 
         w_old.swap(w);
-        mu.swap(mu_new);
+        if (accelerated)
+          {
+            // FISTA momentum; restart when the step goes against the
+            // gradient at the extrapolated point (O'Donoghue and Candes'
+            // gradient restart): <g(y_k), x_{k+1} - x_k>_D < 0.
+            if (-interface.weighted_dot(g, mu_old) < 0)
+              t = 1;
+            const double t_new = 0.5 * (1. + std::sqrt(1. + 4. * t * t));
+            // y_{k+1} = x_{k+1} + (t - 1) / t_new (x_{k+1} - x_k)
+            mu = mu_new;
+            mu.add(-(t - 1.) / t_new, mu_old);
+            t         = t_new;
+            projected = mu_new;
+          }
+        else
+          mu.swap(mu_new);
       }
   }
 } // namespace bilayer

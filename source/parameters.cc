@@ -496,9 +496,12 @@ namespace bilayer
     prm.enter_subsection("Solver");
     prm.declare_entry("Method",
                       "uzawa",
-                      Patterns::Selection("uzawa"),
+                      Patterns::Selection("uzawa|accelerated"),
                       "Outer solver on the multipliers: uzawa (the paper's "
-                      "projected Uzawa iteration, paper.md section 4).");
+                      "projected Uzawa iteration, paper.md section 4) or "
+                      "accelerated (the same projected step with FISTA "
+                      "momentum and adaptive restart; with theta = auto its "
+                      "step is Auto theta fraction / lambda_max).");
     prm.declare_entry("Uzawa step theta",
                       "65",
                       Patterns::Anything(),
@@ -557,6 +560,8 @@ namespace bilayer
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
+    method = prm.get("Method") == "accelerated" ? SolverMethod::accelerated :
+                                                  SolverMethod::uzawa;
     const std::string step = prm.get("Uzawa step theta");
     auto_theta             = step == "auto";
     if (!auto_theta)

@@ -232,8 +232,19 @@ namespace bilayer
     parse_parameters(ParameterHandler &prm);
   };
 
+  /// Outer solvers on the multipliers.
+  enum class SolverMethod
+  {
+    /// The paper's projected Uzawa iteration.
+    uzawa,
+    /// The same projected gradient step with Nesterov/FISTA momentum and
+    /// adaptive (gradient) restart.
+    accelerated
+  };
+
   struct SolverParameters
   {
+    SolverMethod method = SolverMethod::uzawa;
     /// The Uzawa step; ignored when auto_theta is set.
     double theta = 65.0;
     /// theta = auto_theta_fraction * 2 / lambda_max(S), S estimated.
