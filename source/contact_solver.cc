@@ -10,19 +10,40 @@
 
 namespace bilayer
 {
+  namespace
+  {
+    /// The four solves with the multiplier loads of @p multipliers, as
+    /// parallel tasks; @p homogeneous drops the tractions and the prescribed
+    /// displacement (the linear part of the solution map).
+    void
+    solve_all(const Subproblems         &subproblems,
+              const Interface           &interface,
+              const BlockVector<double> &multipliers,
+              Solutions                 &solutions,
+              const bool                 homogeneous)
+    {
+      Solutions loads;
+      interface.apply(multipliers, loads);
+      Threads::TaskGroup<void> tasks;
+      for (unsigned int s = 0; s < 4; ++s)
+        tasks += Threads::new_task([&, s]() {
+          if (homogeneous)
+            subproblems[s]->solve_homogeneous(loads[s], solutions[s]);
+          else
+            subproblems[s]->solve(loads[s], solutions[s]);
+        });
+      tasks.join_all();
+    }
+  } // namespace
+
+
   void
   solve_subproblems(const Subproblems         &subproblems,
                     const Interface           &interface,
                     const BlockVector<double> &multipliers,
                     Solutions                 &solutions)
   {
-    Solutions loads;
-    interface.apply(multipliers, loads);
-    Threads::TaskGroup<void> tasks;
-    for (unsigned int s = 0; s < 4; ++s)
-      tasks += Threads::new_task(
-        [&, s]() { subproblems[s]->solve(loads[s], solutions[s]); });
-    tasks.join_all();
+    solve_all(subproblems, interface, multipliers, solutions, false);
   }
 
 
@@ -46,15 +67,10 @@ namespace bilayer
       x.scale(*mask);
     x /= interface.weighted_norm(x);
 
-    Solutions loads, w;
+    Solutions w;
     for (unsigned int k = 0; k < max_iterations; ++k)
       {
-        interface.apply(x, loads);
-        Threads::TaskGroup<void> tasks;
-        for (unsigned int s = 0; s < 4; ++s)
-          tasks += Threads::new_task(
-            [&, s]() { subproblems[s]->solve_homogeneous(loads[s], w[s]); });
-        tasks.join_all();
+        solve_all(subproblems, interface, x, w, true);
         estimate.subdomain_solves += 4;
         estimate.iterations = k + 1;
         interface.jumps(w, g);
