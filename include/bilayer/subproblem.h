@@ -6,11 +6,11 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <bilayer/cholesky.h>
 #include <bilayer/parameters.h>
 
 #include <array>
@@ -138,7 +138,7 @@ namespace bilayer
     SparseMatrix<double>         stiffness;
     Vector<double>               system_rhs;
     Vector<double>               traction_load;
-    SparseDirectUMFPACK          factorisation;
+    SparseCholesky               factorisation;
     mutable unsigned long        solve_count = 0;
   };
 } // namespace bilayer

@@ -1,0 +1,46 @@
+#ifndef bilayer_cholesky_h
+#define bilayer_cholesky_h
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  /**
+   * Sparse Cholesky factorisation A = L L^T of a symmetric positive
+   * definite matrix by CHOLMOD (SuiteSparse, supernodal, with its fill-
+   * reducing ordering). The subproblem matrices are symmetric positive
+   * definite (the constrained rows keep a positive diagonal), and a
+   * Cholesky solve costs about half of an LU solve with the same ordering.
+   * Factorise once, solve many times; solve() may run concurrently on
+   * different objects, not on the same one.
+   */
+  class SparseCholesky
+  {
+  public:
+    SparseCholesky();
+    ~SparseCholesky();
+    SparseCholesky(const SparseCholesky &) = delete;
+    SparseCholesky &
+    operator=(const SparseCholesky &) = delete;
+
+    /// Analyse and factorise; throws if the matrix is not positive
+    /// definite.
+    void
+    initialize(const SparseMatrix<double> &matrix);
+
+    /// Overwrite @p rhs_and_solution with A^{-1} rhs.
+    void
+    solve(Vector<double> &rhs_and_solution) const;
+
+  private:
+    struct Data;
+    std::unique_ptr<Data> data;
+  };
+} // namespace bilayer
+
+#endif
