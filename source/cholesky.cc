@@ -2,9 +2,8 @@
 
 #include <bilayer/cholesky.h>
 
-#include <cholmod.h>
-
 #include <algorithm>
+#include <cholmod.h>
 
 namespace bilayer
 {
@@ -45,10 +44,10 @@ namespace bilayer
     cholmod_sparse *a = cholmod_allocate_sparse(
       n, n, matrix.n_nonzero_elements(), 0, 1, 1, CHOLMOD_REAL, &data->common);
     AssertThrow(a != nullptr, ExcMessage("CHOLMOD could not allocate"));
-    auto  *p = static_cast<int *>(a->p);
-    auto  *i = static_cast<int *>(a->i);
-    auto  *x = static_cast<double *>(a->x);
-    int    k = 0;
+    auto *p = static_cast<int *>(a->p);
+    auto *i = static_cast<int *>(a->i);
+    auto *x = static_cast<double *>(a->x);
+    int   k = 0;
     for (std::size_t row = 0; row < n; ++row)
       {
         p[row] = k;
@@ -86,7 +85,8 @@ namespace bilayer
     b.z     = nullptr;
     b.xtype = CHOLMOD_REAL;
     b.dtype = CHOLMOD_DOUBLE;
-    cholmod_dense *x = cholmod_solve(CHOLMOD_A, data->factor, &b, &data->common);
+    cholmod_dense *x =
+      cholmod_solve(CHOLMOD_A, data->factor, &b, &data->common);
     AssertThrow(x != nullptr, ExcMessage("CHOLMOD solve failed"));
     const double *values = static_cast<const double *>(x->x);
     std::copy(values, values + data->n, rhs_and_solution.begin());
