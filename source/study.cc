@@ -120,6 +120,8 @@ namespace bilayer
               scene.materials.layer[static_cast<unsigned int>(layer)]);
             sub->setup(scene.geometry.clamped, *prescribed, traction);
             record.dofs += sub->n_dofs();
+            record.assembly_seconds += sub->assembly_seconds;
+            record.factorisation_seconds += sub->factorisation_seconds;
           }
       }
     std::array<const ElasticSubproblem *, 4> views;
@@ -336,6 +338,8 @@ namespace bilayer
               << json(k.max_multiplier_over_bound)
               << ", \"accepted\": " << (r.accepted() ? "true" : "false")
               << ", \"wall_seconds\": {\"setup\": " << json(r.setup_seconds)
+              << ", \"assembly\": " << json(r.assembly_seconds)
+              << ", \"factorisation\": " << json(r.factorisation_seconds)
               << ", \"solve\": " << json(r.solve_seconds)
               << ", \"total\": " << json(r.total_seconds) << "}}";
           }

@@ -82,7 +82,6 @@ namespace bilayer
     timer.restart();
     factorisation.initialize(system_matrix);
     factorisation_seconds = timer.wall_time();
-    solve_count           = 0;
   }
 
 
@@ -184,7 +183,6 @@ namespace bilayer
       solution = system_rhs;
     factorisation.solve(solution);
     constraints.distribute(solution);
-    ++solve_count;
   }
 
 
@@ -196,7 +194,6 @@ namespace bilayer
     homogeneous_constraints.condense(solution);
     factorisation.solve(solution);
     homogeneous_constraints.distribute(solution);
-    ++solve_count;
   }
 
 

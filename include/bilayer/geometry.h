@@ -75,12 +75,6 @@ namespace bilayer
     unsigned int
     n_outer_vertices() const;
 
-    const GeometryParameters &
-    parameters() const
-    {
-      return geometry;
-    }
-
   private:
     void
     make_subdomain(const Subdomain    subdomain,

@@ -36,6 +36,9 @@ namespace bilayer
     /// Acceptance checks: (description, passed).
     std::vector<std::pair<std::string, bool>> checks;
     double setup_seconds = 0, solve_seconds = 0, total_seconds = 0;
+    /// Parts of setup_seconds: assembly and factorisation of the four
+    /// subproblems, summed.
+    double assembly_seconds = 0, factorisation_seconds = 0;
 
     bool
     accepted() const;
@@ -85,11 +88,6 @@ namespace bilayer
     subproblem(const Layer layer, const Subdomain subdomain) const
     {
       return *subproblems[Interface::index(layer, subdomain)];
-    }
-    const Geometry &
-    geometry() const
-    {
-      return domain;
     }
 
   private:

@@ -111,12 +111,6 @@ namespace bilayer
     {
       return dofs.n_dofs();
     }
-    /// Number of solve() calls so far.
-    unsigned long
-    n_solves() const
-    {
-      return solve_count;
-    }
     /// Wall time of assembly and of factorisation in setup() [s].
     double assembly_seconds      = 0;
     double factorisation_seconds = 0;
@@ -139,7 +133,6 @@ namespace bilayer
     Vector<double>               system_rhs;
     Vector<double>               traction_load;
     SparseCholesky               factorisation;
-    mutable unsigned long        solve_count = 0;
   };
 } // namespace bilayer
 
