@@ -152,11 +152,13 @@ namespace bilayer
         result.subdomain_solves = spectrum_solves + 4ul * (k + 1);
         interface.jumps(w, g);
 
-        // Stopping rule at step k >= 1.
-        const double scale     = interface.displacement_scale(w);
-        const double violation = interface.discrete_violation(g);
-        const double relative_violation =
-          scale > 0 ? violation / scale : violation;
+        // Stopping rule at step k >= 1. The relative violation needs the
+        // traces of all four solutions: evaluated only where it is used.
+        const auto relative_violation = [&]() {
+          const double scale     = interface.displacement_scale(w);
+          const double violation = interface.discrete_violation(g);
+          return scale > 0 ? violation / scale : violation;
+        };
         double value = std::numeric_limits<double>::infinity();
         if (k >= 1)
           {
@@ -165,7 +167,7 @@ namespace bilayer
                 const double norm = interface.weighted_norm(mu);
                 const double change =
                   norm > 0 ? last_increment / norm : last_increment;
-                value = std::max(change, relative_violation);
+                value = std::max(change, relative_violation());
               }
             else
               {
@@ -192,7 +194,7 @@ namespace bilayer
           pcout << "    iteration " << std::setw(6) << k << "  stopping value "
                 << std::scientific << std::setprecision(3) << value
                 << "  multiplier change " << last_increment
-                << "  relative violation " << relative_violation
+                << "  relative violation " << relative_violation()
                 << std::defaultfloat << std::endl;
 
         if (value < parameters.tolerance)
