@@ -259,11 +259,7 @@ end
 int
 main()
 {
-  ParameterHandler prm;
-  bilayer::Scene::declare_parameters(prm);
-  prm.parse_input_from_string(scene_text);
-  bilayer::Scene scene;
-  scene.parse_parameters(prm);
+  const bilayer::Scene scene = bilayer::scene_from_string(scene_text, "glued");
 
   bilayer::Study              study(scene, std::cout);
   const bilayer::CycleRecord &record = study.run_cycle(0);

@@ -78,29 +78,19 @@ main()
             const Quadrature<2> quadrature =
               sub.fe().reference_cell().get_gauss_type_quadrature<2>(degree +
                                                                      2);
-            Vector<float> cellwise(tria.n_active_cells());
-            VectorTools::integrate_difference(sub.mapping(),
-                                              sub.dof_handler(),
-                                              solution,
-                                              exact,
-                                              cellwise,
-                                              quadrature,
-                                              VectorTools::L2_norm);
-            const double l2 =
-              VectorTools::compute_global_error(tria,
+            const auto error = [&](const VectorTools::NormType norm) {
+              Vector<float> cellwise(tria.n_active_cells());
+              VectorTools::integrate_difference(sub.mapping(),
+                                                sub.dof_handler(),
+                                                solution,
+                                                exact,
                                                 cellwise,
-                                                VectorTools::L2_norm);
-            VectorTools::integrate_difference(sub.mapping(),
-                                              sub.dof_handler(),
-                                              solution,
-                                              exact,
-                                              cellwise,
-                                              quadrature,
-                                              VectorTools::H1_seminorm);
-            const double h1 =
-              VectorTools::compute_global_error(tria,
-                                                cellwise,
-                                                VectorTools::H1_seminorm);
+                                                quadrature,
+                                                norm);
+              return VectorTools::compute_global_error(tria, cellwise, norm);
+            };
+            const double l2 = error(VectorTools::L2_norm);
+            const double h1 = error(VectorTools::H1_seminorm);
             if (previous_l2 > 0)
               {
                 l2_rate = std::log2(previous_l2 / l2);
