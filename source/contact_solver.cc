@@ -1,4 +1,5 @@
 #include <deal.II/base/thread_management.h>
+#include <deal.II/base/timer.h>
 
 #include <bilayer/contact_solver.h>
 
@@ -44,6 +45,16 @@ namespace bilayer
                     Solutions                 &solutions)
   {
     solve_all(subproblems, interface, multipliers, solutions, false);
+  }
+
+
+  void
+  solve_homogeneous_subproblems(const Subproblems         &subproblems,
+                                const Interface           &interface,
+                                const BlockVector<double> &multipliers,
+                                Solutions                 &solutions)
+  {
+    solve_all(subproblems, interface, multipliers, solutions, true);
   }
 
 
@@ -113,6 +124,7 @@ namespace bilayer
     result.solver            = accelerated ? "accelerated" : "uzawa";
     result.theta             = parameters.theta;
     unsigned long spectrum_solves = 0;
+    Timer         timer;
     if (parameters.auto_theta)
       {
         const SpectrumEstimate estimate =
@@ -133,7 +145,14 @@ namespace bilayer
               << result.predicted_threshold << ", theta = " << result.theta
               << std::defaultfloat << std::endl;
       }
-    const double theta = result.theta;
+    const double theta   = result.theta;
+    result.setup_seconds = timer.wall_time();
+    timer.restart();
+    // Every return below goes through this.
+    const auto finish = [&]() {
+      result.iteration_seconds = timer.wall_time();
+      return result;
+    };
 
     Solutions           w_old;
     BlockVector<double> g, mu_new, mu_old;
@@ -162,7 +181,9 @@ namespace bilayer
         double value = std::numeric_limits<double>::infinity();
         if (k >= 1)
           {
-            if (parameters.stopping_rule == StoppingRule::relative)
+            if (parameters.stopping_rule == StoppingRule::kkt)
+              value = interface.kkt_residual(w, g, mu).value();
+            else if (parameters.stopping_rule == StoppingRule::relative)
               {
                 const double norm = interface.weighted_norm(mu);
                 const double change =
@@ -232,7 +253,7 @@ namespace bilayer
             std::ostringstream msg;
             msg << "stopping rule met after " << k << " iterations";
             result.message = msg.str();
-            return result;
+            return finish();
           }
         if (k >= parameters.max_iterations)
           {
@@ -241,7 +262,7 @@ namespace bilayer
                 << " reached (Solver/Maximum iterations) with stopping value "
                 << value << " > Solver/Tolerance " << parameters.tolerance;
             result.message = msg.str();
-            return result;
+            return finish();
           }
 
         // Multiplier update, step 3: x_{k+1} = P(y_k + theta g(y_k)), with
@@ -258,7 +279,7 @@ namespace bilayer
             result.diverged = true;
             result.message  = "diverged: the iterates are no longer finite "
                               "(reduce Solver/Uzawa step theta)";
-            return result;
+            return finish();
           }
         if (last_increment > parameters.divergence_factor * min_increment &&
             last_increment > 1e-12 * interface.weighted_norm(mu_new))
@@ -272,7 +293,7 @@ namespace bilayer
                 << " is above the stability threshold, reduce "
                    "Solver/Uzawa step theta";
             result.message = msg.str();
-            return result;
+            return finish();
           }
         min_increment = std::min(min_increment, last_increment);
 

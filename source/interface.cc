@@ -418,6 +418,83 @@ namespace bilayer
   }
 
 
+  KKTResidual
+  Interface::kkt_residual(const Solutions           &w,
+                          const BlockVector<double> &g,
+                          const BlockVector<double> &mu) const
+  {
+    KKTResidual  kkt;
+    const double scale = displacement_scale(w);
+    kkt.primal =
+      scale > 0 ? discrete_violation(g) / scale : discrete_violation(g);
+    const double mu_scale = mu.linfty_norm();
+    if (mu_scale > 0)
+      for (unsigned int i = 0; i < mu.size(); ++i)
+        if (lower(i) == 0. && upper(i) > 0.)
+          {
+            kkt.dual = std::max(kkt.dual, -mu(i) / mu_scale);
+            if (scale > 0)
+              kkt.complementarity =
+                std::max(kkt.complementarity,
+                         std::abs(mu(i) * g(i)) / (mu_scale * scale));
+          }
+    return kkt;
+  }
+
+
+  void
+  Interface::scale_by_weights(BlockVector<double> &x, const bool inverse) const
+  {
+    for (unsigned int b = 0; b < x.n_blocks(); ++b)
+      for (unsigned int i = 0; i < x.block(b).size(); ++i)
+        x.block(b)(i) = inverse ? x.block(b)(i) / node_weight[i / 2] :
+                                  x.block(b)(i) * node_weight[i / 2];
+  }
+
+
+  void
+  Interface::coupling_gram(const BlockVector<double> &mask,
+                           SparsityPattern           &pattern,
+                           SparseMatrix<double>      &gram) const
+  {
+    // Sign of subproblem s (u-, u+, v-, v+) in the jump of block b.
+    constexpr int sign[3][4] = {{1, -1, 0, 0}, {1, 0, -1, 0}, {0, 1, 0, -1}};
+    const unsigned int                                      n = 2 * n_nodes();
+    std::map<std::pair<unsigned int, unsigned int>, double> entries;
+    for (unsigned int s = 0; s < 4; ++s)
+      {
+        // The columns of the signed coupling of s: (global row, value) per
+        // dof of s.
+        std::map<types::global_dof_index,
+                 std::vector<std::pair<unsigned int, double>>>
+                    columns;
+        const auto &matrix = coupling[s].matrix;
+        for (unsigned int r = 0; r < matrix.m(); ++r)
+          for (auto e = matrix.begin(r); e != matrix.end(r); ++e)
+            for (unsigned int b = 0; b < 3; ++b)
+              if (sign[b][s] != 0 && mask(b * n + r) != 0. && e->value() != 0.)
+                columns[e->column()].emplace_back(b * n + r,
+                                                  sign[b][s] * e->value());
+        for (const auto &column : columns)
+          for (const auto &[i, vi] : column.second)
+            for (const auto &[j, vj] : column.second)
+              entries[{i, j}] += vi * vj;
+      }
+    DynamicSparsityPattern dsp(3 * n);
+    for (unsigned int i = 0; i < 3 * n; ++i)
+      dsp.add(i, i);
+    for (const auto &e : entries)
+      dsp.add(e.first.first, e.first.second);
+    pattern.copy_from(dsp);
+    gram.reinit(pattern);
+    for (unsigned int i = 0; i < 3 * n; ++i)
+      if (mask(i) == 0.)
+        gram.set(i, i, 1.);
+    for (const auto &e : entries)
+      gram.add(e.first.first, e.first.second, e.second);
+  }
+
+
   std::vector<double>
   Interface::normal_opening(const Solutions &w) const
   {
@@ -460,6 +537,7 @@ namespace bilayer
       sum_mu > 0 && scale > 0 ? sum_mu_jump / (sum_mu * scale) : 0.;
     report.max_multiplier_over_bound =
       mu.linfty_norm() / contact.multiplier_bound;
+    report.kkt = kkt_residual(w, g, mu);
 
     // The integral (12) and the pointwise penetration at the Gauss points.
     std::array<Vector<double>, 4> t;

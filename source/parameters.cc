@@ -496,12 +496,16 @@ namespace bilayer
     prm.enter_subsection("Solver");
     prm.declare_entry("Method",
                       "uzawa",
-                      Patterns::Selection("uzawa|accelerated"),
+                      Patterns::Selection("uzawa|accelerated|active set"),
                       "Outer solver on the multipliers: uzawa (the paper's "
-                      "projected Uzawa iteration, paper.md section 4) or "
+                      "projected Uzawa iteration, paper.md section 4), "
                       "accelerated (the same projected step with FISTA "
                       "momentum and adaptive restart; with theta = auto its "
-                      "step is Auto theta fraction / lambda_max).");
+                      "step is Auto theta fraction / lambda_max) or active "
+                      "set (primal-dual active set / semismooth Newton on "
+                      "the dual problem, preconditioned conjugate gradients "
+                      "through the subdomain solves; stops on the KKT "
+                      "residual, see the subsection Active set).");
     prm.declare_entry("Uzawa step theta",
                       "65",
                       Patterns::Anything(),
@@ -529,12 +533,16 @@ namespace bilayer
                       "is reported as non-convergence.");
     prm.declare_entry("Stopping rule",
                       "paper",
-                      Patterns::Selection("paper|paper with norm|relative"),
-                      "paper: max ||w^k - w^(k-1)|| / ||w^k||^2 < Tolerance "
-                      "over u-, u+, v-, v+ in the energy norm, as printed; "
-                      "paper with norm: the same with ||w^k||; relative: "
-                      "relative change of the multipliers and relative "
-                      "constraint violation both < Tolerance.");
+                      Patterns::Selection("paper|paper with norm|relative|kkt"),
+                      "Stopping rule of uzawa and accelerated. paper: max "
+                      "||w^k - w^(k-1)|| / ||w^k||^2 < Tolerance over u-, "
+                      "u+, v-, v+ in the energy norm, as printed; paper with "
+                      "norm: the same with ||w^k||; relative: relative "
+                      "change of the multipliers and relative constraint "
+                      "violation both < Tolerance; kkt: relative KKT "
+                      "residual (constraint violation, negative mu_c, "
+                      "complementarity) < Tolerance, the rule of active "
+                      "set.");
     prm.declare_entry("Tolerance",
                       "1e-6",
                       Patterns::Double(0),
@@ -552,6 +560,34 @@ namespace bilayer
                       "Bound on the relative constraint violation, relative "
                       "interpenetration and complementarity of the final "
                       "solution; a run beyond it fails [-].");
+    prm.enter_subsection("Active set");
+    prm.declare_entry("Preconditioner",
+                      "dirichlet",
+                      Patterns::Selection("dirichlet|lumped|none"),
+                      "Preconditioner of the conjugate gradients on the "
+                      "dual operator: dirichlet (FETI Dirichlet: Schur "
+                      "complements of the subproblems on Sigma, one extra "
+                      "factorisation and one Dirichlet solve per subproblem "
+                      "and iteration), lumped (stiffness on Sigma, no "
+                      "solves) or none.");
+    prm.declare_entry("Inner tolerance",
+                      "1e-2",
+                      Patterns::Double(0, 1),
+                      "Relative residual reduction of the conjugate "
+                      "gradients while the active set changes [-], in "
+                      "(0, 1); once it stays the same they run to "
+                      "Solver/Tolerance.");
+    prm.declare_entry("Maximum Newton iterations",
+                      "50",
+                      Patterns::Integer(1),
+                      "Limit of the active-set (Newton) steps [-]; reaching "
+                      "it is reported as non-convergence.");
+    prm.declare_entry("Maximum inner iterations",
+                      "1000",
+                      Patterns::Integer(1),
+                      "Limit of the conjugate-gradient iterations of one "
+                      "Newton step [-].");
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -560,8 +596,10 @@ namespace bilayer
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    method = prm.get("Method") == "accelerated" ? SolverMethod::accelerated :
-                                                  SolverMethod::uzawa;
+    const std::string name = prm.get("Method");
+    method                 = name == "accelerated" ? SolverMethod::accelerated :
+                             name == "active set"  ? SolverMethod::active_set :
+                                                     SolverMethod::uzawa;
     const std::string step = prm.get("Uzawa step theta");
     auto_theta             = step == "auto";
     if (!auto_theta)
@@ -586,7 +624,8 @@ namespace bilayer
     const auto rule     = prm.get("Stopping rule");
     stopping_rule       = rule == "paper"           ? StoppingRule::paper :
                           rule == "paper with norm" ? StoppingRule::paper_norm :
-                                                      StoppingRule::relative;
+                          rule == "relative"        ? StoppingRule::relative :
+                                                      StoppingRule::kkt;
     tolerance           = prm.get_double("Tolerance");
     AssertThrow(tolerance > 0,
                 ExcMessage("Solver/Tolerance must be > 0, got " +
@@ -596,6 +635,19 @@ namespace bilayer
     AssertThrow(acceptance_tolerance > 0,
                 ExcMessage("Solver/Acceptance tolerance must be > 0, got " +
                            prm.get("Acceptance tolerance")));
+    prm.enter_subsection("Active set");
+    const std::string p = prm.get("Preconditioner");
+    preconditioner      = p == "dirichlet" ? DualPreconditioner::dirichlet :
+                          p == "lumped"    ? DualPreconditioner::lumped :
+                                             DualPreconditioner::none;
+    inner_tolerance     = prm.get_double("Inner tolerance");
+    AssertThrow(inner_tolerance > 0 && inner_tolerance < 1,
+                ExcMessage("Solver/Active set/Inner tolerance must lie in "
+                           "(0, 1), got " +
+                           prm.get("Inner tolerance")));
+    max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+    max_inner_iterations  = prm.get_integer("Maximum inner iterations");
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -675,6 +727,13 @@ namespace bilayer
     solver.parse_parameters(prm);
     output.parse_parameters(prm);
 
+    AssertThrow(solver.method != SolverMethod::active_set ||
+                  contact.sampling == JumpSampling::weighted ||
+                  contact.coupling == MultiplierCoupling::lumped,
+                ExcMessage("Solver/Method = active set needs a symmetric "
+                           "dual operator: Contact/Jump sampling = weighted, "
+                           "or Contact/Multiplier coupling = lumped (where "
+                           "both samplings agree)"));
     for (const Layer layer : {Layer::first, Layer::second})
       AssertThrow(mesh.shape == ElementShape::quadrilateral ||
                     mesh.degree(layer) <= 2,

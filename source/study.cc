@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <bilayer/active_set_solver.h>
 #include <bilayer/output.h>
 #include <bilayer/study.h>
 
@@ -144,9 +145,9 @@ namespace bilayer
           << ", P = " << record.P << ", M = " << record.M << ", " << record.dofs
           << " dofs, " << record.multipliers << " multipliers" << std::endl;
 
-    Timer             solve_timer;
-    const UzawaSolver solver(scene.solver, scene.output, pcout);
-    record.result        = solver.solve(solvers, coupling, mu, w);
+    Timer solve_timer;
+    record.result = solve_contact_problem(
+      scene.solver, scene.output, pcout, solvers, coupling, mu, w);
     record.theta         = record.result.theta;
     record.solve_seconds = solve_timer.wall_time();
 
@@ -208,8 +209,13 @@ namespace bilayer
   {
     const auto &r = record.report;
     pcout << "  " << record.result.solver << ": " << record.result.message
-          << " (" << record.result.subdomain_solves
-          << " subdomain solves, theta = " << record.theta << ")\n"
+          << " (" << record.result.subdomain_solves << " subdomain solves";
+    if (record.result.preconditioner_solves > 0)
+      pcout << " + " << record.result.preconditioner_solves
+            << " Dirichlet solves";
+    if (record.theta > 0)
+      pcout << ", theta = " << record.theta;
+    pcout << ")\n"
           << std::scientific << std::setprecision(4)
           << "  energy Pi                    " << record.energy << "\n"
           << "  constraint violation (12)    " << r.constraint_violation
@@ -221,6 +227,7 @@ namespace bilayer
           << "  smallest mu_c                " << r.min_contact_multiplier
           << "\n"
           << "  complementarity              " << r.complementarity << "\n"
+          << "  KKT residual (relative)      " << r.kkt.value() << "\n"
           << std::defaultfloat << std::setprecision(3)
           << "  wall time                    setup " << record.setup_seconds
           << " s, solve " << record.solve_seconds << " s, total "
@@ -319,6 +326,9 @@ namespace bilayer
               << json(r.result.threshold_at_solution)
               << ", \"iterations\": " << r.result.iterations
               << ", \"subdomain_solves\": " << r.result.subdomain_solves
+              << ", \"preconditioner_solves\": "
+              << r.result.preconditioner_solves
+              << ", \"linear_iterations\": " << r.result.linear_iterations
               << ", \"converged\": " << (r.result.converged ? "true" : "false")
               << ", \"diverged\": " << (r.result.diverged ? "true" : "false")
               << ", \"stopping_value\": " << json(r.result.stopping_value)
@@ -336,11 +346,17 @@ namespace bilayer
               << ", \"complementarity\": " << json(k.complementarity)
               << ", \"max_multiplier_over_bound\": "
               << json(k.max_multiplier_over_bound)
+              << ", \"kkt_residual\": " << json(k.kkt.value())
+              << ", \"kkt\": {\"primal\": " << json(k.kkt.primal)
+              << ", \"dual\": " << json(k.kkt.dual)
+              << ", \"complementarity\": " << json(k.kkt.complementarity) << "}"
               << ", \"accepted\": " << (r.accepted() ? "true" : "false")
               << ", \"wall_seconds\": {\"setup\": " << json(r.setup_seconds)
               << ", \"assembly\": " << json(r.assembly_seconds)
               << ", \"factorisation\": " << json(r.factorisation_seconds)
               << ", \"solve\": " << json(r.solve_seconds)
+              << ", \"solver_setup\": " << json(r.result.setup_seconds)
+              << ", \"iteration\": " << json(r.result.iteration_seconds)
               << ", \"total\": " << json(r.total_seconds) << "}}";
           }
         o << "\n  ]\n}\n";

@@ -197,6 +197,79 @@ namespace bilayer
   }
 
 
+  void
+  ElasticSubproblem::setup_interface_operators(const bool dirichlet)
+  {
+    if (!sigma_dofs.empty() && (dirichlet_ready || !dirichlet))
+      return;
+    Timer timer;
+    if (sigma_dofs.empty())
+      {
+        const IndexSet on_sigma = DoFTools::extract_boundary_dofs(
+          dofs, ComponentMask(), {BoundaryIds::glued, BoundaryIds::crack});
+        for (const auto i : on_sigma)
+          if (!homogeneous_constraints.is_constrained(i))
+            sigma_dofs.push_back(i);
+      }
+    if (dirichlet)
+      {
+        dirichlet_constraints.clear();
+        dirichlet_constraints.merge(homogeneous_constraints);
+        for (const auto i : sigma_dofs)
+          dirichlet_constraints.add_line(i);
+        dirichlet_constraints.close();
+        // The sparsity pattern already holds the fill of the hanging-node
+        // condensation; holding more dofs at zero adds none.
+        dirichlet_matrix.reinit(sparsity);
+        dirichlet_matrix.copy_from(stiffness);
+        dirichlet_constraints.condense(dirichlet_matrix);
+        dirichlet_factorisation.initialize(dirichlet_matrix);
+        dirichlet_ready = true;
+      }
+    interface_setup_seconds += timer.wall_time();
+  }
+
+
+  void
+  ElasticSubproblem::apply_schur_complement(const Vector<double> &x,
+                                            Vector<double>       &y) const
+  {
+    Assert(dirichlet_ready, ExcInternalError());
+    // The Sigma values of x, extended by zero ...
+    Vector<double> extension(n_dofs());
+    for (const auto i : sigma_dofs)
+      extension(i) = x(i);
+    // ... then discrete-harmonically into the interior: K_II z = -K_I. x.
+    Vector<double> interior(n_dofs());
+    stiffness.vmult(interior, extension);
+    interior *= -1.;
+    dirichlet_constraints.condense(interior);
+    dirichlet_factorisation.solve(interior);
+    dirichlet_constraints.distribute(interior);
+    extension += interior;
+    Vector<double> reaction(n_dofs());
+    stiffness.vmult(reaction, extension);
+    y.reinit(n_dofs());
+    for (const auto i : sigma_dofs)
+      y(i) = reaction(i);
+  }
+
+
+  void
+  ElasticSubproblem::apply_interface_stiffness(const Vector<double> &x,
+                                               Vector<double>       &y) const
+  {
+    Assert(!sigma_dofs.empty(), ExcInternalError());
+    Vector<double> extension(n_dofs()), reaction(n_dofs());
+    for (const auto i : sigma_dofs)
+      extension(i) = x(i);
+    stiffness.vmult(reaction, extension);
+    y.reinit(n_dofs());
+    for (const auto i : sigma_dofs)
+      y(i) = reaction(i);
+  }
+
+
   double
   ElasticSubproblem::energy_norm_squared(const Vector<double> &w) const
   {

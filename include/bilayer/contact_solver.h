@@ -39,6 +39,14 @@ namespace bilayer
     /// projection does not hold at a bound at the solution: the threshold of
     /// the final phase of the iteration (0 when not estimated).
     double threshold_at_solution = 0;
+    /// Solves with the Dirichlet subproblems of a preconditioner (counted
+    /// apart from subdomain_solves).
+    unsigned long preconditioner_solves = 0;
+    /// Conjugate-gradient iterations of the active-set solver, in all.
+    unsigned int linear_iterations = 0;
+    /// Wall time of the solver's own set-up (spectrum estimates,
+    /// preconditioner factorisations) and of its iterations [s].
+    double setup_seconds = 0, iteration_seconds = 0;
   };
 
   /// Largest eigenvalue of the dual operator and the work spent on it.
@@ -76,6 +84,15 @@ namespace bilayer
                     const Interface           &interface,
                     const BlockVector<double> &multipliers,
                     Solutions                 &solutions);
+
+  /// The four solves with the multiplier loads of @p multipliers only (no
+  /// tractions, zero prescribed displacement): the linear part of the map
+  /// from multipliers to solutions.
+  void
+  solve_homogeneous_subproblems(const Subproblems         &subproblems,
+                                const Interface           &interface,
+                                const BlockVector<double> &multipliers,
+                                Solutions                 &solutions);
 
   /**
    * The Uzawa algorithm of paper.md §4:

@@ -10,6 +10,7 @@
 #include <bilayer/parameters.h>
 #include <bilayer/subproblem.h>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <ostream>
@@ -21,6 +22,29 @@ namespace bilayer
 
   /// The four subproblem solutions, indexed by Interface::index().
   using Solutions = std::array<Vector<double>, 4>;
+
+  /**
+   * The relative residual of the KKT conditions of the discrete dual
+   * problem at multipliers mu with jumps g (stationarity of the primal
+   * variables holds exactly: the subproblems are solved directly). All
+   * three parts are scale invariant:
+   *  - primal: largest violation of the discrete constraints (|g| where a
+   *    jump must vanish, max(g, 0) = penetration at crack nodes) divided by
+   *    the displacement scale;
+   *  - dual: largest max(-mu_c, 0) divided by max |mu|;
+   *  - complementarity: largest |mu_c g| at crack nodes divided by
+   *    max |mu| times the displacement scale.
+   */
+  struct KKTResidual
+  {
+    double primal = 0, dual = 0, complementarity = 0;
+
+    double
+    value() const
+    {
+      return std::max(primal, std::max(dual, complementarity));
+    }
+  };
 
   /**
    * Residuals of a computed solution (paper.md §3 and the KKT conditions of
@@ -45,6 +69,8 @@ namespace bilayer
     double complementarity = 0;
     /// Largest |multiplier| / p [-].
     double max_multiplier_over_bound = 0;
+    /// The relative KKT residual [-].
+    KKTResidual kkt;
   };
 
   /**
@@ -146,6 +172,43 @@ namespace bilayer
     /// Largest violation of the discrete constraints by the jumps g.
     double
     discrete_violation(const BlockVector<double> &g) const;
+
+    /// The relative KKT residual of multipliers @p mu with solutions @p w
+    /// and their jumps @p g.
+    KKTResidual
+    kkt_residual(const Solutions           &w,
+                 const BlockVector<double> &g,
+                 const BlockVector<double> &mu) const;
+
+    /// x_i <- D_i x_i, or x_i / D_i with @p inverse.
+    void
+    scale_by_weights(BlockVector<double> &x, const bool inverse = false) const;
+
+    /// Lower and upper bounds of the multipliers (equal where a component
+    /// carries no multiplier).
+    const BlockVector<double> &
+    lower_bounds() const
+    {
+      return lower;
+    }
+    const BlockVector<double> &
+    upper_bounds() const
+    {
+      return upper;
+    }
+
+    /**
+     * The Gram matrix G = B B^T of the signed coupling B (the map from the
+     * four subproblems' dofs to the multiplier space whose transpose is
+     * -apply(); B w = D g for weighted jumps), restricted to the components
+     * i with mask(i) != 0: the other rows and columns are those of the
+     * identity. Global index of component i of block b: b * block size + i.
+     * Scales the FETI-type preconditioners of the dual problem.
+     */
+    void
+    coupling_gram(const BlockVector<double> &mask,
+                  SparsityPattern           &pattern,
+                  SparseMatrix<double>      &gram) const;
 
     /// Largest |trace value| at the nodes of the four subproblems.
     double

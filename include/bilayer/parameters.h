@@ -90,12 +90,27 @@ namespace bilayer
    * - `paper_norm`: the same with ||w^k|| in the denominator.
    * - `relative`: the relative change of the multipliers and the relative
    *   violation of the discrete constraints both below tol.
+   * - `kkt`: the relative KKT residual (KKTResidual in interface.h) below
+   *   tol; the active-set solver always stops on it.
    */
   enum class StoppingRule
   {
     paper,
     paper_norm,
-    relative
+    relative,
+    kkt
+  };
+
+  /// Preconditioners of the linear dual solves of the active-set solver.
+  enum class DualPreconditioner
+  {
+    /// None: conjugate gradients on the dual operator itself.
+    none,
+    /// G^-1 B K_{Sigma Sigma} B^T G^-1 (no solves).
+    lumped,
+    /// G^-1 B S B^T G^-1, S the Schur complements (one Dirichlet solve per
+    /// subproblem).
+    dirichlet
   };
 
   enum class TerminalOutput
@@ -239,7 +254,10 @@ namespace bilayer
     uzawa,
     /// The same projected gradient step with Nesterov/FISTA momentum and
     /// adaptive (gradient) restart.
-    accelerated
+    accelerated,
+    /// Primal-dual active set (semismooth Newton) on the dual problem with
+    /// preconditioned conjugate gradients through the subdomain solves.
+    active_set
   };
 
   struct SolverParameters
@@ -259,6 +277,12 @@ namespace bilayer
     double divergence_factor = 1e3;
     /// Tolerance of the acceptance checks of the final solution.
     double acceptance_tolerance = 1e-6;
+    /// Solver/Active set: preconditioner, relative tolerance of the linear
+    /// solves while the active set changes, limit of their iterations.
+    DualPreconditioner preconditioner        = DualPreconditioner::dirichlet;
+    double             inner_tolerance       = 1e-2;
+    unsigned int       max_newton_iterations = 50;
+    unsigned int       max_inner_iterations  = 1000;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -75,6 +75,33 @@ namespace bilayer
     double
     energy(const Vector<double> &w) const;
 
+    /**
+     * Prepare the interface operators of the FETI-type preconditioners of
+     * the dual problem: the dofs on Sigma (not clamped) and, with
+     * @p dirichlet, the Cholesky factorisation of the stiffness matrix with
+     * the Sigma dofs held at zero as well (the "Dirichlet" subproblem, as
+     * large as the subproblem itself). Idempotent.
+     */
+    void
+    setup_interface_operators(const bool dirichlet);
+
+    /**
+     * y = S x: the Schur complement of the stiffness matrix on the Sigma
+     * dofs (Steklov-Poincare operator: the reaction forces on Sigma of the
+     * displacement field that takes the Sigma values of @p x, is zero on
+     * Gamma_D and is discrete-harmonic inside). One Dirichlet solve; needs
+     * setup_interface_operators(true). @p y is zero off Sigma.
+     */
+    void
+    apply_schur_complement(const Vector<double> &x, Vector<double> &y) const;
+
+    /// y = K_{Sigma Sigma} x (no solve); zero off Sigma.
+    void
+    apply_interface_stiffness(const Vector<double> &x, Vector<double> &y) const;
+
+    /// Wall time of setup_interface_operators() [s].
+    double interface_setup_seconds = 0;
+
     /// "u-", "u+", "v-" or "v+".
     std::string
     name() const;
@@ -133,6 +160,12 @@ namespace bilayer
     Vector<double>               system_rhs;
     Vector<double>               traction_load;
     SparseCholesky               factorisation;
+    /// Sigma dofs that are not constrained, and the Dirichlet problem.
+    std::vector<types::global_dof_index> sigma_dofs;
+    AffineConstraints<double>            dirichlet_constraints;
+    SparseMatrix<double>                 dirichlet_matrix;
+    SparseCholesky                       dirichlet_factorisation;
+    bool                                 dirichlet_ready = false;
   };
 } // namespace bilayer
 

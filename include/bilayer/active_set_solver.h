@@ -1,0 +1,95 @@
+#ifndef bilayer_active_set_solver_h
+#define bilayer_active_set_solver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/lac/block_vector.h>
+
+#include <bilayer/contact_solver.h>
+#include <bilayer/interface.h>
+#include <bilayer/parameters.h>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  /**
+   * Primal-dual active set method (a semismooth Newton method) on the dual
+   * problem of paper.md §3, with FETI-type preconditioned conjugate
+   * gradients through the subdomain solves.
+   *
+   * <h3>The dual problem</h3>
+   * With the solution map w(mu) = K^{-1}(f - B^T mu) of the four factorised
+   * subproblems (B the signed coupling, B w = D g with g the weighted jumps,
+   * Interface::coupling_gram()), the multipliers minimise
+   *   q(mu) = 1/2 mu^T F mu - mu^T d,   F = B K^{-1} B^T,  grad q = -D g(mu),
+   * over the box lower <= mu <= upper (0 <= mu_c <= p at crack nodes,
+   * |mu| <= p for the gluing multipliers). F is never formed: F x costs four
+   * homogeneous subdomain solves.
+   *
+   * <h3>Newton step</h3>
+   * At an iterate mu (in the box) with jumps g, a component at its lower
+   * bound stays active if g <= 0 (the constraint pushes against the bound:
+   * the crack is open there), one at its upper bound if g >= 0; all others
+   * are inactive (the set I). This is the active-set prediction of the
+   * semismooth Newton method for mu = P(mu + c g) in the limit of a small c.
+   * The step solves the dual problem with the active components held:
+   *   F_II delta_I = (D g)_I,   delta_A = 0,
+   * so that the jumps vanish on I, and mu <- P(mu + delta). The iteration
+   * stops when the relative KKT residual (Interface::kkt_residual()) of an
+   * iterate is below Solver/Tolerance; it is evaluated after a full solve
+   * at every iterate, so the reported solution and its residuals belong
+   * together.
+   *
+   * <h3>Linear solves</h3>
+   * Conjugate gradients on F_II, preconditioned by (Solver/Active set/
+   * Preconditioner)
+   *  - dirichlet: M^{-1} = G^{-1} B S B^T G^{-1}, S the Schur complements of
+   *    the subproblems on Sigma (ElasticSubproblem::apply_schur_complement:
+   *    one Dirichlet solve each) and G = B B^T restricted to I: the FETI
+   *    Dirichlet preconditioner with the scaling (B B^T)^{-1} B, which
+   *    bounds the condition number by C (1 + log(H/h))^2;
+   *  - lumped: the same with K_{Sigma Sigma} for S (no solves);
+   *  - none: D^{-1} (conjugate gradients in the metric of the Uzawa step).
+   * While the active set still changes, the conjugate gradients stop at a
+   * relative reduction Solver/Active set/Inner tolerance of the largest
+   * jump on I (an inexact Newton step); once it stays the same, they run
+   * until the largest jump is below Solver/Tolerance / 10 times the
+   * displacement scale.
+   *
+   * Work: 4 subdomain solves per Newton step (the full solve at the iterate)
+   * and per conjugate-gradient iteration; the Dirichlet preconditioner adds
+   * 4 Dirichlet solves per application (counted as preconditioner_solves).
+   */
+  class ActiveSetSolver
+  {
+  public:
+    ActiveSetSolver(const SolverParameters   &parameters,
+                    const OutputParameters   &output,
+                    const ConditionalOStream &pcout);
+
+    /// Run from @p multipliers (projected onto the box first); on return
+    /// they and @p solutions hold the last iterate.
+    SolverResult
+    solve(const Subproblems   &subproblems,
+          const Interface     &interface,
+          BlockVector<double> &multipliers,
+          Solutions           &solutions) const;
+
+  private:
+    const SolverParameters    parameters;
+    const OutputParameters    output;
+    const ConditionalOStream &pcout;
+  };
+
+  /// Run the outer solver that @p parameters select.
+  SolverResult
+  solve_contact_problem(const SolverParameters   &parameters,
+                        const OutputParameters   &output,
+                        const ConditionalOStream &pcout,
+                        const Subproblems        &subproblems,
+                        const Interface          &interface,
+                        BlockVector<double>      &multipliers,
+                        Solutions                &solutions);
+} // namespace bilayer
+
+#endif

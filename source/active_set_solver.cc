@@ -1,0 +1,281 @@
+#include <deal.II/base/thread_management.h>
+#include <deal.II/base/timer.h>
+
+#include <bilayer/active_set_solver.h>
+#include <bilayer/cholesky.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace bilayer
+{
+  namespace
+  {
+    /// Largest |x_i| / D_i (the largest jump of a Euclidean residual).
+    double
+    largest_jump(const Interface &interface, const BlockVector<double> &x)
+    {
+      BlockVector<double> jump(x);
+      interface.scale_by_weights(jump, true);
+      return jump.linfty_norm();
+    }
+
+
+    /// The preconditioner of the conjugate gradients on F_II.
+    class DualPreconditionerOperator
+    {
+    public:
+      DualPreconditionerOperator(const DualPreconditioner type,
+                                 const Subproblems       &subproblems,
+                                 const Interface         &interface)
+        : type(type)
+        , subproblems(subproblems)
+        , interface(interface)
+      {}
+
+      /// Restrict to the components with mask != 0 (rebuilds G).
+      void
+      reinit(const BlockVector<double> &new_mask)
+      {
+        mask = new_mask;
+        if (type == DualPreconditioner::none)
+          return;
+        interface.coupling_gram(mask, pattern, gram);
+        gram_factorisation.initialize(gram);
+      }
+
+      /// z = M^{-1} r; returns the Dirichlet solves spent.
+      unsigned int
+      vmult(BlockVector<double> &z, const BlockVector<double> &r) const
+      {
+        z = r;
+        if (type == DualPreconditioner::none)
+          {
+            interface.scale_by_weights(z, true);
+            z.scale(mask);
+            return 0;
+          }
+        solve_gram(z);
+        Solutions loads, reactions;
+        interface.apply(z, loads); // -B^T G^{-1} r
+        Threads::TaskGroup<void> tasks;
+        for (unsigned int s = 0; s < 4; ++s)
+          tasks += Threads::new_task([&, s]() {
+            if (type == DualPreconditioner::dirichlet)
+              subproblems[s]->apply_schur_complement(loads[s], reactions[s]);
+            else
+              subproblems[s]->apply_interface_stiffness(loads[s], reactions[s]);
+          });
+        tasks.join_all();
+        interface.jumps(reactions, z);
+        interface.scale_by_weights(z); // B S (-B^T G^{-1} r)
+        z *= -1.;
+        z.scale(mask);
+        solve_gram(z);
+        return type == DualPreconditioner::dirichlet ? 4 : 0;
+      }
+
+    private:
+      void
+      solve_gram(BlockVector<double> &x) const
+      {
+        Vector<double> flat(x.size());
+        for (unsigned int i = 0; i < x.size(); ++i)
+          flat(i) = x(i);
+        gram_factorisation.solve(flat);
+        for (unsigned int i = 0; i < x.size(); ++i)
+          x(i) = flat(i);
+      }
+
+      const DualPreconditioner type;
+      const Subproblems       &subproblems;
+      const Interface         &interface;
+      BlockVector<double>      mask;
+      SparsityPattern          pattern;
+      SparseMatrix<double>     gram;
+      SparseCholesky           gram_factorisation;
+    };
+  } // namespace
+
+
+  ActiveSetSolver::ActiveSetSolver(const SolverParameters   &parameters,
+                                   const OutputParameters   &output,
+                                   const ConditionalOStream &pcout)
+    : parameters(parameters)
+    , output(output)
+    , pcout(pcout)
+  {}
+
+
+  SolverResult
+  ActiveSetSolver::solve(const Subproblems   &subproblems,
+                         const Interface     &interface,
+                         BlockVector<double> &mu,
+                         Solutions           &w) const
+  {
+    SolverResult result;
+    result.solver = "active set";
+    Timer timer;
+    if (parameters.preconditioner != DualPreconditioner::none)
+      {
+        Threads::TaskGroup<void> tasks;
+        for (unsigned int s = 0; s < 4; ++s)
+          tasks += Threads::new_task([&, s]() {
+            subproblems[s]->setup_interface_operators(
+              parameters.preconditioner == DualPreconditioner::dirichlet);
+          });
+        tasks.join_all();
+      }
+    result.setup_seconds = timer.wall_time();
+    timer.restart();
+    const auto finish = [&](const std::string &message) {
+      result.message           = message;
+      result.iteration_seconds = timer.wall_time();
+      return result;
+    };
+
+    const BlockVector<double> &lower = interface.lower_bounds();
+    const BlockVector<double> &upper = interface.upper_bounds();
+    DualPreconditionerOperator preconditioner(parameters.preconditioner,
+                                              subproblems,
+                                              interface);
+    BlockVector<double> g, mask(lower), previous_mask(lower), r, z, p, q, delta;
+    Solutions           homogeneous;
+    unsigned int        inner_iterations = 0;
+    interface.project(mu);
+
+    for (unsigned int k = 0;; ++k)
+      {
+        solve_subproblems(subproblems, interface, mu, w);
+        result.subdomain_solves += 4;
+        result.iterations = k;
+        interface.jumps(w, g);
+        const KKTResidual kkt = interface.kkt_residual(w, g, mu);
+        result.stopping_value = kkt.value();
+
+        // The active set at mu: components held at a bound.
+        previous_mask.swap(mask);
+        unsigned int n_active = 0, n_changed = 0;
+        for (unsigned int i = 0; i < mu.size(); ++i)
+          {
+            const bool held = !(lower(i) < upper(i)) ||
+                              (mu(i) <= lower(i) && g(i) <= 0) ||
+                              (mu(i) >= upper(i) && g(i) >= 0);
+            mask(i) = held ? 0. : 1.;
+            if (held && lower(i) < upper(i))
+              ++n_active;
+            n_changed += (mask(i) != previous_mask(i));
+          }
+        const bool settled = k > 0 && n_changed == 0;
+
+        if (output.progress_interval > 0)
+          pcout << "    Newton step " << std::setw(3) << k << "  KKT residual "
+                << std::scientific << std::setprecision(3) << kkt.value()
+                << " (violation " << kkt.primal << ", mu_c < 0 " << kkt.dual
+                << ", complementarity " << kkt.complementarity << ")"
+                << std::defaultfloat << "  active " << n_active << ", changed "
+                << n_changed << ", CG iterations " << inner_iterations
+                << std::endl;
+
+        if (!std::isfinite(kkt.value()))
+          {
+            result.diverged = true;
+            return finish("diverged: the iterates are no longer finite");
+          }
+        if (kkt.value() <= parameters.tolerance)
+          {
+            result.converged = true;
+            std::ostringstream msg;
+            msg << "KKT residual " << std::setprecision(3) << kkt.value()
+                << " <= " << parameters.tolerance << " after " << k
+                << " Newton steps and " << result.linear_iterations
+                << " conjugate-gradient iterations";
+            return finish(msg.str());
+          }
+        if (k >= parameters.max_newton_iterations)
+          {
+            std::ostringstream msg;
+            msg << "Newton step limit " << parameters.max_newton_iterations
+                << " reached (Solver/Active set/Maximum Newton iterations) "
+                   "with KKT residual "
+                << kkt.value() << " > Solver/Tolerance "
+                << parameters.tolerance;
+            return finish(msg.str());
+          }
+
+        // Newton step: F_II delta_I = (D g)_I by preconditioned conjugate
+        // gradients from delta = 0.
+        if (k == 0 || n_changed > 0)
+          preconditioner.reinit(mask);
+        r = g;
+        interface.scale_by_weights(r);
+        r.scale(mask);
+        delta.reinit(r);
+        const double scale = interface.displacement_scale(w);
+        const double start = largest_jump(interface, r);
+        const double target =
+          std::max(settled ? 0. : parameters.inner_tolerance * start,
+                   0.1 * parameters.tolerance * scale);
+        result.preconditioner_solves += preconditioner.vmult(z, r);
+        p                = z;
+        double rz        = r * z;
+        inner_iterations = 0;
+        for (double jump = start; jump > target;)
+          {
+            if (inner_iterations >= parameters.max_inner_iterations)
+              {
+                std::ostringstream msg;
+                msg << "conjugate gradients of Newton step " << k
+                    << " reached Solver/Active set/Maximum inner iterations = "
+                    << parameters.max_inner_iterations << " with largest jump "
+                    << jump << " > " << target;
+                return finish(msg.str());
+              }
+            solve_homogeneous_subproblems(subproblems,
+                                          interface,
+                                          p,
+                                          homogeneous);
+            result.subdomain_solves += 4;
+            interface.jumps(homogeneous, q);
+            interface.scale_by_weights(q);
+            q *= -1.; // F p
+            q.scale(mask);
+            const double pq = p * q;
+            if (!(pq > 0))
+              break; // F_II is exhausted (semidefinite directions)
+            const double alpha = rz / pq;
+            delta.add(alpha, p);
+            r.add(-alpha, q);
+            ++inner_iterations;
+            jump = largest_jump(interface, r);
+            if (jump <= target)
+              break;
+            result.preconditioner_solves += preconditioner.vmult(z, r);
+            const double rz_new = r * z;
+            p.sadd(rz_new / rz, 1., z);
+            rz = rz_new;
+          }
+        result.linear_iterations += inner_iterations;
+        mu += delta;
+        interface.project(mu);
+      }
+  }
+
+
+  SolverResult
+  solve_contact_problem(const SolverParameters   &parameters,
+                        const OutputParameters   &output,
+                        const ConditionalOStream &pcout,
+                        const Subproblems        &subproblems,
+                        const Interface          &interface,
+                        BlockVector<double>      &multipliers,
+                        Solutions                &solutions)
+  {
+    if (parameters.method == SolverMethod::active_set)
+      return ActiveSetSolver(parameters, output, pcout)
+        .solve(subproblems, interface, multipliers, solutions);
+    return UzawaSolver(parameters, output, pcout)
+      .solve(subproblems, interface, multipliers, solutions);
+  }
+} // namespace bilayer
