@@ -199,6 +199,8 @@ namespace bilayer
         record.checks.emplace_back("complementarity <= " + t.str(),
                                    r.complementarity <= tol);
       }
+    record.checks.emplace_back("relative KKT residual <= " + t.str(),
+                               r.kkt.value() <= tol);
     record.checks.emplace_back("multipliers below the bound p",
                                r.max_multiplier_over_bound < 1.);
   }
