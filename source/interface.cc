@@ -16,6 +16,12 @@ namespace bilayer
   {
     constexpr unsigned int u_minus = 0, u_plus = 1, v_minus = 2, v_plus = 3;
 
+    /// The subproblems that each multiplier block couples: its jump is
+    /// (trace of the first) - (trace of the second).
+    constexpr unsigned int block_pair[3][2] = {{u_minus, u_plus},
+                                               {u_minus, v_minus},
+                                               {u_plus, v_plus}};
+
     /// Sorted union of two sorted break point lists, merging near-equal
     /// points.
     std::vector<double>
@@ -93,84 +99,6 @@ namespace bilayer
     const double length = geometry.x_max - geometry.x_min;
     const double tol    = 1e-10 * length;
 
-    // The multiplier mesh: the trace of the Omega- mesh.
-    degree        = subs[u_minus]->fe().degree;
-    fe_multiplier = std::make_unique<FE_Q<1>>(QGaussLobatto<1>(degree + 1));
-    breakpoints.clear();
-    for (const auto &face : faces[0])
-      breakpoints.push_back(face.x0);
-    breakpoints.push_back(faces[0].back().x1);
-    const unsigned int n_segments = breakpoints.size() - 1;
-    const unsigned int n          = n_segments * degree + 1;
-
-    node_x.assign(n, 0.);
-    node_weight.assign(n, 0.);
-    const QGaussLobatto<1> lobatto(degree + 1);
-    for (unsigned int e = 0; e < n_segments; ++e)
-      {
-        const double h = breakpoints[e + 1] - breakpoints[e];
-        for (unsigned int i = 0; i <= degree; ++i)
-          {
-            const unsigned int a = multiplier_node(e, i);
-            node_x[a]            = breakpoints[e] +
-                        fe_multiplier->get_unit_support_points()[i][0] * h;
-            for (unsigned int q = 0; q < lobatto.size(); ++q)
-              node_weight[a] +=
-                fe_multiplier->shape_value(i, lobatto.point(q)) *
-                lobatto.weight(q) * h;
-          }
-      }
-
-    // Multiplier sets (paper.md §3) as bounds per component.
-    const double p = contact.multiplier_bound;
-    on_crack.assign(n, false);
-    lower.reinit(std::vector<types::global_dof_index>(3, 2 * n));
-    upper.reinit(lower);
-    for (unsigned int a = 0; a < n; ++a)
-      {
-        const double x = node_x[a];
-        on_crack[a] = geometry.has_crack() && x > geometry.crack_start + tol &&
-                      x < geometry.crack_end - tol;
-        const bool on_gamma_d =
-          (std::abs(x - geometry.x_min) < tol &&
-           geometry.clamped[static_cast<unsigned int>(Side::left)]) ||
-          (std::abs(x - geometry.x_max) < tol &&
-           geometry.clamped[static_cast<unsigned int>(Side::right)]);
-        if (on_gamma_d)
-          continue;
-        for (unsigned int b = 0; b < 3; ++b)
-          for (unsigned int c = 0; c < 2; ++c)
-            {
-              lower.block(b)(2 * a + c) = -p;
-              upper.block(b)(2 * a + c) = p;
-            }
-        if (on_crack[a])
-          {
-            lower.block(0)(2 * a)     = 0;
-            upper.block(0)(2 * a)     = 0;
-            lower.block(0)(2 * a + 1) = 0;
-            upper.block(0)(2 * a + 1) = contact.non_penetration ? p : 0;
-          }
-      }
-
-    // Coupling (lumped or consistent), evaluation at the nodes, and the
-    // Gauss points of the common refinement of all three trace meshes.
-    std::vector<std::tuple<unsigned int, double, double>> nodal;
-    for (unsigned int a = 0; a < n; ++a)
-      nodal.emplace_back(a, node_x[a], 1.0);
-
-    unsigned int max_degree = degree;
-    for (const auto *s : subs)
-      max_degree = std::max(max_degree, s->fe().degree);
-    const QGauss<1> gauss(max_degree + 2);
-
-    const auto gauss_points = [&](const std::vector<double> &b,
-                                  const auto                &add) {
-      for (unsigned int k = 0; k + 1 < b.size(); ++k)
-        for (unsigned int q = 0; q < gauss.size(); ++q)
-          add(b[k] + gauss.point(q)[0] * (b[k + 1] - b[k]),
-              gauss.weight(q) * (b[k + 1] - b[k]));
-    };
     const auto face_breakpoints = [&](const unsigned int sd) {
       std::vector<double> b;
       for (const auto &face : faces[sd])
@@ -178,36 +106,135 @@ namespace bilayer
       b.push_back(faces[sd].back().x1);
       return b;
     };
+    const std::array<std::vector<double>, 2> traces = {face_breakpoints(0),
+                                                       face_breakpoints(1)};
+
+    // The multiplier meshes: the union of the traces for mu_1, each side's
+    // trace for mu- and mu+.
+    degree        = subs[u_minus]->fe().degree;
+    fe_multiplier = std::make_unique<FE_Q<1>>(QGaussLobatto<1>(degree + 1));
+    meshes[0].breakpoints = merge_breakpoints(traces[0], traces[1], tol);
+    meshes[1].breakpoints = traces[0];
+    meshes[2].breakpoints = traces[1];
+    const QGaussLobatto<1> lobatto(degree + 1);
+    for (auto &mesh : meshes)
+      {
+        const unsigned int n_segments = mesh.breakpoints.size() - 1;
+        const unsigned int n          = n_segments * degree + 1;
+        mesh.node_x.assign(n, 0.);
+        mesh.node_weight.assign(n, 0.);
+        for (unsigned int e = 0; e < n_segments; ++e)
+          {
+            const double h = mesh.breakpoints[e + 1] - mesh.breakpoints[e];
+            for (unsigned int i = 0; i <= degree; ++i)
+              {
+                const unsigned int a = multiplier_node(e, i);
+                mesh.node_x[a] =
+                  mesh.breakpoints[e] +
+                  fe_multiplier->get_unit_support_points()[i][0] * h;
+                for (unsigned int q = 0; q < lobatto.size(); ++q)
+                  mesh.node_weight[a] +=
+                    fe_multiplier->shape_value(i, lobatto.point(q)) *
+                    lobatto.weight(q) * h;
+              }
+          }
+      }
+
+    // Multiplier sets (paper.md §3) as bounds per component.
+    const double                         p = contact.multiplier_bound;
+    std::vector<types::global_dof_index> sizes;
+    for (const auto &mesh : meshes)
+      sizes.push_back(2 * mesh.node_x.size());
+    lower.reinit(sizes);
+    upper.reinit(sizes);
+    on_crack.assign(n_nodes(), false);
+    for (unsigned int b = 0; b < 3; ++b)
+      for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
+        {
+          const double x     = meshes[b].node_x[a];
+          const bool   crack = geometry.has_crack() &&
+                             x > geometry.crack_start + tol &&
+                             x < geometry.crack_end - tol;
+          if (b == 0)
+            on_crack[a] = crack;
+          const bool on_gamma_d =
+            (std::abs(x - geometry.x_min) < tol &&
+             geometry.clamped[static_cast<unsigned int>(Side::left)]) ||
+            (std::abs(x - geometry.x_max) < tol &&
+             geometry.clamped[static_cast<unsigned int>(Side::right)]);
+          if (on_gamma_d)
+            continue;
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              lower.block(b)(2 * a + c) = -p;
+              upper.block(b)(2 * a + c) = p;
+            }
+          if (b == 0 && crack)
+            {
+              lower.block(0)(2 * a)     = 0;
+              upper.block(0)(2 * a)     = 0;
+              lower.block(0)(2 * a + 1) = 0;
+              upper.block(0)(2 * a + 1) = contact.non_penetration ? p : 0;
+            }
+        }
+
+    // Coupling (lumped or consistent) and evaluation at the nodes of each
+    // block, traces at the nodes of block 0, and the Gauss points of the
+    // common refinement of all traces (= the union mesh of block 0).
+    unsigned int max_degree = degree;
+    for (const auto *sub : subs)
+      max_degree = std::max(max_degree, sub->fe().degree);
+    const QGauss<1> gauss(max_degree + 2);
+    const auto      gauss_points = [&](const std::vector<double> &b,
+                                  const auto                &add) {
+      for (unsigned int k = 0; k + 1 < b.size(); ++k)
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+          add(b[k] + gauss.point(q)[0] * (b[k + 1] - b[k]),
+              gauss.weight(q) * (b[k + 1] - b[k]));
+    };
+    const auto nodal = [&](const unsigned int b) {
+      std::vector<std::tuple<unsigned int, double, double>> points;
+      for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
+        points.emplace_back(a, meshes[b].node_x[a], 1.0);
+      return points;
+    };
 
     std::vector<double> values;
-    for (unsigned int s = 0; s < 4; ++s)
+    for (unsigned int b = 0; b < 3; ++b)
       {
-        std::vector<std::tuple<unsigned int, double, double>> points;
-        if (contact.coupling == MultiplierCoupling::lumped)
-          for (unsigned int a = 0; a < n; ++a)
-            points.emplace_back(a, node_x[a], node_weight[a]);
-        else
-          gauss_points(
-            merge_breakpoints(breakpoints, face_breakpoints(s % 2), tol),
-            [&](const double x, const double w) {
-              const unsigned int e = multiplier_shape_values(x, values);
-              for (unsigned int i = 0; i <= degree; ++i)
-                points.emplace_back(multiplier_node(e, i), x, w * values[i]);
-            });
-        build_point_matrix(s, points, n, coupling[s]);
-        build_point_matrix(s, nodal, n, evaluation[s]);
+        const unsigned int n = meshes[b].node_x.size();
+        for (unsigned int j = 0; j < 2; ++j)
+          {
+            const unsigned int s = block_pair[b][j];
+            std::vector<std::tuple<unsigned int, double, double>> points;
+            if (contact.coupling == MultiplierCoupling::lumped)
+              for (unsigned int a = 0; a < n; ++a)
+                points.emplace_back(a,
+                                    meshes[b].node_x[a],
+                                    meshes[b].node_weight[a]);
+            else
+              gauss_points(
+                merge_breakpoints(meshes[b].breakpoints, traces[s % 2], tol),
+                [&](const double x, const double w) {
+                  const unsigned int e = multiplier_shape_values(b, x, values);
+                  for (unsigned int i = 0; i <= degree; ++i)
+                    points.emplace_back(multiplier_node(e, i),
+                                        x,
+                                        w * values[i]);
+                });
+            build_point_matrix(s, points, n, coupling[b][j]);
+            build_point_matrix(s, nodal(b), n, evaluation[b][j]);
+          }
       }
+    for (unsigned int s = 0; s < 4; ++s)
+      build_point_matrix(s, nodal(0), n_nodes(), node_traces[s]);
 
     gauss_x.clear();
     gauss_weight.clear();
-    gauss_points(merge_breakpoints(
-                   merge_breakpoints(breakpoints, face_breakpoints(0), tol),
-                   face_breakpoints(1),
-                   tol),
-                 [&](const double x, const double w) {
-                   gauss_x.push_back(x);
-                   gauss_weight.push_back(w);
-                 });
+    gauss_points(meshes[0].breakpoints, [&](const double x, const double w) {
+      gauss_x.push_back(x);
+      gauss_weight.push_back(w);
+    });
     std::vector<std::tuple<unsigned int, double, double>> at_gauss;
     for (unsigned int q = 0; q < gauss_x.size(); ++q)
       at_gauss.emplace_back(q, gauss_x[q], 1.0);
@@ -216,15 +243,57 @@ namespace bilayer
   }
 
 
+  Interface::MultiplierFunctions
+  Interface::functions(const BlockVector<double> &mu) const
+  {
+    MultiplierFunctions f;
+    f.degree = degree;
+    for (unsigned int b = 0; b < 3; ++b)
+      f.breakpoints[b] = meshes[b].breakpoints;
+    f.values = mu;
+    return f;
+  }
+
+
+  void
+  Interface::interpolate(const MultiplierFunctions &old,
+                         BlockVector<double>       &mu) const
+  {
+    initialize(mu);
+    if (old.degree != degree || old.values.n_blocks() != 3)
+      return;
+    const FE_Q<1> fe_old(QGaussLobatto<1>(old.degree + 1));
+    for (unsigned int b = 0; b < 3; ++b)
+      {
+        const auto &bp = old.breakpoints[b];
+        for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
+          {
+            const double x  = meshes[b].node_x[a];
+            const auto   it = std::upper_bound(bp.begin() + 1, bp.end() - 1, x);
+            const unsigned int e = (it - bp.begin()) - 1;
+            const double       t = (x - bp[e]) / (bp[e + 1] - bp[e]);
+            for (unsigned int i = 0; i <= degree; ++i)
+              {
+                const double v = fe_old.shape_value(i, Point<1>(t));
+                for (unsigned int c = 0; c < 2; ++c)
+                  mu.block(b)(2 * a + c) +=
+                    v * old.values.block(b)(2 * multiplier_node(e, i) + c);
+              }
+          }
+      }
+    project(mu);
+  }
+
+
   unsigned int
-  Interface::multiplier_shape_values(const double         x,
+  Interface::multiplier_shape_values(const unsigned int   b,
+                                     const double         x,
                                      std::vector<double> &values) const
   {
-    const auto it =
-      std::upper_bound(breakpoints.begin() + 1, breakpoints.end() - 1, x);
-    const unsigned int e = (it - breakpoints.begin()) - 1;
-    const double       t =
-      (x - breakpoints[e]) / (breakpoints[e + 1] - breakpoints[e]);
+    const auto        &bp = meshes[b].breakpoints;
+    const auto         it = std::upper_bound(bp.begin() + 1, bp.end() - 1, x);
+    const unsigned int e  = (it - bp.begin()) - 1;
+    const double       t  = (x - bp[e]) / (bp[e + 1] - bp[e]);
     values.resize(degree + 1);
     for (unsigned int i = 0; i <= degree; ++i)
       values[i] = fe_multiplier->shape_value(i, Point<1>(t));
@@ -304,21 +373,17 @@ namespace bilayer
   void
   Interface::apply(const BlockVector<double> &mu, Solutions &loads) const
   {
-    Vector<double> combined(mu.block(0));
-    combined += mu.block(1);
-    loads[u_minus].reinit(subproblems[u_minus]->n_dofs());
-    coupling[u_minus].matrix.Tvmult(loads[u_minus], combined);
-    loads[u_minus] *= -1.;
-
-    combined = mu.block(0);
-    combined -= mu.block(2);
-    loads[u_plus].reinit(subproblems[u_plus]->n_dofs());
-    coupling[u_plus].matrix.Tvmult(loads[u_plus], combined);
-
-    loads[v_minus].reinit(subproblems[v_minus]->n_dofs());
-    coupling[v_minus].matrix.Tvmult(loads[v_minus], mu.block(1));
-    loads[v_plus].reinit(subproblems[v_plus]->n_dofs());
-    coupling[v_plus].matrix.Tvmult(loads[v_plus], mu.block(2));
+    for (unsigned int s = 0; s < 4; ++s)
+      loads[s].reinit(subproblems[s]->n_dofs());
+    Vector<double> term;
+    for (unsigned int b = 0; b < 3; ++b)
+      for (unsigned int j = 0; j < 2; ++j)
+        {
+          const unsigned int s = block_pair[b][j];
+          term.reinit(subproblems[s]->n_dofs());
+          coupling[b][j].matrix.Tvmult(term, mu.block(b));
+          loads[s].add(j == 0 ? -1. : 1., term);
+        }
   }
 
 
@@ -328,12 +393,12 @@ namespace bilayer
                         const unsigned int    block,
                         BlockVector<double>  &g) const
   {
-    const bool weighted = contact.sampling == JumpSampling::weighted;
+    const bool  weighted = contact.sampling == JumpSampling::weighted;
+    const auto &weight   = meshes[block].node_weight;
     for (unsigned int i = 0; i < a.size(); ++i)
-      g.block(block)(i) =
-        lower.block(block)(i) < upper.block(block)(i) ?
-          (a(i) - b(i)) / (weighted ? node_weight[i / 2] : 1.) :
-          0.;
+      g.block(block)(i) = lower.block(block)(i) < upper.block(block)(i) ?
+                            (a(i) - b(i)) / (weighted ? weight[i / 2] : 1.) :
+                            0.;
   }
 
 
@@ -343,15 +408,15 @@ namespace bilayer
     const auto &op =
       contact.sampling == JumpSampling::weighted ? coupling : evaluation;
     g.reinit(lower, true);
-    std::array<Vector<double>, 4> traces;
-    for (unsigned int s = 0; s < 4; ++s)
+    Vector<double> first, second;
+    for (unsigned int b = 0; b < 3; ++b)
       {
-        traces[s].reinit(2 * n_nodes());
-        op[s].matrix.vmult(traces[s], w[s]);
+        first.reinit(lower.block(b).size());
+        second.reinit(lower.block(b).size());
+        op[b][0].matrix.vmult(first, w[block_pair[b][0]]);
+        op[b][1].matrix.vmult(second, w[block_pair[b][1]]);
+        difference(first, second, b, g);
       }
-    difference(traces[u_minus], traces[u_plus], 0, g);
-    difference(traces[u_minus], traces[v_minus], 1, g);
-    difference(traces[u_plus], traces[v_plus], 2, g);
   }
 
 
@@ -379,7 +444,7 @@ namespace bilayer
     double sum = 0;
     for (unsigned int b = 0; b < x.n_blocks(); ++b)
       for (unsigned int i = 0; i < x.block(b).size(); ++i)
-        sum += node_weight[i / 2] * x.block(b)(i) * y.block(b)(i);
+        sum += meshes[b].node_weight[i / 2] * x.block(b)(i) * y.block(b)(i);
     return sum;
   }
 
@@ -411,7 +476,7 @@ namespace bilayer
     Vector<double> trace(2 * n_nodes());
     for (unsigned int s = 0; s < 4; ++s)
       {
-        evaluation[s].matrix.vmult(trace, w[s]);
+        node_traces[s].matrix.vmult(trace, w[s]);
         scale = std::max(scale, trace.linfty_norm());
       }
     return scale;
@@ -447,8 +512,8 @@ namespace bilayer
   {
     for (unsigned int b = 0; b < x.n_blocks(); ++b)
       for (unsigned int i = 0; i < x.block(b).size(); ++i)
-        x.block(b)(i) = inverse ? x.block(b)(i) / node_weight[i / 2] :
-                                  x.block(b)(i) * node_weight[i / 2];
+        x.block(b)(i) = inverse ? x.block(b)(i) / meshes[b].node_weight[i / 2] :
+                                  x.block(b)(i) * meshes[b].node_weight[i / 2];
   }
 
 
@@ -457,9 +522,11 @@ namespace bilayer
                            SparsityPattern           &pattern,
                            SparseMatrix<double>      &gram) const
   {
-    // Sign of subproblem s (u-, u+, v-, v+) in the jump of block b.
-    constexpr int sign[3][4] = {{1, -1, 0, 0}, {1, 0, -1, 0}, {0, 1, 0, -1}};
-    const unsigned int                                      n = 2 * n_nodes();
+    // B: +C on the first and -C on the second subproblem of each block.
+    std::array<unsigned int, 3> offset = {0, 0, 0};
+    for (unsigned int b = 1; b < 3; ++b)
+      offset[b] = offset[b - 1] + lower.block(b - 1).size();
+    const unsigned int                                      n = lower.size();
     std::map<std::pair<unsigned int, unsigned int>, double> entries;
     for (unsigned int s = 0; s < 4; ++s)
       {
@@ -467,27 +534,32 @@ namespace bilayer
         // dof of s.
         std::map<types::global_dof_index,
                  std::vector<std::pair<unsigned int, double>>>
-                    columns;
-        const auto &matrix = coupling[s].matrix;
-        for (unsigned int r = 0; r < matrix.m(); ++r)
-          for (auto e = matrix.begin(r); e != matrix.end(r); ++e)
-            for (unsigned int b = 0; b < 3; ++b)
-              if (sign[b][s] != 0 && mask(b * n + r) != 0. && e->value() != 0.)
-                columns[e->column()].emplace_back(b * n + r,
-                                                  sign[b][s] * e->value());
+          columns;
+        for (unsigned int b = 0; b < 3; ++b)
+          for (unsigned int j = 0; j < 2; ++j)
+            if (block_pair[b][j] == s)
+              {
+                const auto &matrix = coupling[b][j].matrix;
+                for (unsigned int r = 0; r < matrix.m(); ++r)
+                  for (auto e = matrix.begin(r); e != matrix.end(r); ++e)
+                    if (mask(offset[b] + r) != 0. && e->value() != 0.)
+                      columns[e->column()].emplace_back(offset[b] + r,
+                                                        (j == 0 ? 1. : -1.) *
+                                                          e->value());
+              }
         for (const auto &column : columns)
           for (const auto &[i, vi] : column.second)
             for (const auto &[j, vj] : column.second)
               entries[{i, j}] += vi * vj;
       }
-    DynamicSparsityPattern dsp(3 * n);
-    for (unsigned int i = 0; i < 3 * n; ++i)
+    DynamicSparsityPattern dsp(n);
+    for (unsigned int i = 0; i < n; ++i)
       dsp.add(i, i);
     for (const auto &e : entries)
       dsp.add(e.first.first, e.first.second);
     pattern.copy_from(dsp);
     gram.reinit(pattern);
-    for (unsigned int i = 0; i < 3 * n; ++i)
+    for (unsigned int i = 0; i < n; ++i)
       if (mask(i) == 0.)
         gram.set(i, i, 1.);
     for (const auto &e : entries)
@@ -499,8 +571,8 @@ namespace bilayer
   Interface::normal_opening(const Solutions &w) const
   {
     Vector<double> tm(2 * n_nodes()), tp(2 * n_nodes());
-    evaluation[u_minus].matrix.vmult(tm, w[u_minus]);
-    evaluation[u_plus].matrix.vmult(tp, w[u_plus]);
+    node_traces[u_minus].matrix.vmult(tm, w[u_minus]);
+    node_traces[u_plus].matrix.vmult(tp, w[u_plus]);
     std::vector<double> result(n_nodes());
     for (unsigned int a = 0; a < n_nodes(); ++a)
       result[a] = tp(2 * a + 1) - tm(2 * a + 1);
@@ -529,9 +601,10 @@ namespace bilayer
           const double m = mu.block(0)(2 * a + 1);
           report.min_contact_multiplier =
             any ? std::min(report.min_contact_multiplier, m) : m;
-          any = true;
-          sum_mu += node_weight[a] * m;
-          sum_mu_jump += node_weight[a] * m * std::abs(g.block(0)(2 * a + 1));
+          any            = true;
+          const double d = meshes[0].node_weight[a];
+          sum_mu += d * m;
+          sum_mu_jump += d * m * std::abs(g.block(0)(2 * a + 1));
         }
     report.complementarity =
       sum_mu > 0 && scale > 0 ? sum_mu_jump / (sum_mu * scale) : 0.;
@@ -595,8 +668,18 @@ namespace bilayer
     for (unsigned int s = 0; s < 4; ++s)
       {
         t[s].reinit(2 * n_nodes());
-        evaluation[s].matrix.vmult(t[s], w[s]);
+        node_traces[s].matrix.vmult(t[s], w[s]);
       }
+    // mu- and mu+ at the nodes of block 0.
+    std::vector<double> values;
+    const auto          value =
+      [&](const unsigned int b, const double x, const unsigned int c) {
+        const unsigned int e      = multiplier_shape_values(b, x, values);
+        double             result = 0;
+        for (unsigned int i = 0; i <= degree; ++i)
+          result += values[i] * mu.block(b)(2 * multiplier_node(e, i) + c);
+        return result;
+      };
     out << "x,on_crack,jump_normal,jump_tangential,mu_c,mu_g_x,mu_g_y,"
            "mu_minus_x,mu_minus_y,mu_plus_x,mu_plus_y,gap_minus_x,"
            "gap_minus_y,gap_plus_x,gap_plus_y,u_minus_x,u_minus_y,u_plus_x,"
@@ -605,14 +688,16 @@ namespace bilayer
     for (unsigned int a = 0; a < n_nodes(); ++a)
       {
         const unsigned int x = 2 * a, y = 2 * a + 1;
-        out << node_x[a] << ',' << (on_crack[a] ? 1 : 0) << ','
+        const double       position = meshes[0].node_x[a];
+        out << position << ',' << (on_crack[a] ? 1 : 0) << ','
             << t[u_plus](y) - t[u_minus](y) << ','
             << t[u_plus](x) - t[u_minus](x) << ','
             << (on_crack[a] ? mu.block(0)(y) : 0.) << ','
             << (on_crack[a] ? 0. : mu.block(0)(x)) << ','
-            << (on_crack[a] ? 0. : mu.block(0)(y)) << ',' << mu.block(1)(x)
-            << ',' << mu.block(1)(y) << ',' << mu.block(2)(x) << ','
-            << mu.block(2)(y) << ',' << t[u_minus](x) - t[v_minus](x) << ','
+            << (on_crack[a] ? 0. : mu.block(0)(y)) << ','
+            << value(1, position, 0) << ',' << value(1, position, 1) << ','
+            << value(2, position, 0) << ',' << value(2, position, 1) << ','
+            << t[u_minus](x) - t[v_minus](x) << ','
             << t[u_minus](y) - t[v_minus](y) << ','
             << t[u_plus](x) - t[v_plus](x) << ','
             << t[u_plus](y) - t[v_plus](y);

@@ -78,26 +78,39 @@ namespace bilayer
    * operators between multipliers and subproblems.
    *
    * <h3>Multipliers</h3>
-   * All multipliers live on one mesh of Sigma: the trace of the Omega-
-   * mesh (the breakpoints of its faces on Sigma), with continuous Lagrange
-   * elements of the degree of layer 1 whose nodes are the Gauss-Lobatto
-   * points of each segment. Three vector-valued multipliers (paper.md §3)
-   * are stored as the three blocks of a BlockVector, each with entries
-   * 2 a + c (node a, component c):
-   *  - block 0, layer 1 across Sigma: mu_c nu at nodes inside the open crack
-   *    (only the normal component, 0 <= mu_c <= p; the tangential component
-   *    is fixed to 0: no friction), mu_g at the other nodes (-p <= . <= p).
-   *    The crack tips belong to Sigma \ gamma_c: they are glued.
-   *  - blocks 1 and 2: lambda- and lambda+, which glue layer 1 to layer 2 on
-   *    each side (-p <= . <= p).
+   * Three vector-valued multipliers (paper.md §3) are stored as the three
+   * blocks of a BlockVector, each with entries 2 a + c (node a of its own
+   * multiplier mesh on Sigma, component c), continuous Lagrange elements of
+   * the degree of layer 1 whose nodes are the Gauss-Lobatto points of each
+   * segment:
+   *  - block 0, layer 1 across Sigma, on the union of the break points of
+   *    the two traces (Omega- and Omega+ faces on Sigma): mu_c nu at nodes
+   *    inside the open crack (only the normal component, 0 <= mu_c <= p;
+   *    the tangential component is fixed to 0: no friction), mu_g at the
+   *    other nodes (-p <= . <= p). The crack tips belong to
+   *    Sigma \ gamma_c: they are glued.
+   *  - block 1, lambda-, gluing u- to v- on the trace of the Omega- mesh;
+   *    block 2, lambda+, gluing u+ to v+ on the trace of the Omega+ mesh
+   *    (-p <= . <= p).
+   * Why these meshes: u- and v- share the Omega- mesh, so the nodal
+   * constraints u- = v- at its trace nodes make the two traces equal, with
+   * no redundant constraint; likewise on Omega+. Across Sigma the union
+   * mesh is the coarsest one on which both traces are piecewise
+   * polynomials: equal values at its nodes make the traces equal (the
+   * gluing is conforming, and the contact constraint holds at every node
+   * of either side), and the map from the two traces to the jumps at its
+   * nodes is onto (no redundant constraint: each node belongs to a trace
+   * whose values there are free). On matching meshes the three meshes
+   * coincide with the common trace.
    * Nodes on Gamma_D (the ends of Sigma on a clamped side) carry no
    * multipliers (bounds [0, 0]): the Dirichlet condition already enforces
    * the constraints there. Without non-penetration the crack nodes carry no
    * layer-1 multiplier either (the linear problem of Fig. 3).
    *
    * <h3>Coupling</h3>
-   * For each subproblem s the matrix C_s, (C_s)_{2a+c, j} =
-   * int_Sigma phi_a psi_j^c ds, maps its dofs to the multiplier space. The
+   * For each block b and each of its two subproblems s the matrix C_s,
+   * (C_s)_{2a+c, j} = int_Sigma phi_a psi_j^c ds (phi_a the multiplier
+   * basis of block b), maps the dofs of s to the multiplier space of b. The
    * quadrature is either the Gauss-Lobatto rule of the multiplier segments
    * (lumped: C_s = D E_s with E_s the evaluation at the nodes, node-to-node
    * coupling) or a Gauss rule on the common refinement of the multiplier
@@ -227,28 +240,51 @@ namespace bilayer
               const Solutions           &w,
               const BlockVector<double> &multipliers) const;
 
+    /// Nodes of block 0 (the layer-1 multiplier).
     unsigned int
     n_nodes() const
     {
-      return node_x.size();
+      return meshes[0].node_x.size();
     }
 
     /// Multiplier components that are not fixed to zero.
     unsigned int
     n_multipliers() const;
 
-    /// Position x of node a.
+    /// Position x of node a of the layer-1 multiplier (block 0).
     double
     node_position(const unsigned int a) const
     {
-      return node_x[a];
+      return meshes[0].node_x[a];
     }
 
+    /// Whether node a of block 0 lies strictly inside the crack.
     bool
     node_on_crack(const unsigned int a) const
     {
       return on_crack[a];
     }
+
+    /**
+     * The multipliers as functions on Sigma, kept to warm-start the next
+     * mesh: the break points, degree and nodal values of each block.
+     */
+    struct MultiplierFunctions
+    {
+      unsigned int                       degree = 0;
+      std::array<std::vector<double>, 3> breakpoints;
+      BlockVector<double>                values;
+    };
+
+    /// The multipliers @p mu with the current multiplier meshes.
+    MultiplierFunctions
+    functions(const BlockVector<double> &mu) const;
+
+    /// Interpolate @p old at the current multiplier nodes (same degree:
+    /// exact on nested refinements of the multiplier meshes), then project
+    /// onto the multiplier sets.
+    void
+    interpolate(const MultiplierFunctions &old, BlockVector<double> &mu) const;
 
   private:
     /// A face of one subdomain mesh on Sigma.
@@ -283,9 +319,12 @@ namespace bilayer
       const unsigned int                                           n_rows,
       PointMatrix &result) const;
 
-    /// Multiplier segment containing x and the shape values there.
+    /// Segment of the multiplier mesh of block @p b containing x, and the
+    /// shape values there.
     unsigned int
-    multiplier_shape_values(const double x, std::vector<double> &values) const;
+    multiplier_shape_values(const unsigned int   b,
+                            const double         x,
+                            std::vector<double> &values) const;
 
     /// The global multiplier node of local shape function i of segment e.
     unsigned int
@@ -309,17 +348,26 @@ namespace bilayer
     std::array<const ElasticSubproblem *, 4> subproblems;
     std::array<std::vector<SigmaFace>, 2>    faces;
 
+    /// A multiplier mesh on Sigma: break points, nodes, D per node.
+    struct MultiplierMesh
+    {
+      std::vector<double> breakpoints, node_x, node_weight;
+    };
+
     unsigned int             degree = 1;
     std::unique_ptr<FE_Q<1>> fe_multiplier;
-    std::vector<double>      breakpoints;
-    std::vector<double>      node_x;
-    std::vector<bool>        on_crack;
-    /// D, per node.
-    std::vector<double> node_weight;
+    /// Per block: mu_1 on the union of the two traces, mu- on the trace of
+    /// the Omega- mesh, mu+ on that of the Omega+ mesh.
+    std::array<MultiplierMesh, 3> meshes;
+    /// Per node of block 0.
+    std::vector<bool>   on_crack;
     BlockVector<double> lower, upper;
 
-    /// C_s and E_s (evaluation at the nodes), per subproblem.
-    std::array<PointMatrix, 4> coupling, evaluation;
+    /// C and E (evaluation at the nodes) of the two subproblems that each
+    /// block couples (first, second: u- and u+, u- and v-, u+ and v+).
+    std::array<std::array<PointMatrix, 2>, 3> coupling, evaluation;
+    /// Traces of the four subproblems at the nodes of block 0.
+    std::array<PointMatrix, 4> node_traces;
     /// Traces at the Gauss points of the common refinement (diagnostics).
     std::array<PointMatrix, 4> gauss_traces;
     std::vector<double>        gauss_x, gauss_weight;
