@@ -38,9 +38,13 @@ namespace bilayer
       {
         const unsigned int factor = 1u << cycle;
         const double       width  = geometry.x_max - geometry.x_min;
-        const unsigned int n_x    = mesh.cells_along_sigma * factor;
         for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
           {
+            const unsigned int n_x =
+              (s == Subdomain::plus && mesh.cells_along_sigma_plus > 0 ?
+                 mesh.cells_along_sigma_plus :
+                 mesh.cells_along_sigma) *
+              factor;
             const double       height = s == Subdomain::minus ?
                                           geometry.sigma_height - geometry.y_min :
                                           geometry.y_max - geometry.sigma_height;
@@ -54,6 +58,55 @@ namespace bilayer
           }
       }
 
+    check_crack_vertices();
+  }
+
+
+  void
+  Geometry::refine(const std::array<Vector<float>, 2> &indicators)
+  {
+    // One threshold over the cells of both subdomains.
+    std::vector<float> all;
+    for (const auto &v : indicators)
+      all.insert(all.end(), v.begin(), v.end());
+    std::sort(all.begin(), all.end(), std::greater<float>());
+    float threshold = all.empty() ? 0.f : all.front();
+    if (mesh.marking == Marking::fixed_fraction)
+      {
+        const std::size_t n = std::max<std::size_t>(
+          1, std::lround(mesh.refinement_fraction * all.size()));
+        threshold = all[std::min(n, all.size()) - 1];
+      }
+    else
+      {
+        double total = 0, sum = 0;
+        for (const float e : all)
+          total += double(e) * e;
+        for (const float e : all)
+          {
+            threshold = e;
+            sum += double(e) * e;
+            if (sum >= mesh.refinement_fraction * total)
+              break;
+          }
+      }
+    for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+      {
+        auto        &tria = triangulations[static_cast<unsigned int>(s)];
+        const auto  &eta  = indicators[static_cast<unsigned int>(s)];
+        unsigned int i    = 0;
+        for (const auto &cell : tria.active_cell_iterators())
+          if (eta[i++] >= threshold && threshold > 0)
+            cell->set_refine_flag();
+        tria.execute_coarsening_and_refinement();
+      }
+    check_crack_vertices();
+  }
+
+
+  void
+  Geometry::check_crack_vertices() const
+  {
     // The crack end points must be mesh vertices: no face on Sigma may
     // straddle one.
     for (const Subdomain s : {Subdomain::minus, Subdomain::plus})

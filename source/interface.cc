@@ -243,6 +243,27 @@ namespace bilayer
   }
 
 
+  Tensor<1, 2>
+  Interface::multiplier_traction(const BlockVector<double> &mu,
+                                 const unsigned int         s,
+                                 const double               x) const
+  {
+    Tensor<1, 2>        t;
+    std::vector<double> values;
+    for (unsigned int b = 0; b < 3; ++b)
+      for (unsigned int j = 0; j < 2; ++j)
+        if (block_pair[b][j] == s)
+          {
+            const unsigned int e = multiplier_shape_values(b, x, values);
+            for (unsigned int i = 0; i <= degree; ++i)
+              for (unsigned int c = 0; c < 2; ++c)
+                t[c] += (j == 0 ? -1. : 1.) * values[i] *
+                        mu.block(b)(2 * multiplier_node(e, i) + c);
+          }
+    return t;
+  }
+
+
   Interface::MultiplierFunctions
   Interface::functions(const BlockVector<double> &mu) const
   {

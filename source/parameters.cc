@@ -221,6 +221,39 @@ namespace bilayer
                       Patterns::Integer(1, 12),
                       "Number of meshes in the sequence; cycle k halves the "
                       "cells of cycle k-1 in each direction [-].");
+    prm.declare_entry("Cells along Sigma on the plus side",
+                      "0",
+                      Patterns::Integer(0, 100000),
+                      "Cells of the structured Omega+ mesh along Sigma (its "
+                      "cells across follow from them); 0: as Cells along "
+                      "Sigma. Other numbers make the traces on Sigma "
+                      "non-matching [-].");
+    prm.declare_entry("Refinement",
+                      "global",
+                      Patterns::Selection("global|adaptive"),
+                      "From one cycle to the next: global (every cell "
+                      "split) or adaptive (cells marked from the error "
+                      "indicators, each subdomain refined on its own with "
+                      "hanging nodes; quadrilaterals only).");
+    prm.declare_entry("Marking",
+                      "bulk",
+                      Patterns::Selection("bulk|fixed fraction"),
+                      "Adaptive marking over the cells of both subdomains: "
+                      "bulk (Doerfler: the fewest cells whose squared "
+                      "indicators make up Refinement fraction of the total) "
+                      "or fixed fraction (that fraction of the cells).");
+    prm.declare_entry("Refinement fraction",
+                      "0.5",
+                      Patterns::Double(0, 1),
+                      "The bulk parameter or the fraction of cells refined "
+                      "per adaptive cycle [-], in (0, 1].");
+    prm.declare_entry("Interface terms in the estimator",
+                      "true",
+                      Patterns::Bool(),
+                      "Add to Kelly's indicators the residual of the "
+                      "multiplier tractions on the Sigma faces (sigma(w) n - "
+                      "multiplier load), which marks the contact zone and "
+                      "the crack tips.");
     prm.leave_subsection();
   }
 
@@ -240,6 +273,22 @@ namespace bilayer
     mesh_files        = Utilities::split_string_list(prm.get("Mesh files"));
     if (!mesh_files.empty())
       shape = ElementShape::triangle;
+    cells_along_sigma_plus =
+      prm.get_integer("Cells along Sigma on the plus side");
+    refinement = prm.get("Refinement") == "adaptive" ? Refinement::adaptive :
+                                                       Refinement::global;
+    marking =
+      prm.get("Marking") == "bulk" ? Marking::bulk : Marking::fixed_fraction;
+    refinement_fraction = prm.get_double("Refinement fraction");
+    AssertThrow(refinement_fraction > 0 && refinement_fraction <= 1,
+                ExcMessage("Mesh/Refinement fraction must lie in (0, 1], got " +
+                           prm.get("Refinement fraction")));
+    interface_terms = prm.get_bool("Interface terms in the estimator");
+    AssertThrow(refinement == Refinement::global ||
+                  shape == ElementShape::quadrilateral,
+                ExcMessage("Mesh/Refinement = adaptive needs Mesh/Element "
+                           "shape = quadrilaterals and no Mesh files (deal.II "
+                           "9.4 refines triangle meshes only globally)"));
     prm.leave_subsection();
   }
 
@@ -560,6 +609,13 @@ namespace bilayer
                       "Bound on the relative constraint violation, relative "
                       "interpenetration and complementarity of the final "
                       "solution; a run beyond it fails [-].");
+    prm.declare_entry("Warm start",
+                      "false",
+                      Patterns::Bool(),
+                      "Start each cycle after the first from the previous "
+                      "cycle's multipliers, interpolated onto the new "
+                      "multiplier meshes and projected onto the multiplier "
+                      "sets (false: from zero, as in the paper).");
     prm.enter_subsection("Active set");
     prm.declare_entry("Preconditioner",
                       "dirichlet",
@@ -635,6 +691,7 @@ namespace bilayer
     AssertThrow(acceptance_tolerance > 0,
                 ExcMessage("Solver/Acceptance tolerance must be > 0, got " +
                            prm.get("Acceptance tolerance")));
+    warm_start = prm.get_bool("Warm start");
     prm.enter_subsection("Active set");
     const std::string p = prm.get("Preconditioner");
     preconditioner      = p == "dirichlet" ? DualPreconditioner::dirichlet :

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <bilayer/active_set_solver.h>
+#include <bilayer/estimator.h>
 #include <bilayer/output.h>
 #include <bilayer/study.h>
 
@@ -93,7 +94,24 @@ namespace bilayer
     CycleRecord record;
     record.cycle = cycle;
 
-    domain.create_meshes(cycle);
+    // The multipliers of the previous cycle, for a warm start.
+    const bool warm =
+      scene.solver.warm_start && !cycle_records.empty() && mu.size() > 0;
+    const Interface::MultiplierFunctions previous =
+      warm ? coupling.functions(mu) : Interface::MultiplierFunctions();
+    for (auto &sub : subproblems)
+      sub.reset();
+    if (cycle > 0 && scene.mesh.refinement == Refinement::adaptive)
+      {
+        AssertThrow(!cycle_records.empty() &&
+                      cycle_records.back().cycle + 1 == cycle,
+                    ExcMessage("adaptive cycle " + std::to_string(cycle) +
+                               " needs cycle " + std::to_string(cycle - 1) +
+                               " of the same study first"));
+        domain.refine(indicators);
+      }
+    else
+      domain.create_meshes(cycle);
     record.minus = domain.statistics(Subdomain::minus);
     record.plus  = domain.statistics(Subdomain::plus);
     record.P     = domain.n_sigma_vertices();
@@ -134,6 +152,8 @@ namespace bilayer
       }
     coupling.setup(views);
     coupling.initialize(mu);
+    if (warm)
+      coupling.interpolate(previous, mu);
     record.multipliers   = coupling.n_multipliers();
     record.setup_seconds = total.wall_time();
 
@@ -155,6 +175,9 @@ namespace bilayer
       record.energy += subproblems[s]->energy(w[s]);
     record.report = coupling.assess(w, mu);
     check(record);
+    if (scene.mesh.refinement == Refinement::adaptive)
+      indicators =
+        estimate_error(views, coupling, w, mu, scene.mesh.interface_terms);
 
     const std::string &dir = scene.output.directory;
     std::filesystem::create_directories(dir);

@@ -2,6 +2,7 @@
 #define bilayer_geometry_h
 
 #include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
 
 #include <bilayer/parameters.h>
 
@@ -61,6 +62,16 @@ namespace bilayer
     void
     create_meshes(const unsigned int cycle);
 
+    /**
+     * Refine both meshes from cell indicators (one per active cell of each
+     * subdomain, in the order of active_cell_iterators()), marking by
+     * Mesh/Marking with one threshold over the cells of both subdomains.
+     * Each subdomain keeps its own hanging nodes; the traces on Sigma stop
+     * matching where only one side is refined.
+     */
+    void
+    refine(const std::array<Vector<float>, 2> &indicators);
+
     const Triangulation<2> &
     triangulation(const Subdomain subdomain) const;
 
@@ -76,6 +87,9 @@ namespace bilayer
     n_outer_vertices() const;
 
   private:
+    void
+    check_crack_vertices() const;
+
     void
     make_subdomain(const Subdomain    subdomain,
                    const unsigned int cells_along,

@@ -186,6 +186,13 @@ namespace bilayer
     double
     discrete_violation(const BlockVector<double> &g) const;
 
+    /// The traction that the multipliers @p mu apply to subproblem @p s at
+    /// the point x of Sigma (the density of its multiplier load).
+    Tensor<1, 2>
+    multiplier_traction(const BlockVector<double> &mu,
+                        const unsigned int         s,
+                        const double               x) const;
+
     /// The relative KKT residual of multipliers @p mu with solutions @p w
     /// and their jumps @p g.
     KKTResidual

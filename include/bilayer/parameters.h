@@ -144,10 +144,38 @@ namespace bilayer
     }
   };
 
+  /// How the mesh of cycle k+1 comes from that of cycle k.
+  enum class Refinement
+  {
+    /// Every cell split (structured meshes are rebuilt with twice the
+    /// cells along each side).
+    global,
+    /// Cells marked from the error indicators (quadrilaterals only).
+    adaptive
+  };
+
+  /// Marking of cells for adaptive refinement.
+  enum class Marking
+  {
+    /// The fraction of all cells (both subdomains) with the largest
+    /// indicators.
+    fixed_fraction,
+    /// Doerfler: the fewest cells whose squared indicators make up the
+    /// fraction of the total.
+    bulk
+  };
+
   struct MeshParameters
   {
-    ElementShape shape             = ElementShape::quadrilateral;
-    unsigned int cells_along_sigma = 16;
+    Refinement refinement          = Refinement::global;
+    Marking    marking             = Marking::bulk;
+    double     refinement_fraction = 0.5;
+    /// Add the interface residuals on Sigma to Kelly's indicators.
+    bool interface_terms = true;
+    /// Cells along Sigma of the Omega+ mesh; 0: as Omega-.
+    unsigned int cells_along_sigma_plus = 0;
+    ElementShape shape                  = ElementShape::quadrilateral;
+    unsigned int cells_along_sigma      = 16;
     /// Cells across each subdomain; 0 chooses square-ish cells.
     unsigned int cells_across  = 0;
     unsigned int degree_first  = 1;
@@ -277,6 +305,8 @@ namespace bilayer
     double divergence_factor = 1e3;
     /// Tolerance of the acceptance checks of the final solution.
     double acceptance_tolerance = 1e-6;
+    /// Start each cycle from the previous cycle's multipliers.
+    bool warm_start = false;
     /// Solver/Active set: preconditioner, relative tolerance of the linear
     /// solves while the active set changes, limit of their iterations.
     DualPreconditioner preconditioner        = DualPreconditioner::dirichlet;

@@ -113,6 +113,9 @@ namespace bilayer
     std::vector<CycleRecord>                          cycle_records;
     std::vector<std::pair<double, std::string>>       pvd_records;
     ConvergenceTable                                  table;
+    /// Error indicators of the last cycle, per subdomain (adaptive
+    /// refinement).
+    std::array<Vector<float>, 2> indicators;
   };
 } // namespace bilayer
 

@@ -1,0 +1,39 @@
+#ifndef bilayer_estimator_h
+#define bilayer_estimator_h
+
+#include <deal.II/lac/block_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <bilayer/interface.h>
+#include <bilayer/subproblem.h>
+
+#include <array>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  /**
+   * Error indicators per active cell of the two subdomain meshes (indexed
+   * by active_cell_index()), for adaptive refinement:
+   *   eta_K^2 = eta_K(u)^2 + eta_K(v)^2 + sum over the Sigma faces F of K
+   *             of h_F / 24 int_F |(sigma(w) n - t) / (2 mu)|^2 ds,
+   * where eta_K(w) is Kelly's indicator (jumps of the normal derivative
+   * across interior faces, deal.II's KellyErrorEstimator) of each layer and,
+   * with @p interface_terms, t is the traction of the multipliers on the
+   * subproblem w (Interface::multiplier_traction()) for each layer: the
+   * residual of the multiplier load on Sigma, which is large where the
+   * discrete multipliers do not resolve the traction (the crack tips and
+   * the end of the contact zone). Division by 2 mu gives the stress
+   * residual the units of a displacement gradient, as in Kelly's terms;
+   * the weight h/24 is Kelly's.
+   */
+  std::array<Vector<float>, 2>
+  estimate_error(const std::array<const ElasticSubproblem *, 4> &subproblems,
+                 const Interface                                &interface,
+                 const Solutions                                &solutions,
+                 const BlockVector<double>                      &multipliers,
+                 const bool interface_terms);
+} // namespace bilayer
+
+#endif
