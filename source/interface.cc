@@ -106,8 +106,8 @@ namespace bilayer
       b.push_back(faces[sd].back().x1);
       return b;
     };
-    const std::array<std::vector<double>, 2> traces = {face_breakpoints(0),
-                                                       face_breakpoints(1)};
+    const std::array<std::vector<double>, 2> traces = {
+      {face_breakpoints(0), face_breakpoints(1)}};
 
     // The multiplier meshes: the union of the traces for mu_1, each side's
     // trace for mu- and mu+.
@@ -544,7 +544,7 @@ namespace bilayer
                            SparseMatrix<double>      &gram) const
   {
     // B: +C on the first and -C on the second subproblem of each block.
-    std::array<unsigned int, 3> offset = {0, 0, 0};
+    std::array<unsigned int, 3> offset = {{0, 0, 0}};
     for (unsigned int b = 1; b < 3; ++b)
       offset[b] = offset[b - 1] + lower.block(b - 1).size();
     const unsigned int                                      n = lower.size();
