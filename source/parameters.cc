@@ -218,9 +218,11 @@ namespace bilayer
       "coordinates.");
     prm.declare_entry("Number of cycles",
                       "1",
-                      Patterns::Integer(1, 12),
-                      "Number of meshes in the sequence; cycle k halves the "
-                      "cells of cycle k-1 in each direction [-].");
+                      Patterns::Integer(1, 40),
+                      "Number of meshes in the sequence; with global "
+                      "refinement cycle k halves the cells of cycle k-1 in "
+                      "each direction, with adaptive refinement it refines "
+                      "the cells the estimator marks [-].");
     prm.declare_entry("Cells along Sigma on the plus side",
                       "0",
                       Patterns::Integer(0, 100000),

@@ -87,6 +87,18 @@ namespace bilayer
   }
 
 
+  void
+  Study::set_indicators(const std::array<Vector<float>, 2> &new_indicators)
+  {
+    for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+      AssertThrow(new_indicators[static_cast<unsigned int>(s)].size() ==
+                    domain.triangulation(s).n_active_cells(),
+                  ExcMessage("Study::set_indicators: one indicator per active "
+                             "cell of each subdomain is needed"));
+    indicators = new_indicators;
+  }
+
+
   const CycleRecord &
   Study::run_cycle(const unsigned int cycle)
   {

@@ -90,6 +90,15 @@ namespace bilayer
       return *subproblems[Interface::index(layer, subdomain)];
     }
 
+    /**
+     * Replace the error indicators by which the next adaptive cycle marks
+     * cells (one value per active cell of each subdomain, in the order of
+     * active_cell_iterators(); Mesh/Marking applies as usual), so that a
+     * driver can refine by a criterion of its own.
+     */
+    void
+    set_indicators(const std::array<Vector<float>, 2> &new_indicators);
+
   private:
     void
     check(CycleRecord &record) const;
