@@ -5,6 +5,8 @@
 #include <bilayer/estimator.h>
 #include <bilayer/geometry.h>
 
+#include <algorithm>
+
 namespace bilayer
 {
   std::array<Vector<float>, 2>
@@ -12,9 +14,13 @@ namespace bilayer
                  const Interface                                &interface,
                  const Solutions                                &w,
                  const BlockVector<double>                      &mu,
-                 const bool interface_terms)
+                 const bool   interface_terms,
+                 const double contact_weight)
   {
-    std::array<Vector<float>, 2> eta;
+    std::array<Vector<float>, 2>                 eta;
+    const std::vector<Interface::ContactSegment> contact =
+      interface_terms ? interface.contact_residual(w, mu) :
+                        std::vector<Interface::ContactSegment>();
     for (unsigned int s = 0; s < 4; ++s)
       {
         const ElasticSubproblem &sub  = *subproblems[s];
@@ -67,8 +73,32 @@ namespace bilayer
                     sum += (residual * residual) /
                            (4 * mu_material * mu_material) * fe_face.JxW(q);
                   }
-                const double       term = cell->face(f)->diameter() / 24. * sum;
-                const unsigned int i    = cell->active_cell_index();
+                double term = cell->face(f)->diameter() / 24. * sum;
+                // Layer 1 on the crack: the complementarity of the segments
+                // of the mu_1 mesh under the face, by overlap.
+                if (s < 2 && cell->face(f)->boundary_id() == BoundaryIds::crack)
+                  {
+                    const double x0 = std::min(cell->face(f)->vertex(0)[0],
+                                               cell->face(f)->vertex(1)[0]);
+                    const double x1 = std::max(cell->face(f)->vertex(0)[0],
+                                               cell->face(f)->vertex(1)[0]);
+                    auto         it =
+                      std::lower_bound(contact.begin(),
+                                       contact.end(),
+                                       x0,
+                                       [](const Interface::ContactSegment &c,
+                                          const double x) { return c.b <= x; });
+                    for (; it != contact.end() && it->a < x1; ++it)
+                      {
+                        const double overlap =
+                          std::min(x1, it->b) - std::max(x0, it->a);
+                        if (overlap > 0)
+                          term += contact_weight *
+                                  std::abs(it->complementarity) * overlap /
+                                  (it->b - it->a) / (2 * mu_material);
+                      }
+                  }
+                const unsigned int i = cell->active_cell_index();
                 eta[sd][i] = std::sqrt(double(eta[sd][i]) * eta[sd][i] + term);
               }
       }

@@ -680,6 +680,49 @@ namespace bilayer
   }
 
 
+  std::vector<Interface::ContactSegment>
+  Interface::contact_residual(const Solutions           &w,
+                              const BlockVector<double> &mu) const
+  {
+    std::vector<ContactSegment> result;
+    if (!contact.non_penetration)
+      return result;
+    std::array<Vector<double>, 2> t;
+    for (const unsigned int s : {u_minus, u_plus})
+      {
+        t[s].reinit(2 * n_nodes());
+        node_traces[s].matrix.vmult(t[s], w[s]);
+      }
+    // Normal jump and contact multiplier at node a (nu = e_y).
+    const auto gap = [&](const unsigned int a) {
+      return t[u_plus](2 * a + 1) - t[u_minus](2 * a + 1);
+    };
+    const auto mu_c = [&](const unsigned int a) {
+      return on_crack[a] ? mu.block(0)(2 * a + 1) : 0.;
+    };
+    const auto &mesh = meshes[0];
+    for (unsigned int e = 0; e + 1 < mesh.breakpoints.size(); ++e)
+      {
+        const unsigned int a0 = multiplier_node(e, 0),
+                           a1 = multiplier_node(e, 1);
+        if (!on_crack[a0] && !on_crack[a1])
+          continue;
+        // Midpoint values: the middle node for degree 2, the mean for
+        // degree 1 (then Simpson's rule is exact for the product).
+        const double g_m =
+          degree == 2 ? gap(multiplier_node(e, 2)) : 0.5 * (gap(a0) + gap(a1));
+        const double mu_m = degree == 2 ? mu_c(multiplier_node(e, 2)) :
+                                          0.5 * (mu_c(a0) + mu_c(a1));
+        const double h    = mesh.breakpoints[e + 1] - mesh.breakpoints[e];
+        result.push_back(
+          {mesh.breakpoints[e],
+           mesh.breakpoints[e + 1],
+           h / 6 * (mu_c(a0) * gap(a0) + 4 * mu_m * g_m + mu_c(a1) * gap(a1))});
+      }
+    return result;
+  }
+
+
   void
   Interface::write_csv(std::ostream              &out,
                        const Solutions           &w,

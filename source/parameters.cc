@@ -254,8 +254,17 @@ namespace bilayer
                       Patterns::Bool(),
                       "Add to Kelly's indicators the residual of the "
                       "multiplier tractions on the Sigma faces (sigma(w) n - "
-                      "multiplier load), which marks the contact zone and "
-                      "the crack tips.");
+                      "multiplier load) and, on the crack, the "
+                      "complementarity |int mu_c [u].nu| / (2 mu), which "
+                      "mark the crack tips and the end of the contact zone.");
+    prm.declare_entry("Weight of the contact term",
+                      "1",
+                      Patterns::Double(0),
+                      "Factor on the complementarity term of the estimator "
+                      "(1: the energy-norm indicator; larger values refine "
+                      "the end of the contact zone further, for the contact "
+                      "pressure and the extent of the contact zone) [-], "
+                      ">= 0.");
     prm.leave_subsection();
   }
 
@@ -286,6 +295,7 @@ namespace bilayer
                 ExcMessage("Mesh/Refinement fraction must lie in (0, 1], got " +
                            prm.get("Refinement fraction")));
     interface_terms = prm.get_bool("Interface terms in the estimator");
+    contact_weight  = prm.get_double("Weight of the contact term");
     AssertThrow(refinement == Refinement::global ||
                   shape == ElementShape::quadrilateral,
                 ExcMessage("Mesh/Refinement = adaptive needs Mesh/Element "

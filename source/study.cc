@@ -188,8 +188,12 @@ namespace bilayer
     record.report = coupling.assess(w, mu);
     check(record);
     if (scene.mesh.refinement == Refinement::adaptive)
-      indicators =
-        estimate_error(views, coupling, w, mu, scene.mesh.interface_terms);
+      indicators = estimate_error(views,
+                                  coupling,
+                                  w,
+                                  mu,
+                                  scene.mesh.interface_terms,
+                                  scene.mesh.contact_weight);
 
     const std::string &dir = scene.output.directory;
     std::filesystem::create_directories(dir);

@@ -26,14 +26,21 @@ namespace bilayer
    * discrete multipliers do not resolve the traction (the crack tips and
    * the end of the contact zone). Division by 2 mu gives the stress
    * residual the units of a displacement gradient, as in Kelly's terms;
-   * the weight h/24 is Kelly's.
+   * the weight h/24 is Kelly's. On the crack faces of layer 1 the
+   * indicator also carries @p contact_weight times
+   * |int_F mu_c [u].nu ds| / (2 mu) (the
+   * complementarity of Interface::contact_residual(), split among the
+   * faces by overlap; an energy over 2 mu, so again a squared length):
+   * the discrete constraints hold at the nodes only, and the product is
+   * non-zero on the segment where the contact zone ends.
    */
   std::array<Vector<float>, 2>
   estimate_error(const std::array<const ElasticSubproblem *, 4> &subproblems,
                  const Interface                                &interface,
                  const Solutions                                &solutions,
                  const BlockVector<double>                      &multipliers,
-                 const bool interface_terms);
+                 const bool   interface_terms,
+                 const double contact_weight = 1);
 } // namespace bilayer
 
 #endif

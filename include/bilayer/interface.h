@@ -193,6 +193,24 @@ namespace bilayer
                         const unsigned int         s,
                         const double               x) const;
 
+    /// A segment [a, b] of the multiplier mesh of mu_1 on the crack with the
+    /// value int_a^b mu_c [u].nu ds (Simpson's rule on the nodal values).
+    struct ContactSegment
+    {
+      double a, b, complementarity;
+    };
+
+    /**
+     * The complementarity density of the contact pair per segment of the
+     * mu_1 mesh that touches the crack. The discrete constraints hold at
+     * the nodes, so mu_c [u].nu vanishes at every node; between nodes it
+     * does not where the contact zone ends inside a segment (mu_c > 0 at
+     * one end, an open gap at the other): the term marks the end of the
+     * contact zone for refinement.
+     */
+    std::vector<ContactSegment>
+    contact_residual(const Solutions &w, const BlockVector<double> &mu) const;
+
     /// The relative KKT residual of multipliers @p mu with solutions @p w
     /// and their jumps @p g.
     KKTResidual

@@ -172,6 +172,8 @@ namespace bilayer
     double     refinement_fraction = 0.5;
     /// Add the interface residuals on Sigma to Kelly's indicators.
     bool interface_terms = true;
+    /// Factor on the complementarity term of the estimator.
+    double contact_weight = 1;
     /// Cells along Sigma of the Omega+ mesh; 0: as Omega-.
     unsigned int cells_along_sigma_plus = 0;
     ElementShape shape                  = ElementShape::quadrilateral;
