@@ -1,0 +1,81 @@
+// The complementarity term of the estimator (Interface::contact_residual).
+//
+// Example 1 on 32 cells along Sigma, solved to a KKT residual of 1e-12: the
+// discrete constraints hold at the nodes, so mu_c [u].nu vanishes at every
+// node of the crack. On a segment of the mu_1 mesh in contact at both ends
+// (gap 0) or open at both ends (mu_c = 0) the linear interpolants' product
+// vanishes too; only a segment with contact at one end and an open gap at
+// the other carries a non-zero term, and there it is positive. Example 1
+// has one contact zone, starting inside the crack and reaching its right
+// tip, so exactly one such segment exists. Without non-penetration there is
+// no term at all.
+
+#include <bilayer/parameters.h>
+#include <bilayer/study.h>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "reference.h"
+
+using namespace dealii;
+using namespace bilayer;
+
+int
+main()
+{
+  std::ostringstream quiet;
+  const std::string  scene =
+    "subsection Mesh\n set Cells along Sigma = 32\nend\n"
+    "subsection Loads\n set Constants = c = 1e-3*mu1\n"
+    " subsection Layer 1\n"
+    "  set Traction on bottom side = 0; c*x\n"
+    "  set Traction on top side = 0; -c*x\n end\nend\n"
+    "subsection Solver\n set Method = active set\n set Tolerance = 1e-12\n"
+    "end\n"
+    "subsection Output\n set Output directory = results\n"
+    " set Write VTU = false\n set Write interface CSV = false\n"
+    " set Terminal output = checks\nend\n";
+  for (const std::string contact : {"true", "false"})
+    {
+      Study study(
+        scene_from_string(scene +
+                            "subsection Contact\n set Non-penetration "
+                            "on the crack = " +
+                            contact + "\nend\n",
+                          "contact-estimator"),
+        quiet);
+      const CycleRecord &r = study.run_cycle(0);
+      const auto         segments =
+        study.interface().contact_residual(study.solutions(),
+                                           study.multipliers());
+      if (contact == "false")
+        {
+          std::cout << "without non-penetration: no complementarity term: "
+                    << yes(segments.empty()) << std::endl;
+          continue;
+        }
+      double largest = 0;
+      for (const auto &c : segments)
+        largest = std::max(largest, std::abs(c.complementarity));
+      unsigned int n_large = 0;
+      double       at = 0, value = 0;
+      for (const auto &c : segments)
+        if (std::abs(c.complementarity) > 1e-6 * largest)
+          {
+            ++n_large;
+            at    = 0.5 * (c.a + c.b);
+            value = c.complementarity;
+          }
+      if (getenv("BILAYER_TEST_DIAGNOSTICS"))
+        std::cerr << "segments " << segments.size() << ", largest " << largest
+                  << " at " << at << std::endl;
+      std::cout << "accepted: " << yes(r.accepted())
+                << ", segments on the crack: " << segments.size()
+                << ", non-zero (> 1e-6 of the largest) on exactly one: "
+                << yes(n_large == 1) << ", positive there: " << yes(value > 0)
+                << ", inside the crack, right of its centre: "
+                << yes(at > 0 && at < 0.5) << std::endl;
+    }
+}
