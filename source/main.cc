@@ -2,6 +2,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <bilayer/output.h>
 #include <bilayer/parameters.h>
 #include <bilayer/study.h>
 
@@ -64,18 +65,23 @@ main(int argc, char **argv)
           return 0;
         }
 
-      const bilayer::Scene scene = bilayer::read_scene(prm, argv[1], overrides);
-      std::filesystem::create_directories(scene.output.directory);
+      bilayer::Scene scene = bilayer::read_scene(prm, argv[1], overrides);
+      // Results appear in the output directory only when the run is over:
+      // a refused or failed run leaves an existing one as it was.
+      bilayer::StagedDirectory output(scene.output.directory);
+      scene.output.directory = output.staging();
       prm.print_parameters(scene.output.directory + "/used_parameters.prm",
                            ParameterHandler::ShortPRM);
 
-      bilayer::Study study(scene, std::cout);
-      if (!study.run())
+      bilayer::Study    study(scene, std::cout);
+      const bool        passed = study.run();
+      const std::string where  = output.commit(passed);
+      if (!passed)
         {
           const auto &last = study.records().back();
           std::cerr << "bilayer: cycle " << last.cycle
                     << " did not pass its checks: " << last.result.message
-                    << std::endl;
+                    << " (its results are in " << where << ")" << std::endl;
           return 2;
         }
       return 0;

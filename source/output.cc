@@ -77,6 +77,69 @@ namespace bilayer
   }
 
 
+  StagedDirectory::StagedDirectory(const std::string &directory)
+  {
+    namespace fs  = std::filesystem;
+    fs::path path = fs::path(directory).lexically_normal();
+    if (!path.empty() && path.filename().empty())
+      path = path.parent_path(); // a trailing separator
+    const std::string name = path.filename().string();
+    AssertThrow(!name.empty() && name != "." && name != "..",
+                ExcMessage("Output/Output directory must name a directory "
+                           "that a run may create or replace (not '.', '..' "
+                           "or a root), got '" +
+                           directory + "'"));
+    final_path   = path.string();
+    staging_path = final_path + ".partial";
+    std::error_code error;
+    AssertThrow(!fs::exists(final_path, error) ||
+                  fs::is_directory(final_path, error),
+                ExcMessage("Output/Output directory '" + directory +
+                           "' exists and is not a directory"));
+    fs::remove_all(staging_path, error);
+    fs::create_directories(staging_path, error);
+    AssertThrow(!error,
+                ExcMessage("Output/Output directory: cannot create '" +
+                           staging_path + "': " + error.message()));
+    // Directory permissions do not stop root: try a file too.
+    const std::string probe = staging_path + "/.probe";
+    std::ofstream(probe) << "";
+    AssertThrow(fs::exists(probe, error),
+                ExcMessage("Output/Output directory: cannot write into '" +
+                           staging_path + "'"));
+    fs::remove(probe, error);
+  }
+
+
+  StagedDirectory::~StagedDirectory()
+  {
+    if (!committed)
+      {
+        std::error_code error;
+        std::filesystem::remove_all(staging_path, error);
+      }
+  }
+
+
+  std::string
+  StagedDirectory::commit(const bool success)
+  {
+    namespace fs     = std::filesystem;
+    committed        = true;
+    const auto place = [&](const std::string &target) {
+      const std::string old = target + ".old";
+      std::error_code   error;
+      fs::remove_all(old, error);
+      if (fs::exists(target))
+        fs::rename(target, old);
+      fs::rename(staging_path, target);
+      fs::remove_all(old, error);
+      return target;
+    };
+    return place(success ? final_path : final_path + ".failed");
+  }
+
+
   void
   write_vtu(const std::string                              &directory,
             const unsigned int                              cycle,

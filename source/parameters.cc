@@ -4,6 +4,7 @@
 
 #include <bilayer/parameters.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <regex>
@@ -728,8 +729,11 @@ namespace bilayer
     prm.declare_entry("Output directory",
                       "results",
                       Patterns::Anything(),
-                      "Directory for all output files, created if missing; "
-                      "relative to the working directory.");
+                      "Directory for all output files, relative to the "
+                      "working directory, written whole: the run writes into "
+                      "DIR.partial, which replaces DIR when every cycle "
+                      "passes its checks and becomes DIR.failed when one "
+                      "does not (DIR then stays as it was).");
     prm.declare_entry("Write VTU",
                       "true",
                       Patterns::Bool(),
@@ -819,6 +823,48 @@ namespace bilayer
                                "/" + traction_entry(side) +
                                " must be '0; 0': the " + side_name(side) +
                                " side is clamped (Geometry/Clamped sides)"));
+
+    // Every load must be finite where it acts: tractions on their sides,
+    // the prescribed displacement on the clamped sides (1001 points each).
+    for (const Layer layer : {Layer::first, Layer::second})
+      for (const Side side : all_sides)
+        {
+          const unsigned int s = static_cast<unsigned int>(side);
+          const std::string  where =
+            "Loads/Layer " + std::to_string(static_cast<int>(layer) + 1) + "/" +
+            (geometry.clamped[s] ? std::string("Prescribed displacement") :
+                                   traction_entry(side));
+          const auto f = geometry.clamped[s] ?
+                           loads.prescribed_function(layer) :
+                           loads.traction_function(layer, side);
+          for (unsigned int i = 0; i <= 1000; ++i)
+            {
+              const double t = i / 1000.;
+              const double x =
+                side == Side::left ?
+                  geometry.x_min :
+                side == Side::right ?
+                  geometry.x_max :
+                  geometry.x_min + t * (geometry.x_max - geometry.x_min);
+              const double y =
+                side == Side::bottom ?
+                  geometry.y_min :
+                side == Side::top ?
+                  geometry.y_max :
+                  geometry.y_min + t * (geometry.y_max - geometry.y_min);
+              for (unsigned int c = 0; c < 2; ++c)
+                {
+                  const double       value = f->value(Point<2>(x, y), c);
+                  std::ostringstream point;
+                  point << "(" << x << ", " << y << ")";
+                  AssertThrow(std::isfinite(value),
+                              ExcMessage(where + " must be finite on the " +
+                                         side_name(side) + " side, got " +
+                                         std::to_string(value) + " at " +
+                                         point.str()));
+                }
+            }
+        }
   }
 
 
