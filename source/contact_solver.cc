@@ -145,7 +145,24 @@ namespace bilayer
               << result.predicted_threshold << ", theta = " << result.theta
               << std::defaultfloat << std::endl;
       }
-    const double theta   = result.theta;
+    const double theta = result.theta;
+    // After a divergence: the step that theta = auto would take, from a
+    // power iteration on the dual operator (its solves are counted).
+    const auto safe_step = [&]() -> std::string {
+      const SpectrumEstimate estimate =
+        estimate_lambda_max(subproblems,
+                            interface,
+                            parameters.spectrum_iterations);
+      extra_solves += estimate.subdomain_solves;
+      std::ostringstream text;
+      text << std::setprecision(4) << "; estimated safe step: theta <= "
+           << parameters.auto_theta_fraction * 2. / estimate.lambda_max *
+                (accelerated ? 0.5 : 1.)
+           << " (" << parameters.auto_theta_fraction
+           << (accelerated ? " / lambda_max" : " * 2 / lambda_max")
+           << ", or theta = auto)";
+      return text.str();
+    };
     result.setup_seconds = timer.wall_time();
     timer.restart();
     // Every return below goes through this.
@@ -295,7 +312,8 @@ namespace bilayer
           {
             result.diverged = true;
             result.message  = "diverged: the iterates are no longer finite "
-                              "(reduce Solver/Uzawa step theta)";
+                              "(reduce Solver/Uzawa step theta" +
+                             safe_step() + ")";
             return finish();
           }
         if (last_increment > parameters.divergence_factor * min_increment &&
@@ -308,7 +326,8 @@ namespace bilayer
                 << parameters.divergence_factor
                 << " (Solver/Divergence growth factor); theta = " << theta
                 << " is above the stability threshold, reduce "
-                   "Solver/Uzawa step theta";
+                   "Solver/Uzawa step theta"
+                << safe_step();
             result.message = msg.str();
             return finish();
           }

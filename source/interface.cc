@@ -511,12 +511,20 @@ namespace bilayer
   {
     KKTResidual  kkt;
     const double scale = displacement_scale(w);
-    kkt.primal =
-      scale > 0 ? discrete_violation(g) / scale : discrete_violation(g);
+    // A multiplier held at a bound of its box by a jump that pushes it
+    // outward is optimal there (mu = P(mu + theta g)): its jump is no
+    // residual. Only the bound p can hold a constraint violated this way.
+    BlockVector<double> free_g(g);
+    for (unsigned int i = 0; i < mu.size(); ++i)
+      if (lower(i) < upper(i) && ((mu(i) >= upper(i) && g(i) >= 0) ||
+                                  (mu(i) <= lower(i) && g(i) <= 0)))
+        free_g(i) = 0;
+    kkt.primal            = scale > 0 ? discrete_violation(free_g) / scale :
+                                        discrete_violation(free_g);
     const double mu_scale = mu.linfty_norm();
     if (mu_scale > 0)
       for (unsigned int i = 0; i < mu.size(); ++i)
-        if (lower(i) == 0. && upper(i) > 0.)
+        if (lower(i) == 0. && upper(i) > 0. && mu(i) < upper(i))
           {
             kkt.dual = std::max(kkt.dual, -mu(i) / mu_scale);
             if (scale > 0)

@@ -80,7 +80,7 @@ main(int argc, char **argv)
         {
           const auto &last = study.records().back();
           std::cerr << "bilayer: cycle " << last.cycle
-                    << " did not pass its checks: " << last.result.message
+                    << " did not pass its checks: " << last.failure()
                     << " (its results are in " << where << ")" << std::endl;
           return 2;
         }

@@ -59,6 +59,18 @@ namespace bilayer
   }
 
 
+  std::string
+  CycleRecord::failure() const
+  {
+    std::string failed;
+    for (const auto &c : checks)
+      if (!c.second)
+        failed += (failed.empty() ? "" : ", ") + c.first;
+    return failed + " (" + result.message + ")" +
+           (note.empty() ? "" : "; " + note);
+  }
+
+
   Study::Study(const Scene &scene, std::ostream &out)
     : scene(scene)
     , out(out)
@@ -242,6 +254,20 @@ namespace bilayer
                                r.kkt.value() <= tol);
     record.checks.emplace_back("multipliers below the bound p",
                                r.max_multiplier_over_bound < 1.);
+    if (r.max_multiplier_over_bound >= 1.)
+      {
+        std::ostringstream note;
+        note << std::setprecision(3) << "the multipliers reach the bound p = "
+             << scene.contact.multiplier_bound
+             << " (Contact/Multiplier bound p), so the constraints are "
+                "violated: integral (12) = "
+             << r.constraint_violation << " (relative "
+             << r.relative_constraint_violation
+             << "), largest interpenetration " << r.max_penetration
+             << "; estimate (12) bounds this by K/p: increase "
+                "Contact/Multiplier bound p";
+        record.note = note.str();
+      }
   }
 
 
@@ -278,7 +304,7 @@ namespace bilayer
           << (c.second ? "yes" : "NO") << std::endl;
     if (!record.accepted())
       out << "bilayer: cycle " << record.cycle
-          << " FAILED: " << record.result.message << std::endl;
+          << " FAILED: " << record.failure() << std::endl;
   }
 
 

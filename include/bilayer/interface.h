@@ -34,6 +34,12 @@ namespace bilayer
    *  - dual: largest max(-mu_c, 0) divided by max |mu|;
    *  - complementarity: largest |mu_c g| at crack nodes divided by
    *    max |mu| times the displacement scale.
+   * A multiplier held at a bound by a jump pushing it outward (at +-p, or
+   * mu_c = 0 with an open gap) is optimal for the bounded problem of
+   * paper.md §3, so its jump counts as no violation and no
+   * complementarity: the residual measures the solution of the problem
+   * with the bound p. Whether p is active is checked separately (the
+   * constraints are then violated, estimate (12)).
    */
   struct KKTResidual
   {

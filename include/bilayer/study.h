@@ -40,8 +40,16 @@ namespace bilayer
     /// subproblems, summed.
     double assembly_seconds = 0, factorisation_seconds = 0;
 
+    /// What the solver or the checks add to a failure (e.g. the bound p).
+    std::string note;
+
     bool
     accepted() const;
+
+    /// One line for a cycle that is not accepted: the failed checks, the
+    /// solver's message and the note.
+    std::string
+    failure() const;
   };
 
   /**
