@@ -294,7 +294,14 @@ namespace bilayer
             std::ostringstream msg;
             msg << "iteration limit " << parameters.max_iterations
                 << " reached (Solver/Maximum iterations) with stopping value "
-                << value << " > Solver/Tolerance " << parameters.tolerance;
+                << value << " > Solver/Tolerance " << parameters.tolerance
+                << (accelerated ?
+                      "; Solver/Method = active set needs far fewer "
+                      "iterations on ill-conditioned scenes" :
+                      "; first-order iterations slow down as the dual "
+                      "operator's condition number grows (fine meshes, "
+                      "material contrast): Solver/Method = accelerated or "
+                      "active set");
             result.message = msg.str();
             return finish();
           }

@@ -15,14 +15,15 @@ namespace bilayer
 {
   namespace
   {
-    /// A JSON number (null for NaN and infinities).
+    /// A JSON number (null for NaN and infinities), with the 17
+    /// significant digits that identify the double.
     std::string
     json(const double value)
     {
       if (!std::isfinite(value))
         return "null";
       std::ostringstream s;
-      s << std::setprecision(12) << value;
+      s << std::setprecision(17) << value;
       return s.str();
     }
 

@@ -4,6 +4,8 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -85,6 +87,44 @@ namespace bilayer
   }
 
 
+  namespace
+  {
+    /**
+     * Single-threaded, deal.II 9.4's FEValues reuses the mapping data of
+     * the previous cell when the next one is a translation of it; with more
+     * threads it recomputes them. The two differ in the last bits, which
+     * would make results depend on the number of threads. Reinitialising
+     * on a cell that is no translation of any mesh cell (a distorted
+     * reference cell of a mesh of its own) before each cell makes every
+     * run recompute, so that the assembled matrices are the same bits for
+     * any number of threads.
+     */
+    class SimilarityBreaker
+    {
+    public:
+      explicit SimilarityBreaker(const ReferenceCell cell_type)
+      {
+        GridGenerator::reference_cell(tria, cell_type);
+        GridTools::transform(
+          [](const Point<2> &p) {
+            return Point<2>(p[0] + 0.37 * p[0] * p[1] + 0.11 * p[1],
+                            1.3 * p[1] + 0.07 * p[0]);
+          },
+          tria);
+      }
+
+      void
+      apply(FEValues<2> &fe_values) const
+      {
+        fe_values.reinit(tria.begin_active());
+      }
+
+    private:
+      Triangulation<2> tria;
+    };
+  } // namespace
+
+
   void
   ElasticSubproblem::assemble(
     const std::array<bool, 4>                &clamped,
@@ -119,10 +159,12 @@ namespace bilayer
     const double mu     = material_.mu();
     const double lambda = material_.lambda();
 
+    const SimilarityBreaker fresh(cell_type);
     for (const auto &cell : dofs.active_cell_iterators())
       {
         cell_matrix = 0;
         cell_rhs    = 0;
+        fresh.apply(fe_values);
         fe_values.reinit(cell);
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
@@ -270,16 +312,33 @@ namespace bilayer
   }
 
 
+  namespace
+  {
+    /// x . y summed in index order: the same bits for any number of
+    /// threads (deal.II's parallel reductions group the sum by thread).
+    double
+    ordered_dot(const Vector<double> &x, const Vector<double> &y)
+    {
+      double sum = 0;
+      for (unsigned int i = 0; i < x.size(); ++i)
+        sum += x(i) * y(i);
+      return sum;
+    }
+  } // namespace
+
+
   double
   ElasticSubproblem::energy_norm_squared(const Vector<double> &w) const
   {
-    return stiffness.matrix_norm_square(w);
+    Vector<double> aw(w.size());
+    stiffness.vmult(aw, w); // row by row: independent of the threads
+    return ordered_dot(aw, w);
   }
 
 
   double
   ElasticSubproblem::energy(const Vector<double> &w) const
   {
-    return 0.5 * stiffness.matrix_norm_square(w) - traction_load * w;
+    return 0.5 * energy_norm_squared(w) - ordered_dot(traction_load, w);
   }
 } // namespace bilayer
