@@ -61,12 +61,14 @@ namespace bilayer
         interface.apply(z, loads); // -B^T G^{-1} r
         Threads::TaskGroup<void> tasks;
         for (unsigned int s = 0; s < 4; ++s)
-          tasks += Threads::new_task([&, s]() {
-            if (type == DualPreconditioner::dirichlet)
-              subproblems[s]->apply_schur_complement(loads[s], reactions[s]);
-            else
-              subproblems[s]->apply_interface_stiffness(loads[s], reactions[s]);
-          });
+          if (subproblems[s] != nullptr)
+            tasks += Threads::new_task([&, s]() {
+              if (type == DualPreconditioner::dirichlet)
+                subproblems[s]->apply_schur_complement(loads[s], reactions[s]);
+              else
+                subproblems[s]->apply_interface_stiffness(loads[s],
+                                                          reactions[s]);
+            });
         tasks.join_all();
         interface.jumps(reactions, z);
         interface.scale_by_weights(z); // B S (-B^T G^{-1} r)
@@ -121,10 +123,11 @@ namespace bilayer
       {
         Threads::TaskGroup<void> tasks;
         for (unsigned int s = 0; s < 4; ++s)
-          tasks += Threads::new_task([&, s]() {
-            subproblems[s]->setup_interface_operators(
-              parameters.preconditioner == DualPreconditioner::dirichlet);
-          });
+          if (subproblems[s] != nullptr)
+            tasks += Threads::new_task([&, s]() {
+              subproblems[s]->setup_interface_operators(
+                parameters.preconditioner == DualPreconditioner::dirichlet);
+            });
         tasks.join_all();
       }
     result.setup_seconds = timer.wall_time();

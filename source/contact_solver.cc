@@ -27,12 +27,13 @@ namespace bilayer
       interface.apply(multipliers, loads);
       Threads::TaskGroup<void> tasks;
       for (unsigned int s = 0; s < 4; ++s)
-        tasks += Threads::new_task([&, s]() {
-          if (homogeneous)
-            subproblems[s]->solve_homogeneous(loads[s], solutions[s]);
-          else
-            subproblems[s]->solve(loads[s], solutions[s]);
-        });
+        if (subproblems[s] != nullptr)
+          tasks += Threads::new_task([&, s]() {
+            if (homogeneous)
+              subproblems[s]->solve_homogeneous(loads[s], solutions[s]);
+            else
+              subproblems[s]->solve(loads[s], solutions[s]);
+          });
       tasks.join_all();
     }
   } // namespace
@@ -212,18 +213,20 @@ namespace bilayer
               {
                 value = 0;
                 for (unsigned int s = 0; s < 4; ++s)
-                  {
-                    difference = w[s];
-                    difference -= w_old[s];
-                    const double d = std::sqrt(
-                      subproblems[s]->energy_norm_squared(difference));
-                    const double n2 = subproblems[s]->energy_norm_squared(w[s]);
-                    const double denominator =
-                      parameters.stopping_rule == StoppingRule::paper ?
-                        n2 :
-                        std::sqrt(n2);
-                    value = std::max(value, d == 0. ? 0. : d / denominator);
-                  }
+                  if (subproblems[s] != nullptr)
+                    {
+                      difference = w[s];
+                      difference -= w_old[s];
+                      const double d = std::sqrt(
+                        subproblems[s]->energy_norm_squared(difference));
+                      const double n2 =
+                        subproblems[s]->energy_norm_squared(w[s]);
+                      const double denominator =
+                        parameters.stopping_rule == StoppingRule::paper ?
+                          n2 :
+                          std::sqrt(n2);
+                      value = std::max(value, d == 0. ? 0. : d / denominator);
+                    }
               }
           }
         result.stopping_value = value;

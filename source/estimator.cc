@@ -22,86 +22,92 @@ namespace bilayer
       interface_terms ? interface.contact_residual(w, mu) :
                         std::vector<Interface::ContactSegment>();
     for (unsigned int s = 0; s < 4; ++s)
-      {
-        const ElasticSubproblem &sub  = *subproblems[s];
-        const auto              &tria = sub.dof_handler().get_triangulation();
-        const unsigned int       sd   = s % 2;
-        if (eta[sd].size() != tria.n_active_cells())
-          eta[sd].reinit(tria.n_active_cells());
+      if (subproblems[s] != nullptr)
+        {
+          const ElasticSubproblem &sub  = *subproblems[s];
+          const auto              &tria = sub.dof_handler().get_triangulation();
+          const unsigned int       sd   = s % 2;
+          if (eta[sd].size() != tria.n_active_cells())
+            eta[sd].reinit(tria.n_active_cells());
 
-        Vector<float> kelly(tria.n_active_cells());
-        const auto    face_quadrature =
-          ReferenceCells::Line.get_gauss_type_quadrature<1>(sub.fe().degree +
-                                                            1);
-        KellyErrorEstimator<2>::estimate(
-          sub.mapping(), sub.dof_handler(), face_quadrature, {}, w[s], kelly);
-        for (unsigned int i = 0; i < kelly.size(); ++i)
-          eta[sd][i] = std::sqrt(double(eta[sd][i]) * eta[sd][i] +
-                                 double(kelly[i]) * kelly[i]);
-        if (!interface_terms)
-          continue;
+          Vector<float> kelly(tria.n_active_cells());
+          const auto    face_quadrature =
+            ReferenceCells::Line.get_gauss_type_quadrature<1>(sub.fe().degree +
+                                                              1);
+          KellyErrorEstimator<2>::estimate(
+            sub.mapping(), sub.dof_handler(), face_quadrature, {}, w[s], kelly);
+          for (unsigned int i = 0; i < kelly.size(); ++i)
+            eta[sd][i] = std::sqrt(double(eta[sd][i]) * eta[sd][i] +
+                                   double(kelly[i]) * kelly[i]);
+          if (!interface_terms)
+            continue;
 
-        // The residual of the multiplier load on the Sigma faces.
-        FEFaceValues<2>                    fe_face(sub.mapping(),
-                                sub.fe(),
-                                face_quadrature,
-                                update_gradients | update_quadrature_points |
-                                  update_normal_vectors | update_JxW_values);
-        const FEValuesExtractors::Vector   displacement(0);
-        std::vector<SymmetricTensor<2, 2>> strain(face_quadrature.size());
-        const double                       mu_material = sub.material().mu();
-        const double                       lambda = sub.material().lambda();
-        for (const auto &cell : sub.dof_handler().active_cell_iterators())
-          for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                (cell->face(f)->boundary_id() == BoundaryIds::glued ||
-                 cell->face(f)->boundary_id() == BoundaryIds::crack))
-              {
-                fe_face.reinit(cell, f);
-                fe_face[displacement].get_function_symmetric_gradients(w[s],
-                                                                       strain);
-                double sum = 0;
-                for (const unsigned int q : fe_face.quadrature_point_indices())
-                  {
-                    const SymmetricTensor<2, 2> stress =
-                      2 * mu_material * strain[q] +
-                      lambda * trace(strain[q]) * unit_symmetric_tensor<2>();
-                    const Tensor<1, 2> residual =
-                      stress * fe_face.normal_vector(q) -
-                      interface.multiplier_traction(
-                        mu, s, fe_face.quadrature_point(q)[0]);
-                    sum += (residual * residual) /
-                           (4 * mu_material * mu_material) * fe_face.JxW(q);
-                  }
-                double term = cell->face(f)->diameter() / 24. * sum;
-                // Layer 1 on the crack: the complementarity of the segments
-                // of the mu_1 mesh under the face, by overlap.
-                if (s < 2 && cell->face(f)->boundary_id() == BoundaryIds::crack)
-                  {
-                    const double x0 = std::min(cell->face(f)->vertex(0)[0],
-                                               cell->face(f)->vertex(1)[0]);
-                    const double x1 = std::max(cell->face(f)->vertex(0)[0],
-                                               cell->face(f)->vertex(1)[0]);
-                    auto         it =
-                      std::lower_bound(contact.begin(),
-                                       contact.end(),
-                                       x0,
-                                       [](const Interface::ContactSegment &c,
-                                          const double x) { return c.b <= x; });
-                    for (; it != contact.end() && it->a < x1; ++it)
-                      {
-                        const double overlap =
-                          std::min(x1, it->b) - std::max(x0, it->a);
-                        if (overlap > 0)
-                          term += contact_weight *
-                                  std::abs(it->complementarity) * overlap /
-                                  (it->b - it->a) / (2 * mu_material);
-                      }
-                  }
-                const unsigned int i = cell->active_cell_index();
-                eta[sd][i] = std::sqrt(double(eta[sd][i]) * eta[sd][i] + term);
-              }
-      }
+          // The residual of the multiplier load on the Sigma faces.
+          FEFaceValues<2>                    fe_face(sub.mapping(),
+                                  sub.fe(),
+                                  face_quadrature,
+                                  update_gradients | update_quadrature_points |
+                                    update_normal_vectors | update_JxW_values);
+          const FEValuesExtractors::Vector   displacement(0);
+          std::vector<SymmetricTensor<2, 2>> strain(face_quadrature.size());
+          const double                       mu_material = sub.material().mu();
+          const double                       lambda = sub.material().lambda();
+          for (const auto &cell : sub.dof_handler().active_cell_iterators())
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  (cell->face(f)->boundary_id() == BoundaryIds::glued ||
+                   cell->face(f)->boundary_id() == BoundaryIds::crack))
+                {
+                  fe_face.reinit(cell, f);
+                  fe_face[displacement].get_function_symmetric_gradients(
+                    w[s], strain);
+                  double sum = 0;
+                  for (const unsigned int q :
+                       fe_face.quadrature_point_indices())
+                    {
+                      const SymmetricTensor<2, 2> stress =
+                        2 * mu_material * strain[q] +
+                        lambda * trace(strain[q]) * unit_symmetric_tensor<2>();
+                      const Tensor<1, 2> residual =
+                        stress * fe_face.normal_vector(q) -
+                        interface.multiplier_traction(
+                          mu, s, fe_face.quadrature_point(q)[0]);
+                      sum += (residual * residual) /
+                             (4 * mu_material * mu_material) * fe_face.JxW(q);
+                    }
+                  double term = cell->face(f)->diameter() / 24. * sum;
+                  // Layer 1 on the crack: the complementarity of the segments
+                  // of the mu_1 mesh under the face, by overlap.
+                  if (s < 2 &&
+                      cell->face(f)->boundary_id() == BoundaryIds::crack)
+                    {
+                      const double x0 = std::min(cell->face(f)->vertex(0)[0],
+                                                 cell->face(f)->vertex(1)[0]);
+                      const double x1 = std::max(cell->face(f)->vertex(0)[0],
+                                                 cell->face(f)->vertex(1)[0]);
+                      auto         it =
+                        std::lower_bound(contact.begin(),
+                                         contact.end(),
+                                         x0,
+                                         [](const Interface::ContactSegment &c,
+                                            const double x) {
+                                           return c.b <= x;
+                                         });
+                      for (; it != contact.end() && it->a < x1; ++it)
+                        {
+                          const double overlap =
+                            std::min(x1, it->b) - std::max(x0, it->a);
+                          if (overlap > 0)
+                            term += contact_weight *
+                                    std::abs(it->complementarity) * overlap /
+                                    (it->b - it->a) / (2 * mu_material);
+                        }
+                    }
+                  const unsigned int i = cell->active_cell_index();
+                  eta[sd][i] =
+                    std::sqrt(double(eta[sd][i]) * eta[sd][i] + term);
+                }
+        }
     return eta;
   }
 } // namespace bilayer

@@ -87,6 +87,13 @@ namespace bilayer
   }
 
 
+  bool
+  Interface::active(const unsigned int b) const
+  {
+    return present(block_pair[b][0]) && present(block_pair[b][1]);
+  }
+
+
   void
   Interface::setup(const std::array<const ElasticSubproblem *, 4> &subs)
   {
@@ -116,11 +123,16 @@ namespace bilayer
     meshes[0].breakpoints = merge_breakpoints(traces[0], traces[1], tol);
     meshes[1].breakpoints = traces[0];
     meshes[2].breakpoints = traces[1];
+    // Without layer 2 the blocks that glue the layers have no nodes.
+    for (unsigned int b = 1; b < 3; ++b)
+      if (!active(b))
+        meshes[b].breakpoints.clear();
     const QGaussLobatto<1> lobatto(degree + 1);
     for (auto &mesh : meshes)
       {
-        const unsigned int n_segments = mesh.breakpoints.size() - 1;
-        const unsigned int n          = n_segments * degree + 1;
+        const unsigned int n_segments =
+          std::max<std::size_t>(mesh.breakpoints.size(), 1) - 1;
+        const unsigned int n = n_segments > 0 ? n_segments * degree + 1 : 0;
         mesh.node_x.assign(n, 0.);
         mesh.node_weight.assign(n, 0.);
         for (unsigned int e = 0; e < n_segments; ++e)
@@ -183,7 +195,8 @@ namespace bilayer
     // common refinement of all traces (= the union mesh of block 0).
     unsigned int max_degree = degree;
     for (const auto *sub : subs)
-      max_degree = std::max(max_degree, sub->fe().degree);
+      if (sub != nullptr)
+        max_degree = std::max(max_degree, sub->fe().degree);
     const QGauss<1> gauss(max_degree + 2);
     const auto      gauss_points = [&](const std::vector<double> &b,
                                   const auto                &add) {
@@ -201,33 +214,37 @@ namespace bilayer
 
     std::vector<double> values;
     for (unsigned int b = 0; b < 3; ++b)
-      {
-        const unsigned int n = meshes[b].node_x.size();
-        for (unsigned int j = 0; j < 2; ++j)
-          {
-            const unsigned int s = block_pair[b][j];
-            std::vector<std::tuple<unsigned int, double, double>> points;
-            if (contact.coupling == MultiplierCoupling::lumped)
-              for (unsigned int a = 0; a < n; ++a)
-                points.emplace_back(a,
-                                    meshes[b].node_x[a],
-                                    meshes[b].node_weight[a]);
-            else
-              gauss_points(
-                merge_breakpoints(meshes[b].breakpoints, traces[s % 2], tol),
-                [&](const double x, const double w) {
-                  const unsigned int e = multiplier_shape_values(b, x, values);
-                  for (unsigned int i = 0; i <= degree; ++i)
-                    points.emplace_back(multiplier_node(e, i),
-                                        x,
-                                        w * values[i]);
-                });
-            build_point_matrix(s, points, n, coupling[b][j]);
-            build_point_matrix(s, nodal(b), n, evaluation[b][j]);
-          }
-      }
+      if (active(b))
+        {
+          const unsigned int n = meshes[b].node_x.size();
+          for (unsigned int j = 0; j < 2; ++j)
+            {
+              const unsigned int s = block_pair[b][j];
+              std::vector<std::tuple<unsigned int, double, double>> points;
+              if (contact.coupling == MultiplierCoupling::lumped)
+                for (unsigned int a = 0; a < n; ++a)
+                  points.emplace_back(a,
+                                      meshes[b].node_x[a],
+                                      meshes[b].node_weight[a]);
+              else
+                gauss_points(merge_breakpoints(meshes[b].breakpoints,
+                                               traces[s % 2],
+                                               tol),
+                             [&](const double x, const double w) {
+                               const unsigned int e =
+                                 multiplier_shape_values(b, x, values);
+                               for (unsigned int i = 0; i <= degree; ++i)
+                                 points.emplace_back(multiplier_node(e, i),
+                                                     x,
+                                                     w * values[i]);
+                             });
+              build_point_matrix(s, points, n, coupling[b][j]);
+              build_point_matrix(s, nodal(b), n, evaluation[b][j]);
+            }
+        }
     for (unsigned int s = 0; s < 4; ++s)
-      build_point_matrix(s, nodal(0), n_nodes(), node_traces[s]);
+      if (present(s))
+        build_point_matrix(s, nodal(0), n_nodes(), node_traces[s]);
 
     gauss_x.clear();
     gauss_weight.clear();
@@ -239,7 +256,8 @@ namespace bilayer
     for (unsigned int q = 0; q < gauss_x.size(); ++q)
       at_gauss.emplace_back(q, gauss_x[q], 1.0);
     for (unsigned int s = 0; s < 4; ++s)
-      build_point_matrix(s, at_gauss, gauss_x.size(), gauss_traces[s]);
+      if (present(s))
+        build_point_matrix(s, at_gauss, gauss_x.size(), gauss_traces[s]);
   }
 
 
@@ -252,7 +270,7 @@ namespace bilayer
     std::vector<double> values;
     for (unsigned int b = 0; b < 3; ++b)
       for (unsigned int j = 0; j < 2; ++j)
-        if (block_pair[b][j] == s)
+        if (block_pair[b][j] == s && active(b))
           {
             const unsigned int e = multiplier_shape_values(b, x, values);
             for (unsigned int i = 0; i <= degree; ++i)
@@ -285,23 +303,24 @@ namespace bilayer
       return;
     const FE_Q<1> fe_old(QGaussLobatto<1>(old.degree + 1));
     for (unsigned int b = 0; b < 3; ++b)
-      {
-        const auto &bp = old.breakpoints[b];
-        for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
-          {
-            const double x  = meshes[b].node_x[a];
-            const auto   it = std::upper_bound(bp.begin() + 1, bp.end() - 1, x);
-            const unsigned int e = (it - bp.begin()) - 1;
-            const double       t = (x - bp[e]) / (bp[e + 1] - bp[e]);
-            for (unsigned int i = 0; i <= degree; ++i)
-              {
-                const double v = fe_old.shape_value(i, Point<1>(t));
-                for (unsigned int c = 0; c < 2; ++c)
-                  mu.block(b)(2 * a + c) +=
-                    v * old.values.block(b)(2 * multiplier_node(e, i) + c);
-              }
-          }
-      }
+      if (active(b) && old.breakpoints[b].size() >= 2)
+        {
+          const auto &bp = old.breakpoints[b];
+          for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
+            {
+              const double x = meshes[b].node_x[a];
+              const auto it = std::upper_bound(bp.begin() + 1, bp.end() - 1, x);
+              const unsigned int e = (it - bp.begin()) - 1;
+              const double       t = (x - bp[e]) / (bp[e + 1] - bp[e]);
+              for (unsigned int i = 0; i <= degree; ++i)
+                {
+                  const double v = fe_old.shape_value(i, Point<1>(t));
+                  for (unsigned int c = 0; c < 2; ++c)
+                    mu.block(b)(2 * a + c) +=
+                      v * old.values.block(b)(2 * multiplier_node(e, i) + c);
+                }
+            }
+        }
     project(mu);
   }
 
@@ -395,10 +414,10 @@ namespace bilayer
   Interface::apply(const BlockVector<double> &mu, Solutions &loads) const
   {
     for (unsigned int s = 0; s < 4; ++s)
-      loads[s].reinit(subproblems[s]->n_dofs());
+      loads[s].reinit(present(s) ? subproblems[s]->n_dofs() : 0);
     Vector<double> term;
     for (unsigned int b = 0; b < 3; ++b)
-      for (unsigned int j = 0; j < 2; ++j)
+      for (unsigned int j = 0; j < 2 && active(b); ++j)
         {
           const unsigned int s = block_pair[b][j];
           term.reinit(subproblems[s]->n_dofs());
@@ -431,13 +450,14 @@ namespace bilayer
     g.reinit(lower, true);
     Vector<double> first, second;
     for (unsigned int b = 0; b < 3; ++b)
-      {
-        first.reinit(lower.block(b).size());
-        second.reinit(lower.block(b).size());
-        op[b][0].matrix.vmult(first, w[block_pair[b][0]]);
-        op[b][1].matrix.vmult(second, w[block_pair[b][1]]);
-        difference(first, second, b, g);
-      }
+      if (active(b))
+        {
+          first.reinit(lower.block(b).size());
+          second.reinit(lower.block(b).size());
+          op[b][0].matrix.vmult(first, w[block_pair[b][0]]);
+          op[b][1].matrix.vmult(second, w[block_pair[b][1]]);
+          difference(first, second, b, g);
+        }
   }
 
 
@@ -496,10 +516,11 @@ namespace bilayer
     double         scale = 0;
     Vector<double> trace(2 * n_nodes());
     for (unsigned int s = 0; s < 4; ++s)
-      {
-        node_traces[s].matrix.vmult(trace, w[s]);
-        scale = std::max(scale, trace.linfty_norm());
-      }
+      if (present(s))
+        {
+          node_traces[s].matrix.vmult(trace, w[s]);
+          scale = std::max(scale, trace.linfty_norm());
+        }
     return scale;
   }
 
@@ -566,7 +587,7 @@ namespace bilayer
           columns;
         for (unsigned int b = 0; b < 3; ++b)
           for (unsigned int j = 0; j < 2; ++j)
-            if (block_pair[b][j] == s)
+            if (block_pair[b][j] == s && active(b))
               {
                 const auto &matrix = coupling[b][j].matrix;
                 for (unsigned int r = 0; r < matrix.m(); ++r)
@@ -642,11 +663,15 @@ namespace bilayer
     report.kkt = kkt_residual(w, g, mu);
 
     // The integral (12) and the pointwise penetration at the Gauss points.
+    // Without layer 2 its traces are those of layer 1 (no layer gap).
     std::array<Vector<double>, 4> t;
     for (unsigned int s = 0; s < 4; ++s)
       {
         t[s].reinit(2 * gauss_x.size());
-        gauss_traces[s].matrix.vmult(t[s], w[s]);
+        if (present(s))
+          gauss_traces[s].matrix.vmult(t[s], w[s]);
+        else
+          gauss_traces[s % 2].matrix.vmult(t[s], w[s % 2]);
       }
     const double tol  = 1e-10 * (geometry.x_max - geometry.x_min);
     double       size = 0;
@@ -672,7 +697,8 @@ namespace bilayer
             density += std::abs(t[u_minus](2 * q + c) - t[v_minus](2 * q + c));
             density += std::abs(t[u_plus](2 * q + c) - t[v_plus](2 * q + c));
             for (unsigned int s = 0; s < 4; ++s)
-              size += gauss_weight[q] * std::abs(t[s](2 * q + c));
+              if (present(s))
+                size += gauss_weight[q] * std::abs(t[s](2 * q + c));
           }
         report.constraint_violation += gauss_weight[q] * density;
       }
@@ -736,16 +762,20 @@ namespace bilayer
                        const Solutions           &w,
                        const BlockVector<double> &mu) const
   {
+    // Without layer 2 its columns repeat layer 1 (gaps and mu+- zero).
     std::array<Vector<double>, 4> t;
     for (unsigned int s = 0; s < 4; ++s)
       {
         t[s].reinit(2 * n_nodes());
-        node_traces[s].matrix.vmult(t[s], w[s]);
+        node_traces[present(s) ? s : s % 2].matrix.vmult(
+          t[s], w[present(s) ? s : s % 2]);
       }
     // mu- and mu+ at the nodes of block 0.
     std::vector<double> values;
     const auto          value =
       [&](const unsigned int b, const double x, const unsigned int c) {
+        if (!active(b))
+          return 0.;
         const unsigned int e      = multiplier_shape_values(b, x, values);
         double             result = 0;
         for (unsigned int i = 0; i <= degree; ++i)

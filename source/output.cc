@@ -156,48 +156,49 @@ namespace bilayer
     std::array<DataOut<2>, 4>                         data_outs;
     std::array<Vector<float>, 4>                      layers, subdomains;
     for (unsigned int s = 0; s < 4; ++s)
-      {
-        const ElasticSubproblem &sub      = *subproblems[s];
-        DataOut<2>              &data_out = data_outs[s];
-        data_out.attach_dof_handler(sub.dof_handler());
-        const std::vector<std::string> names(2, "displacement");
-        const std::vector<
-          DataComponentInterpretation::DataComponentInterpretation>
-          interpretation(
-            2, DataComponentInterpretation::component_is_part_of_vector);
-        data_out.add_data_vector(solutions[s],
-                                 names,
-                                 DataOut<2>::type_dof_data,
-                                 interpretation);
-        stresses.push_back(
-          std::make_unique<StressPostprocessor>(sub.material()));
-        data_out.add_data_vector(solutions[s], *stresses.back());
+      if (subproblems[s] != nullptr)
+        {
+          const ElasticSubproblem &sub      = *subproblems[s];
+          DataOut<2>              &data_out = data_outs[s];
+          data_out.attach_dof_handler(sub.dof_handler());
+          const std::vector<std::string> names(2, "displacement");
+          const std::vector<
+            DataComponentInterpretation::DataComponentInterpretation>
+            interpretation(
+              2, DataComponentInterpretation::component_is_part_of_vector);
+          data_out.add_data_vector(solutions[s],
+                                   names,
+                                   DataOut<2>::type_dof_data,
+                                   interpretation);
+          stresses.push_back(
+            std::make_unique<StressPostprocessor>(sub.material()));
+          data_out.add_data_vector(solutions[s], *stresses.back());
 
-        const unsigned int n_cells =
-          sub.dof_handler().get_triangulation().n_active_cells();
-        layers[s].reinit(n_cells);
-        subdomains[s].reinit(n_cells);
-        layers[s]     = sub.layer() == Layer::first ? 1.f : 2.f;
-        subdomains[s] = sub.subdomain() == Subdomain::minus ? -1.f : 1.f;
-        data_out.add_data_vector(layers[s],
-                                 "layer",
-                                 DataOut<2>::type_cell_data);
-        data_out.add_data_vector(subdomains[s],
-                                 "subdomain",
-                                 DataOut<2>::type_cell_data);
+          const unsigned int n_cells =
+            sub.dof_handler().get_triangulation().n_active_cells();
+          layers[s].reinit(n_cells);
+          subdomains[s].reinit(n_cells);
+          layers[s]     = sub.layer() == Layer::first ? 1.f : 2.f;
+          subdomains[s] = sub.subdomain() == Subdomain::minus ? -1.f : 1.f;
+          data_out.add_data_vector(layers[s],
+                                   "layer",
+                                   DataOut<2>::type_cell_data);
+          data_out.add_data_vector(subdomains[s],
+                                   "subdomain",
+                                   DataOut<2>::type_cell_data);
 
-        const bool simplex = !sub.dof_handler()
-                                .get_triangulation()
-                                .all_reference_cells_are_hyper_cube();
-        data_out.build_patches(sub.mapping(), simplex ? 1 : sub.fe().degree);
+          const bool simplex = !sub.dof_handler()
+                                  .get_triangulation()
+                                  .all_reference_cells_are_hyper_cube();
+          data_out.build_patches(sub.mapping(), simplex ? 1 : sub.fe().degree);
 
-        std::string piece =
-          stem.str() + "-" + std::string(1, sub.name()[0]) +
-          (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus") + ".vtu";
-        write_atomically(directory + "/" + piece,
-                         [&](std::ostream &out) { data_out.write_vtu(out); });
-        pieces.push_back(piece);
-      }
+          std::string piece =
+            stem.str() + "-" + std::string(1, sub.name()[0]) +
+            (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus") + ".vtu";
+          write_atomically(directory + "/" + piece,
+                           [&](std::ostream &out) { data_out.write_vtu(out); });
+          pieces.push_back(piece);
+        }
     write_atomically(directory + "/" + stem.str() + ".pvtu",
                      [&](std::ostream &out) {
                        data_outs[0].write_pvtu_record(out, pieces);

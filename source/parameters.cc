@@ -311,6 +311,14 @@ namespace bilayer
   {
     prm.enter_subsection("Materials");
     const MaterialParameters defaults;
+    prm.declare_entry("Number of layers",
+                      "2",
+                      Patterns::Integer(1, 2),
+                      "2: the two glued layers of the paper; 1: layer 2 is "
+                      "absent, a single elastic body with a through crack "
+                      "(only the layer-1 subproblems and the crack and "
+                      "gluing multipliers are built; Materials/Layer 2 and "
+                      "Loads/Layer 2 are not used) [-].");
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
@@ -336,6 +344,7 @@ namespace bilayer
   MaterialParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Materials");
+    n_layers = prm.get_integer("Number of layers");
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
@@ -814,6 +823,12 @@ namespace bilayer
                              std::to_string(static_cast<int>(layer) + 1) +
                              " must be 1 or 2 on triangles, got " +
                              std::to_string(mesh.degree(layer))));
+    for (const Side side : all_sides)
+      AssertThrow(materials.n_layers == 2 ||
+                    loads.traction_is_zero(Layer::second, side),
+                  ExcMessage("Loads/Layer 2/" + traction_entry(side) +
+                             " must be '0; 0': layer 2 is absent "
+                             "(Materials/Number of layers = 1)"));
     for (const Layer layer : {Layer::first, Layer::second})
       for (const Side side : all_sides)
         AssertThrow(!geometry.clamped[static_cast<unsigned int>(side)] ||

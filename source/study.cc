@@ -143,31 +143,32 @@ namespace bilayer
     record.M     = domain.n_outer_vertices();
 
     for (const Layer layer : {Layer::first, Layer::second})
-      {
-        const auto prescribed = scene.loads.prescribed_function(layer);
-        std::array<std::unique_ptr<FunctionParser<2>>, 4> traction_owners;
-        std::array<const Function<2> *, 4>                traction;
-        for (unsigned int side = 0; side < 4; ++side)
-          {
-            traction_owners[side] =
-              scene.loads.traction_function(layer, static_cast<Side>(side));
-            traction[side] = traction_owners[side].get();
-          }
-        for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
-          {
-            auto &sub = subproblems[Interface::index(layer, sd)];
-            sub       = std::make_unique<ElasticSubproblem>(
-              layer,
-              sd,
-              domain.triangulation(sd),
-              scene.mesh.degree(layer),
-              scene.materials.layer[static_cast<unsigned int>(layer)]);
-            sub->setup(scene.geometry.clamped, *prescribed, traction);
-            record.dofs += sub->n_dofs();
-            record.assembly_seconds += sub->assembly_seconds;
-            record.factorisation_seconds += sub->factorisation_seconds;
-          }
-      }
+      if (scene.materials.has_layer(layer))
+        {
+          const auto prescribed = scene.loads.prescribed_function(layer);
+          std::array<std::unique_ptr<FunctionParser<2>>, 4> traction_owners;
+          std::array<const Function<2> *, 4>                traction;
+          for (unsigned int side = 0; side < 4; ++side)
+            {
+              traction_owners[side] =
+                scene.loads.traction_function(layer, static_cast<Side>(side));
+              traction[side] = traction_owners[side].get();
+            }
+          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+            {
+              auto &sub = subproblems[Interface::index(layer, sd)];
+              sub       = std::make_unique<ElasticSubproblem>(
+                layer,
+                sd,
+                domain.triangulation(sd),
+                scene.mesh.degree(layer),
+                scene.materials.layer[static_cast<unsigned int>(layer)]);
+              sub->setup(scene.geometry.clamped, *prescribed, traction);
+              record.dofs += sub->n_dofs();
+              record.assembly_seconds += sub->assembly_seconds;
+              record.factorisation_seconds += sub->factorisation_seconds;
+            }
+        }
     std::array<const ElasticSubproblem *, 4> views;
     Subproblems                              solvers;
     for (unsigned int s = 0; s < 4; ++s)
@@ -197,7 +198,8 @@ namespace bilayer
     record.solve_seconds = solve_timer.wall_time();
 
     for (unsigned int s = 0; s < 4; ++s)
-      record.energy += subproblems[s]->energy(w[s]);
+      if (subproblems[s])
+        record.energy += subproblems[s]->energy(w[s]);
     record.report = coupling.assess(w, mu);
     check(record);
     if (scene.mesh.refinement == Refinement::adaptive)

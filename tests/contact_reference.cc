@@ -23,6 +23,12 @@
 //
 // The discrete problems are identical, so the comparison only sees the error
 // of the Uzawa iteration, stopped at relative multiplier change 1e-10.
+//
+// The same comparison for the one-layer scene (Materials/Number of layers =
+// 1): the reference is then the classical single-body crack problem, one
+// elastic body (u- and u+ glued off the crack) with non-penetration on the
+// crack, mu_c(a) = r(u+_y(a)) / D_a; bilayer builds only the layer-1
+// subproblems and the crack and gluing multipliers.
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -147,11 +153,12 @@ end
     return result;
   }
 
-  /// The reference solver: four subproblems in one global system.
+  /// The reference solver: the subproblems (four, or u- and u+ for one
+  /// layer) in one global system.
   class Reference
   {
   public:
-    Reference();
+    explicit Reference(const unsigned int n_layers);
 
     /// Solve with the crack vertices in @p active closed; fills w.
     void
@@ -187,6 +194,7 @@ end
     std::array<Triangulation<2>, 2>               tria;
     FESystem<2>                                   fe;
     MappingQ1<2>                                  mapping;
+    const unsigned int                            n_sub;
     std::array<std::unique_ptr<DoFHandler<2>>, 4> dofs;
     std::array<unsigned int, 5>                   offset;
     std::array<std::map<long long, std::array<types::global_dof_index, 2>>, 4>
@@ -200,8 +208,9 @@ end
   };
 
 
-  Reference::Reference()
+  Reference::Reference(const unsigned int n_layers)
     : fe(FE_Q<2>(1), 2)
+    , n_sub(2 * n_layers)
   {
     GridGenerator::subdivided_hyper_rectangle(
       tria[0], {8, 4}, Point<2>(-1, -1), Point<2>(1, 0), true);
@@ -215,7 +224,7 @@ end
 
     // s = 2 layer + subdomain: u-, u+, v-, v+.
     offset[0] = 0;
-    for (unsigned int s = 0; s < 4; ++s)
+    for (unsigned int s = 0; s < n_sub; ++s)
       {
         dofs[s] = std::make_unique<DoFHandler<2>>(tria[s % 2]);
         dofs[s]->distribute_dofs(fe);
@@ -248,9 +257,9 @@ end
           crack_nodes.push_back(key_of(xs[i]));
       }
 
-    DynamicSparsityPattern               dsp(offset[4]);
+    DynamicSparsityPattern               dsp(offset[n_sub]);
     std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
-    for (unsigned int s = 0; s < 4; ++s)
+    for (unsigned int s = 0; s < n_sub; ++s)
       for (const auto &cell : dofs[s]->active_cell_iterators())
         {
           cell->get_dof_indices(local);
@@ -262,7 +271,7 @@ end
         }
     plain_sparsity.copy_from(dsp);
     stiffness.reinit(plain_sparsity);
-    load.reinit(offset[4]);
+    load.reinit(offset[n_sub]);
     AffineConstraints<double> none;
     none.close();
     assemble(none, stiffness, load);
@@ -291,7 +300,7 @@ end
     std::vector<types::global_dof_index> local(n);
     const FEValuesExtractors::Vector     displacement(0);
 
-    for (unsigned int s = 0; s < 4; ++s)
+    for (unsigned int s = 0; s < n_sub; ++s)
       {
         const unsigned int layer  = s / 2;
         const double       mu     = lame_mu(layer);
@@ -356,25 +365,26 @@ end
       {
         if (clamped.count(u_minus[0]) > 0)
           continue; // a clamped end of Sigma: no multipliers there
-        const auto &u_plus  = sigma[1].at(x);
-        const auto &v_minus = sigma[2].at(x);
-        const auto &v_plus  = sigma[3].at(x);
+        const auto &u_plus = sigma[1].at(x);
         const bool  crack =
           std::find(crack_nodes.begin(), crack_nodes.end(), x) !=
           crack_nodes.end();
         for (unsigned int c = 0; c < 2; ++c)
           {
-            tie(v_minus[c], u_minus[c]);
-            tie(v_plus[c], u_plus[c]);
+            if (n_sub == 4)
+              {
+                tie(sigma[2].at(x)[c], u_minus[c]);
+                tie(sigma[3].at(x)[c], u_plus[c]);
+              }
             if (!crack || (c == 1 && active.count(x) > 0))
               tie(u_plus[c], u_minus[c]);
           }
       }
     constraints.close();
 
-    DynamicSparsityPattern               dsp(offset[4]);
+    DynamicSparsityPattern               dsp(offset[n_sub]);
     std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
-    for (unsigned int s = 0; s < 4; ++s)
+    for (unsigned int s = 0; s < n_sub; ++s)
       for (const auto &cell : dofs[s]->active_cell_iterators())
         {
           cell->get_dof_indices(local);
@@ -385,7 +395,7 @@ end
     SparsityPattern sparsity;
     sparsity.copy_from(dsp);
     SparseMatrix<double> system_matrix(sparsity);
-    Vector<double>       rhs(offset[4]);
+    Vector<double>       rhs(offset[n_sub]);
     assemble(constraints, system_matrix, rhs);
 
     SparseDirectUMFPACK direct;
@@ -394,7 +404,7 @@ end
     direct.solve(w);
     constraints.distribute(w);
 
-    residual.reinit(offset[4]);
+    residual.reinit(offset[n_sub]);
     stiffness.vmult(residual, w);
     residual -= load;
   }
@@ -410,7 +420,8 @@ end
   double
   Reference::contact_force(const long long x) const
   {
-    return (residual(sigma[1].at(x)[1]) + residual(sigma[3].at(x)[1])) /
+    return (residual(sigma[1].at(x)[1]) +
+            (n_sub == 4 ? residual(sigma[3].at(x)[1]) : 0.)) /
            node_weight.at(x);
   }
 
@@ -444,17 +455,21 @@ end
 } // namespace
 
 
-int
-main()
+void
+compare(const unsigned int n_layers)
 {
-  const bilayer::Scene scene =
-    bilayer::scene_from_string(scene_text, "reference");
+  std::cout << (n_layers == 2 ? "two layers:" : "one layer (layer 2 absent):")
+            << std::endl;
+  const bilayer::Scene scene = bilayer::scene_from_string(
+    std::string(scene_text) + "subsection Materials\n set Number of layers = " +
+      std::to_string(n_layers) + "\nend\n",
+    "reference");
 
   bilayer::Study              study(scene, std::cout);
   const bilayer::CycleRecord &record = study.run_cycle(0);
 
   // The reference: primal-dual active set, starting with the crack closed.
-  Reference           reference;
+  Reference           reference(n_layers);
   std::set<long long> active(reference.crack_nodes.begin(),
                              reference.crack_nodes.end());
   unsigned int        iterations = 0;
@@ -523,7 +538,7 @@ main()
 
   // All vertex values of the four subproblems.
   double max_difference = 0, max_displacement = 0;
-  for (unsigned int s = 0; s < 4; ++s)
+  for (unsigned int s = 0; s < 2 * n_layers; ++s)
     {
       const auto &sub =
         study.subproblem(static_cast<bilayer::Layer>(s / 2),
@@ -548,6 +563,23 @@ main()
   const double energy_difference =
     std::abs(record.energy - reference.energy()) / std::abs(reference.energy());
 
+  if (n_layers == 1)
+    std::cout
+      << "only the layer-1 subproblems and the crack and gluing multipliers "
+         "are built: "
+      << (record.dofs ==
+                study
+                    .subproblem(bilayer::Layer::first,
+                                bilayer::Subdomain::minus)
+                    .n_dofs() +
+                  study
+                    .subproblem(bilayer::Layer::first, bilayer::Subdomain::plus)
+                    .n_dofs() &&
+              study.multipliers().block(1).size() == 0 &&
+              study.multipliers().block(2).size() == 0 ?
+            "yes" :
+            "NO")
+      << std::endl;
   std::cout << "Uzawa solver converged: "
             << (record.result.converged ? "yes" : "NO") << std::endl;
   std::cout << "reference active set settled after " << iterations
@@ -607,4 +639,12 @@ main()
                       << std::endl;
           }
     }
+}
+
+
+int
+main()
+{
+  compare(2);
+  compare(1);
 }

@@ -155,7 +155,8 @@ namespace bilayer
     }
 
     /// Build the multiplier mesh and all operators for the given
-    /// subproblems (indexed as in index()).
+    /// subproblems (indexed as in index()); without layer 2 its entries are
+    /// null, and the blocks of mu- and mu+ have no nodes.
     void
     setup(const std::array<const ElasticSubproblem *, 4> &subproblems);
 
@@ -316,6 +317,17 @@ namespace bilayer
     /// onto the multiplier sets.
     void
     interpolate(const MultiplierFunctions &old, BlockVector<double> &mu) const;
+
+    /// Whether subproblem @p s exists (layer 2 may be absent).
+    bool
+    present(const unsigned int s) const
+    {
+      return subproblems[s] != nullptr;
+    }
+
+    /// Whether both subproblems of multiplier block @p b exist.
+    bool
+    active(const unsigned int b) const;
 
   private:
     /// A face of one subdomain mesh on Sigma.

@@ -224,6 +224,14 @@ namespace bilayer
   struct MaterialParameters
   {
     std::array<LayerMaterial, 2> layer = {{{200.0, 0.28}, {112.0, 0.32}}};
+    /// 2: the two-layer structure; 1: layer 2 absent (a single body).
+    unsigned int n_layers = 2;
+
+    bool
+    has_layer(const Layer l) const
+    {
+      return l == Layer::first || n_layers == 2;
+    }
 
     static void
     declare_parameters(ParameterHandler &prm);

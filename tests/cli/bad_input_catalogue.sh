@@ -35,7 +35,11 @@ check() {
   echo "$name: $ok${why:+ ($why)}"
   [[ $ok == yes ]] || { cat stderr; failures=$((failures + 1)); }
 }
-run() { check "$1" "$2" "$prm" --set "Output/Output directory=out" --set "$3"; }
+run() {
+  local name=$1 expect=$2
+  shift 2
+  check "$name" "$expect" "$prm" --set "Output/Output directory=out" --set "$@"
+}
 
 printf 'subsection Mesh\n  sett Cells along Sigma = 8\nend\n' > malformed.prm
 printf 'subsection Mesh\n  set Cels along Sigma = 8\nend\n' > unknown_entry.prm
@@ -59,6 +63,7 @@ run "no clamped part" "Geometry/Clamped sides must clamp a part of the boundary 
 run "load does not parse" "Loads/Layer 1/Traction on bottom side: cannot evaluate '0; c*'" "Loads/Layer 1/Traction on bottom side=0; c*"
 run "load evaluates to NaN" "Loads/Layer 1/Traction on bottom side must be finite on the bottom side" "Loads/Layer 1/Traction on bottom side=0; sqrt(x-5)"
 run "prescribed displacement infinite" "Loads/Layer 2/Prescribed displacement must be finite on the left side" "Loads/Layer 2/Prescribed displacement=0; 1/(x-x)"
+run "load on an absent layer" "Loads/Layer 2/Traction on top side must be '0; 0': layer 2 is absent (Materials/Number of layers = 1)" "Loads/Layer 2/Traction on top side=0; 1" --set "Materials/Number of layers=1"
 run "missing mesh file" "Mesh/Mesh files: cannot open" "Mesh/Mesh files=nothere_{side}.msh"
 run "theta <= 0" "Solver/Uzawa step theta must be a number > 0 or 'auto', got '-1'" "Solver/Uzawa step theta=-1"
 run "theta = 0" "Solver/Uzawa step theta must be > 0 or 'auto', got 0" "Solver/Uzawa step theta=0"
