@@ -854,18 +854,16 @@ namespace bilayer
                            loads.traction_function(layer, side);
           for (unsigned int i = 0; i <= 1000; ++i)
             {
-              const double t = i / 1000.;
+              // The point a fraction i/1000 along the side.
+              const double t       = i / 1000.;
+              const bool   at_side = side == Side::left || side == Side::right;
               const double x =
-                side == Side::left ?
-                  geometry.x_min :
-                side == Side::right ?
-                  geometry.x_max :
+                at_side ?
+                  (side == Side::left ? geometry.x_min : geometry.x_max) :
                   geometry.x_min + t * (geometry.x_max - geometry.x_min);
               const double y =
-                side == Side::bottom ?
-                  geometry.y_min :
-                side == Side::top ?
-                  geometry.y_max :
+                !at_side ?
+                  (side == Side::bottom ? geometry.y_min : geometry.y_max) :
                   geometry.y_min + t * (geometry.y_max - geometry.y_min);
               for (unsigned int c = 0; c < 2; ++c)
                 {

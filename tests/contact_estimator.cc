@@ -27,11 +27,8 @@ main()
 {
   std::ostringstream quiet;
   const std::string  scene =
-    "subsection Mesh\n set Cells along Sigma = 32\nend\n"
-    "subsection Loads\n set Constants = c = 1e-3*mu1\n"
-    " subsection Layer 1\n"
-    "  set Traction on bottom side = 0; c*x\n"
-    "  set Traction on top side = 0; -c*x\n end\nend\n"
+    "subsection Mesh\n set Cells along Sigma = 32\nend\n" +
+    std::string(example1_loads) +
     "subsection Solver\n set Method = active set\n set Tolerance = 1e-12\n"
     "end\n"
     "subsection Output\n set Output directory = results\n"

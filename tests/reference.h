@@ -9,6 +9,13 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
+/// The loads of Example 1 (paper.md §5) as a Loads subsection.
+inline const char *const example1_loads =
+  "subsection Loads\n set Constants = c = 1e-3*mu1\n"
+  " subsection Layer 1\n"
+  "  set Traction on bottom side = 0; c*x\n"
+  "  set Traction on top side = 0; -c*x\n end\nend\n";
+
 /// cell_matrix += int 2 mu eps(phi_i):eps(phi_j) + lambda div phi_i div phi_j
 inline void
 add_elasticity_matrix(const dealii::FEValues<2>                &fe_values,

@@ -32,13 +32,9 @@ namespace
     Study              study(scene_from_string(
                   "subsection Mesh\n set Mesh files = " +
                     std::string(SOURCE_DIR) +
-                    "/../meshes/table1_P12_M32_{side}.msh\nend\n"
-                                 "subsection Loads\n set Constants = c = 1e-3*mu1\n"
-                                 " subsection Layer 1\n"
-                                 "  set Traction on bottom side = 0; c*x\n"
-                                 "  set Traction on top side = 0; -c*x\n end\nend\n"
-                                 "subsection Solver\n set Uzawa step theta = " +
-                    theta +
+                    "/../meshes/table1_P12_M32_{side}.msh\nend\n" +
+                    std::string(example1_loads) +
+                    "subsection Solver\n set Uzawa step theta = " + theta +
                     "\nend\n"
                                  "subsection Output\n set Output directory = results\n"
                                  " set Write VTU = false\n set Write interface CSV = false\n"

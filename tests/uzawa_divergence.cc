@@ -16,6 +16,8 @@
 #include <sstream>
 #include <string>
 
+#include "reference.h"
+
 using namespace dealii;
 using namespace bilayer;
 
@@ -24,13 +26,9 @@ namespace
   std::string
   scene(const std::string &theta)
   {
-    return "subsection Mesh\n set Cells along Sigma = 8\nend\n"
-           "subsection Loads\n set Constants = c = 1e-3*mu1\n"
-           " subsection Layer 1\n"
-           "  set Traction on bottom side = 0; c*x\n"
-           "  set Traction on top side = 0; -c*x\n end\nend\n"
-           "subsection Solver\n set Uzawa step theta = " +
-           theta +
+    return "subsection Mesh\n set Cells along Sigma = 8\nend\n" +
+           std::string(example1_loads) +
+           "subsection Solver\n set Uzawa step theta = " + theta +
            "\n"
            " set Maximum iterations = 100000\nend\n"
            "subsection Output\n set Output directory = results\n"
