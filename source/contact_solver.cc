@@ -298,7 +298,11 @@ namespace bilayer
             msg << "iteration limit " << parameters.max_iterations
                 << " reached (Solver/Maximum iterations) with stopping value "
                 << value << " > Solver/Tolerance " << parameters.tolerance
-                << (accelerated ?
+                << (parameters.stopping_rule == StoppingRule::paper ?
+                      "; the paper's rule |w^k - w^k-1| / |w^k|^2 is not "
+                      "scale invariant (it grows as the loads shrink): "
+                      "Solver/Stopping rule = relative or kkt" :
+                    accelerated ?
                       "; Solver/Method = active set needs far fewer "
                       "iterations on ill-conditioned scenes" :
                       "; first-order iterations slow down as the dual "
