@@ -126,6 +126,13 @@ namespace bilayer
     result.theta             = parameters.theta;
     unsigned long spectrum_solves = 0, extra_solves = 0;
     Timer         timer;
+    // The step of theta = auto: projected gradient steps are stable below
+    // 2 / lambda_max; the accelerated method needs a step below
+    // 1 / lambda_max.
+    const auto auto_step = [&](const double lambda_max) {
+      return parameters.auto_theta_fraction * 2. / lambda_max *
+             (accelerated ? 0.5 : 1.);
+    };
     if (parameters.auto_theta)
       {
         const SpectrumEstimate estimate =
@@ -135,11 +142,7 @@ namespace bilayer
         spectrum_solves            = estimate.subdomain_solves;
         result.lambda_max          = estimate.lambda_max;
         result.predicted_threshold = 2. / estimate.lambda_max;
-        result.theta =
-          // Projected gradient steps are stable below 2 / lambda_max; the
-          // accelerated method needs a step below 1 / lambda_max.
-          parameters.auto_theta_fraction * result.predicted_threshold *
-          (accelerated ? 0.5 : 1.);
+        result.theta               = auto_step(estimate.lambda_max);
         pcout << "    theta = auto: lambda_max(S) = " << std::setprecision(6)
               << estimate.lambda_max << " after " << estimate.iterations
               << " power iterations, predicted threshold 2/lambda_max = "
@@ -147,18 +150,23 @@ namespace bilayer
               << std::defaultfloat << std::endl;
       }
     const double theta = result.theta;
-    // After a divergence: the step that theta = auto would take, from a
-    // power iteration on the dual operator (its solves are counted).
+    // After a divergence: the step that theta = auto takes, from a power
+    // iteration on the dual operator (its solves are counted) unless one
+    // was already run.
     const auto safe_step = [&]() -> std::string {
-      const SpectrumEstimate estimate =
-        estimate_lambda_max(subproblems,
-                            interface,
-                            parameters.spectrum_iterations);
-      extra_solves += estimate.subdomain_solves;
+      double lambda_max = result.lambda_max;
+      if (!(lambda_max > 0))
+        {
+          const SpectrumEstimate estimate =
+            estimate_lambda_max(subproblems,
+                                interface,
+                                parameters.spectrum_iterations);
+          extra_solves += estimate.subdomain_solves;
+          lambda_max = estimate.lambda_max;
+        }
       std::ostringstream text;
-      text << std::setprecision(4) << "; estimated safe step: theta <= "
-           << parameters.auto_theta_fraction * 2. / estimate.lambda_max *
-                (accelerated ? 0.5 : 1.)
+      text << std::setprecision(4)
+           << "; estimated safe step: theta <= " << auto_step(lambda_max)
            << " (" << parameters.auto_theta_fraction
            << (accelerated ? " / lambda_max" : " * 2 / lambda_max")
            << ", or theta = auto)";

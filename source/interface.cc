@@ -131,7 +131,7 @@ namespace bilayer
     for (auto &mesh : meshes)
       {
         const unsigned int n_segments =
-          std::max<std::size_t>(mesh.breakpoints.size(), 1) - 1;
+          mesh.breakpoints.empty() ? 0 : mesh.breakpoints.size() - 1;
         const unsigned int n = n_segments > 0 ? n_segments * degree + 1 : 0;
         mesh.node_x.assign(n, 0.);
         mesh.node_weight.assign(n, 0.);

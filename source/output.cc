@@ -124,19 +124,17 @@ namespace bilayer
   std::string
   StagedDirectory::commit(const bool success)
   {
-    namespace fs     = std::filesystem;
-    committed        = true;
-    const auto place = [&](const std::string &target) {
-      const std::string old = target + ".old";
-      std::error_code   error;
-      fs::remove_all(old, error);
-      if (fs::exists(target))
-        fs::rename(target, old);
-      fs::rename(staging_path, target);
-      fs::remove_all(old, error);
-      return target;
-    };
-    return place(success ? final_path : final_path + ".failed");
+    namespace fs             = std::filesystem;
+    committed                = true;
+    const std::string target = success ? final_path : final_path + ".failed";
+    const std::string old    = target + ".old";
+    std::error_code   error;
+    fs::remove_all(old, error);
+    if (fs::exists(target))
+      fs::rename(target, old);
+    fs::rename(staging_path, target);
+    fs::remove_all(old, error);
+    return target;
   }
 
 

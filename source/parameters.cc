@@ -867,14 +867,17 @@ namespace bilayer
                   geometry.y_min + t * (geometry.y_max - geometry.y_min);
               for (unsigned int c = 0; c < 2; ++c)
                 {
-                  const double       value = f->value(Point<2>(x, y), c);
-                  std::ostringstream point;
-                  point << "(" << x << ", " << y << ")";
-                  AssertThrow(std::isfinite(value),
-                              ExcMessage(where + " must be finite on the " +
-                                         side_name(side) + " side, got " +
-                                         std::to_string(value) + " at " +
-                                         point.str()));
+                  const double value = f->value(Point<2>(x, y), c);
+                  if (!std::isfinite(value))
+                    {
+                      std::ostringstream point;
+                      point << "(" << x << ", " << y << ")";
+                      AssertThrow(false,
+                                  ExcMessage(where + " must be finite on the " +
+                                             side_name(side) + " side, got " +
+                                             std::to_string(value) + " at " +
+                                             point.str()));
+                    }
                 }
             }
         }
