@@ -61,7 +61,7 @@ namespace bilayer
         interface.apply(z, loads); // -B^T G^{-1} r
         Threads::TaskGroup<void> tasks;
         for (unsigned int s = 0; s < 4; ++s)
-          if (subproblems[s] != nullptr)
+          if (subproblems[s] != nullptr && subproblems[s]->owned())
             tasks += Threads::new_task([&, s]() {
               if (type == DualPreconditioner::dirichlet)
                 subproblems[s]->apply_schur_complement(loads[s], reactions[s]);
@@ -70,6 +70,7 @@ namespace bilayer
                                                           reactions[s]);
             });
         tasks.join_all();
+        share_traces(subproblems, reactions);
         interface.jumps(reactions, z);
         interface.scale_by_weights(z); // B S (-B^T G^{-1} r)
         z *= -1.;
@@ -123,7 +124,7 @@ namespace bilayer
       {
         Threads::TaskGroup<void> tasks;
         for (unsigned int s = 0; s < 4; ++s)
-          if (subproblems[s] != nullptr)
+          if (subproblems[s] != nullptr && subproblems[s]->owned())
             tasks += Threads::new_task([&, s]() {
               subproblems[s]->setup_interface_operators(
                 parameters.preconditioner == DualPreconditioner::dirichlet);

@@ -27,7 +27,7 @@ namespace bilayer
       interface.apply(multipliers, loads);
       Threads::TaskGroup<void> tasks;
       for (unsigned int s = 0; s < 4; ++s)
-        if (subproblems[s] != nullptr)
+        if (subproblems[s] != nullptr && subproblems[s]->owned())
           tasks += Threads::new_task([&, s]() {
             if (homogeneous)
               subproblems[s]->solve_homogeneous(loads[s], solutions[s]);
@@ -35,8 +35,31 @@ namespace bilayer
               subproblems[s]->solve(loads[s], solutions[s]);
           });
       tasks.join_all();
+      share_traces(subproblems, solutions);
     }
   } // namespace
+
+
+  void
+  share_traces(const Subproblems &subproblems, Solutions &solutions)
+  {
+    for (unsigned int s = 0; s < 4; ++s)
+      if (subproblems[s] != nullptr)
+        subproblems[s]->share_trace(solutions[s]);
+  }
+
+
+  std::array<double, 4>
+  share_values(const Subproblems                         &subproblems,
+               const std::function<double(unsigned int)> &value)
+  {
+    std::array<double, 4> values{};
+    for (unsigned int s = 0; s < 4; ++s)
+      if (subproblems[s] != nullptr && subproblems[s]->owned())
+        values[s] = value(s);
+    subproblems[0]->processes().share(values);
+    return values;
+  }
 
 
   void
@@ -219,22 +242,24 @@ namespace bilayer
               }
             else
               {
+                // Energy norms of whole solutions: each owner evaluates
+                // its own.
+                const std::array<double, 4> ratios =
+                  share_values(subproblems, [&](const unsigned int s) {
+                    difference = w[s];
+                    difference -= w_old[s];
+                    const double d = std::sqrt(
+                      subproblems[s]->energy_norm_squared(difference));
+                    const double n2 = subproblems[s]->energy_norm_squared(w[s]);
+                    const double denominator =
+                      parameters.stopping_rule == StoppingRule::paper ?
+                        n2 :
+                        std::sqrt(n2);
+                    return d == 0. ? 0. : d / denominator;
+                  });
                 value = 0;
-                for (unsigned int s = 0; s < 4; ++s)
-                  if (subproblems[s] != nullptr)
-                    {
-                      difference = w[s];
-                      difference -= w_old[s];
-                      const double d = std::sqrt(
-                        subproblems[s]->energy_norm_squared(difference));
-                      const double n2 =
-                        subproblems[s]->energy_norm_squared(w[s]);
-                      const double denominator =
-                        parameters.stopping_rule == StoppingRule::paper ?
-                          n2 :
-                          std::sqrt(n2);
-                      value = std::max(value, d == 0. ? 0. : d / denominator);
-                    }
+                for (const double ratio : ratios)
+                  value = std::max(value, ratio);
               }
           }
         result.stopping_value = value;

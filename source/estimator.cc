@@ -17,18 +17,20 @@ namespace bilayer
                  const bool   interface_terms,
                  const double contact_weight)
   {
-    std::array<Vector<float>, 2>                 eta;
+    // The squared indicator of each subproblem, evaluated by its owner
+    // (the whole solution is needed) and sent to all processes, then
+    // summed per subdomain in the order of the subproblems.
+    std::array<Vector<double>, 4>                squared;
     const std::vector<Interface::ContactSegment> contact =
       interface_terms ? interface.contact_residual(w, mu) :
                         std::vector<Interface::ContactSegment>();
     for (unsigned int s = 0; s < 4; ++s)
-      if (subproblems[s] != nullptr)
+      if (subproblems[s] != nullptr && subproblems[s]->owned())
         {
           const ElasticSubproblem &sub  = *subproblems[s];
           const auto              &tria = sub.dof_handler().get_triangulation();
-          const unsigned int       sd   = s % 2;
-          if (eta[sd].size() != tria.n_active_cells())
-            eta[sd].reinit(tria.n_active_cells());
+          Vector<double>          &eta2 = squared[s];
+          eta2.reinit(tria.n_active_cells());
 
           Vector<float> kelly(tria.n_active_cells());
           const auto    face_quadrature =
@@ -37,8 +39,7 @@ namespace bilayer
           KellyErrorEstimator<2>::estimate(
             sub.mapping(), sub.dof_handler(), face_quadrature, {}, w[s], kelly);
           for (unsigned int i = 0; i < kelly.size(); ++i)
-            eta[sd][i] = std::sqrt(double(eta[sd][i]) * eta[sd][i] +
-                                   double(kelly[i]) * kelly[i]);
+            eta2[i] = double(kelly[i]) * kelly[i];
           if (!interface_terms)
             continue;
 
@@ -103,11 +104,27 @@ namespace bilayer
                                     (it->b - it->a) / (2 * mu_material);
                         }
                     }
-                  const unsigned int i = cell->active_cell_index();
-                  eta[sd][i] =
-                    std::sqrt(double(eta[sd][i]) * eta[sd][i] + term);
+                  eta2[cell->active_cell_index()] += term;
                 }
         }
+
+    std::array<Vector<float>, 2> eta;
+    for (unsigned int sd = 0; sd < 2; ++sd)
+      {
+        Vector<double> sum;
+        for (const unsigned int s : {sd, sd + 2})
+          if (subproblems[s] != nullptr)
+            {
+              subproblems[s]->processes().share(s, squared[s]);
+              if (sum.size() == 0)
+                sum = squared[s];
+              else
+                sum += squared[s];
+            }
+        eta[sd].reinit(sum.size());
+        for (unsigned int i = 0; i < sum.size(); ++i)
+          eta[sd][i] = std::sqrt(sum[i]);
+      }
     return eta;
   }
 } // namespace bilayer

@@ -1,13 +1,16 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <bilayer/distribution.h>
 #include <bilayer/output.h>
 #include <bilayer/parameters.h>
 #include <bilayer/study.h>
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -38,13 +41,28 @@ main(int argc, char **argv)
   using namespace dealii;
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
+  // Under mpirun the processes share the subproblems (bilayer::
+  // Distribution); without it this is a job of one process. Threads: the
+  // cores of the node divided among its processes.
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+  const bilayer::Distribution     &processes = bilayer::Distribution::world();
+  // Refusals of the input happen on every process alike: one reports.
+  const auto refuse = [&](const std::string &message) {
+    if (processes.is_root())
+      std::cerr << "bilayer: error: " << message << std::endl;
+    return 1;
+  };
+
+  bilayer::Scene   scene;
+  ParameterHandler prm;
   try
     {
       const bool help = argc >= 2 && (std::string(argv[1]) == "--help" ||
                                       std::string(argv[1]) == "-h");
       if (argc < 2 || help || argc % 2 != 0)
         {
-          print_usage(help ? std::cout : std::cerr);
+          if (processes.is_root())
+            print_usage(help ? std::cout : std::cerr);
           return help ? 0 : 1;
         }
       std::vector<std::string> overrides;
@@ -52,30 +70,63 @@ main(int argc, char **argv)
         {
           if (std::string(argv[i]) != "--set")
             {
-              print_usage(std::cerr);
+              if (processes.is_root())
+                print_usage(std::cerr);
               return 1;
             }
           overrides.emplace_back(argv[i + 1]);
         }
-      ParameterHandler prm;
       if (std::string(argv[1]) == "--print-parameters")
         {
           bilayer::Scene::declare_parameters(prm);
-          prm.print_parameters(std::cout, ParameterHandler::PRM);
+          if (processes.is_root())
+            prm.print_parameters(std::cout, ParameterHandler::PRM);
           return 0;
         }
+      scene = bilayer::read_scene(prm, argv[1], overrides);
+    }
+  catch (const ExceptionBase &e)
+    {
+      return refuse(bilayer::one_line_message(e));
+    }
+  catch (const std::exception &e)
+    {
+      return refuse(e.what());
+    }
 
-      bilayer::Scene scene = bilayer::read_scene(prm, argv[1], overrides);
+  try
+    {
       // Results appear in the output directory only when the run is over:
-      // a refused or failed run leaves an existing one as it was.
-      bilayer::StagedDirectory output(scene.output.directory);
-      scene.output.directory = output.staging();
-      prm.print_parameters(scene.output.directory + "/used_parameters.prm",
-                           ParameterHandler::ShortPRM);
+      // a refused or failed run leaves an existing one as it was. The first
+      // process prepares it and tells the others whether it could.
+      std::unique_ptr<bilayer::StagedDirectory> output;
+      bool                                      ready = true;
+      std::string                               problem;
+      if (processes.is_root())
+        try
+          {
+            output = std::make_unique<bilayer::StagedDirectory>(
+              scene.output.directory);
+            prm.print_parameters(output->staging() + "/used_parameters.prm",
+                                 ParameterHandler::ShortPRM);
+            problem = output->staging();
+          }
+        catch (const ExceptionBase &e)
+          {
+            ready   = false;
+            problem = bilayer::one_line_message(e);
+          }
+      // On success the message is the staging directory.
+      processes.broadcast(ready, problem);
+      if (!ready)
+        return refuse(problem);
+      scene.output.directory = problem;
 
-      bilayer::Study    study(scene, std::cout);
-      const bool        passed = study.run();
-      const std::string where  = output.commit(passed);
+      bilayer::Study study(scene, std::cout, processes);
+      const bool     passed = study.run();
+      if (!processes.is_root())
+        return passed ? 0 : 2;
+      const std::string where = output->commit(passed);
       if (!passed)
         {
           const auto &last = study.records().back();
@@ -90,11 +141,13 @@ main(int argc, char **argv)
     {
       std::cerr << "bilayer: error: " << bilayer::one_line_message(e)
                 << std::endl;
-      return 1;
     }
   catch (const std::exception &e)
     {
       std::cerr << "bilayer: error: " << e.what() << std::endl;
-      return 1;
     }
+  // An error on one process would leave the others waiting.
+  if (processes.parallel())
+    MPI_Abort(processes.communicator(), 1);
+  return 1;
 }

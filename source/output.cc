@@ -1,9 +1,13 @@
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <bilayer/output.h>
 
+#include <algorithm>
 #include <array>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -138,17 +142,51 @@ namespace bilayer
   }
 
 
-  void
-  write_vtu(const std::string                              &directory,
-            const unsigned int                              cycle,
-            const std::array<const ElasticSubproblem *, 4> &subproblems,
-            const Solutions                                &solutions,
-            std::vector<std::pair<double, std::string>>    &records)
+  namespace
   {
+    /// The XDMF file of all cycles: a temporal collection of spatial
+    /// collections (one grid per piece).
+    void
+    write_xdmf(std::ostream &out, const SolutionRecords &records)
+    {
+      out << "<?xml version=\"1.0\" ?>\n"
+             "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+             "<Xdmf Version=\"2.0\">\n"
+             "  <Domain>\n"
+             "    <Grid Name=\"cycles\" GridType=\"Collection\" "
+             "CollectionType=\"Temporal\">\n";
+      for (const auto &[cycle, grids] : records.xdmf)
+        {
+          out << "      <Grid Name=\"cycle-" << cycle
+              << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+              << "        <Time Value=\"" << cycle << "\"/>\n";
+          for (const auto &grid : grids)
+            out << grid;
+          out << "      </Grid>\n";
+        }
+      out << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+    }
+  } // namespace
+
+
+  void
+  write_solution(const std::string                              &directory,
+                 const unsigned int                              cycle,
+                 const std::array<const ElasticSubproblem *, 4> &subproblems,
+                 const Solutions                                &solutions,
+                 const OutputParameters                         &parameters,
+                 SolutionRecords                                &records)
+  {
+    const Distribution &processes = subproblems[0]->processes();
+    AssertThrow(!parameters.write_hdf5 || Utilities::MPI::job_supports_mpi(),
+                ExcMessage("Output/Write HDF5 needs MPI to be initialised "
+                           "(the bilayer program does so)"));
     std::ostringstream stem;
     stem << "solution-" << std::setw(2) << std::setfill('0') << cycle;
 
     std::vector<std::string> pieces;
+    /// (subproblem, XDMF grid) of the pieces written here.
+    std::vector<std::pair<unsigned int, std::string>> grids;
     // Declared before the DataOut objects that subscribe to them.
     std::vector<std::unique_ptr<StressPostprocessor>> stresses;
     std::array<DataOut<2>, 4>                         data_outs;
@@ -156,8 +194,16 @@ namespace bilayer
     for (unsigned int s = 0; s < 4; ++s)
       if (subproblems[s] != nullptr)
         {
-          const ElasticSubproblem &sub      = *subproblems[s];
-          DataOut<2>              &data_out = data_outs[s];
+          const ElasticSubproblem &sub = *subproblems[s];
+          const std::string        piece =
+            stem.str() + "-" + std::string(1, sub.name()[0]) +
+            (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus");
+          pieces.push_back(piece + ".vtu");
+          if (!sub.owned() && !(s == 0 && processes.is_root()))
+            continue;
+          // The root builds the fields of u- to name them in the .pvtu.
+
+          DataOut<2> &data_out = data_outs[s];
           data_out.attach_dof_handler(sub.dof_handler());
           const std::vector<std::string> names(2, "displacement");
           const std::vector<
@@ -184,26 +230,72 @@ namespace bilayer
           data_out.add_data_vector(subdomains[s],
                                    "subdomain",
                                    DataOut<2>::type_cell_data);
+          if (!sub.owned())
+            continue;
 
           const bool simplex = !sub.dof_handler()
                                   .get_triangulation()
                                   .all_reference_cells_are_hyper_cube();
           data_out.build_patches(sub.mapping(), simplex ? 1 : sub.fe().degree);
 
-          std::string piece =
-            stem.str() + "-" + std::string(1, sub.name()[0]) +
-            (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus") + ".vtu";
-          write_atomically(directory + "/" + piece,
-                           [&](std::ostream &out) { data_out.write_vtu(out); });
-          pieces.push_back(piece);
+          if (parameters.write_vtu)
+            write_atomically(directory + "/" + piece + ".vtu",
+                             [&](std::ostream &out) {
+                               data_out.write_vtu(out);
+                             });
+          if (parameters.write_hdf5)
+            {
+              DataOutBase::DataOutFilter filter(
+                DataOutBase::DataOutFilterFlags(true, true));
+              data_out.write_filtered_data(filter);
+              const std::string h5 = piece + ".h5";
+              data_out.write_hdf5_parallel(filter,
+                                           directory + "/" + h5 + ".part",
+                                           MPI_COMM_SELF);
+              std::filesystem::rename(directory + "/" + h5 + ".part",
+                                      directory + "/" + h5);
+              const XDMFEntry entry =
+                data_out.create_xdmf_entry(filter, h5, cycle, MPI_COMM_SELF);
+              grids.emplace_back(s,
+                                 entry.get_xdmf_content(
+                                   4,
+                                   simplex ? ReferenceCells::Triangle :
+                                             ReferenceCells::Quadrilateral));
+            }
         }
-    write_atomically(directory + "/" + stem.str() + ".pvtu",
-                     [&](std::ostream &out) {
-                       data_outs[0].write_pvtu_record(out, pieces);
-                     });
-    records.emplace_back(cycle, stem.str() + ".pvtu");
-    write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
-      DataOutBase::write_pvd_record(out, records);
-    });
+
+    // The grids of all pieces at the first process, in the order of the
+    // subproblems.
+    if (parameters.write_hdf5 && processes.parallel())
+      {
+        const auto all =
+          Utilities::MPI::gather(processes.communicator(), grids, 0);
+        grids.clear();
+        for (const auto &from_process : all)
+          grids.insert(grids.end(), from_process.begin(), from_process.end());
+        std::sort(grids.begin(), grids.end());
+      }
+    if (!processes.is_root())
+      return;
+    if (parameters.write_vtu)
+      {
+        write_atomically(directory + "/" + stem.str() + ".pvtu",
+                         [&](std::ostream &out) {
+                           data_outs[0].write_pvtu_record(out, pieces);
+                         });
+        records.pvd.emplace_back(cycle, stem.str() + ".pvtu");
+        write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
+          DataOutBase::write_pvd_record(out, records.pvd);
+        });
+      }
+    if (parameters.write_hdf5)
+      {
+        std::vector<std::string> content;
+        for (const auto &grid : grids)
+          content.push_back(grid.second);
+        records.xdmf.emplace_back(cycle, content);
+        write_atomically(directory + "/solution.xdmf",
+                         [&](std::ostream &out) { write_xdmf(out, records); });
+      }
   }
 } // namespace bilayer

@@ -748,6 +748,13 @@ namespace bilayer
                       Patterns::Bool(),
                       "Write solution.pvd with one .pvtu per cycle and one "
                       ".vtu per layer and subdomain.");
+    prm.declare_entry("Write HDF5",
+                      "false",
+                      Patterns::Bool(),
+                      "Write one .h5 file per layer, subdomain and cycle "
+                      "(deal.II's HDF5 writer) and solution.xdmf over all "
+                      "cycles, for ParaView's XDMF reader: compact binary "
+                      "output for large meshes.");
     prm.declare_entry("Write interface CSV",
                       "true",
                       Patterns::Bool(),
@@ -777,6 +784,7 @@ namespace bilayer
     AssertThrow(!directory.empty(),
                 ExcMessage("Output/Output directory must not be empty"));
     write_vtu         = prm.get_bool("Write VTU");
+    write_hdf5        = prm.get_bool("Write HDF5");
     write_interface   = prm.get_bool("Write interface CSV");
     progress_interval = prm.get_integer("Progress interval");
     terminal = prm.get("Terminal output") == "checks" ? TerminalOutput::checks :

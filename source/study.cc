@@ -1,4 +1,5 @@
 #include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
 
 #include <bilayer/active_set_solver.h>
 #include <bilayer/estimator.h>
@@ -72,10 +73,16 @@ namespace bilayer
   }
 
 
-  Study::Study(const Scene &scene, std::ostream &out)
+  Study::Study(const Scene        &scene,
+               std::ostream       &out,
+               const Distribution &distribution)
     : scene(scene)
     , out(out)
-    , pcout(out, scene.output.terminal == TerminalOutput::full)
+    , distribution(distribution)
+    , pcout(out,
+            scene.output.terminal == TerminalOutput::full &&
+              distribution.is_root())
+    , rout(out, distribution.is_root())
     , domain(scene.geometry, scene.mesh)
     , coupling(scene.geometry, scene.contact)
   {}
@@ -84,14 +91,16 @@ namespace bilayer
   bool
   Study::run()
   {
-    std::filesystem::create_directories(scene.output.directory);
+    if (distribution.is_root())
+      std::filesystem::create_directories(scene.output.directory);
+    distribution.barrier();
     for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
       {
         const CycleRecord &record = run_cycle(cycle);
         if (!record.accepted())
           return false;
       }
-    if (scene.output.terminal == TerminalOutput::full)
+    if (scene.output.terminal == TerminalOutput::full && distribution.is_root())
       {
         out << "\n";
         table.write_text(out, TableHandler::org_mode_table);
@@ -162,11 +171,10 @@ namespace bilayer
                 sd,
                 domain.triangulation(sd),
                 scene.mesh.degree(layer),
-                scene.materials.layer[static_cast<unsigned int>(layer)]);
+                scene.materials.layer[static_cast<unsigned int>(layer)],
+                distribution);
               sub->setup(scene.geometry.clamped, *prescribed, traction);
               record.dofs += sub->n_dofs();
-              record.assembly_seconds += sub->assembly_seconds;
-              record.factorisation_seconds += sub->factorisation_seconds;
             }
         }
     std::array<const ElasticSubproblem *, 4> views;
@@ -176,6 +184,16 @@ namespace bilayer
         views[s]   = subproblems[s].get();
         solvers[s] = subproblems[s].get();
       }
+    for (unsigned int s = 0; s < 4; ++s)
+      if (subproblems[s] != nullptr && subproblems[s]->owned())
+        {
+          record.assembly_seconds += subproblems[s]->assembly_seconds;
+          record.factorisation_seconds += subproblems[s]->factorisation_seconds;
+        }
+    // The busiest process's share.
+    record.assembly_seconds = distribution.max(record.assembly_seconds);
+    record.factorisation_seconds =
+      distribution.max(record.factorisation_seconds);
     coupling.setup(views);
     coupling.initialize(mu);
     if (warm)
@@ -191,15 +209,21 @@ namespace bilayer
           << ", P = " << record.P << ", M = " << record.M << ", " << record.dofs
           << " dofs, " << record.multipliers << " multipliers" << std::endl;
 
-    Timer solve_timer;
-    record.result = solve_contact_problem(
+    Timer               solve_timer;
+    const unsigned long shared_before = distribution.shared_values();
+    record.result                     = solve_contact_problem(
       scene.solver, scene.output, pcout, solvers, coupling, mu, w);
     record.theta         = record.result.theta;
     record.solve_seconds = solve_timer.wall_time();
+    record.processes     = distribution.n_processes();
+    record.shared_values = distribution.shared_values() - shared_before;
 
-    for (unsigned int s = 0; s < 4; ++s)
-      if (subproblems[s])
-        record.energy += subproblems[s]->energy(w[s]);
+    // Energies (whole solutions: evaluated by the owners), summed in the
+    // order of the subproblems as in a serial run.
+    for (const double e : share_values(solvers, [&](const unsigned int s) {
+           return subproblems[s]->energy(w[s]);
+         }))
+      record.energy += e;
     record.report = coupling.assess(w, mu);
     check(record);
     if (scene.mesh.refinement == Refinement::adaptive)
@@ -211,25 +235,35 @@ namespace bilayer
                                   scene.mesh.contact_weight);
 
     const std::string &dir = scene.output.directory;
-    std::filesystem::create_directories(dir);
-    if (scene.output.write_vtu)
-      write_vtu(dir, cycle, views, w, pvd_records);
-    if (scene.output.write_interface)
+    if (distribution.is_root())
+      std::filesystem::create_directories(dir);
+    distribution.barrier();
+    if (scene.output.write_vtu || scene.output.write_hdf5)
+      write_solution(dir, cycle, views, w, scene.output, outputs);
+    if (scene.output.write_interface && distribution.is_root())
       write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
                        [&](std::ostream &o) { coupling.write_csv(o, w, mu); });
-    record.total_seconds = total.wall_time();
+    record.total_seconds = distribution.max(total.wall_time());
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    record.memory_mib = distribution.gather(memory.VmHWM / 1024.);
 
     cycle_records.push_back(record);
     add_to_table(record);
-    write_summary();
-    write_atomically(dir + "/table.txt", [&](std::ostream &o) {
-      table.write_text(o, TableHandler::org_mode_table);
-    });
-    write_atomically(dir + "/table.tex",
-                     [&](std::ostream &o) { table.write_tex(o); });
-    write_atomically(dir + "/table.csv",
-                     [&](std::ostream &o) { write_csv_table(o); });
+    if (distribution.is_root())
+      {
+        write_summary();
+        write_atomically(dir + "/table.txt", [&](std::ostream &o) {
+          table.write_text(o, TableHandler::org_mode_table);
+        });
+        write_atomically(dir + "/table.tex",
+                         [&](std::ostream &o) { table.write_tex(o); });
+        write_atomically(dir + "/table.csv",
+                         [&](std::ostream &o) { write_csv_table(o); });
+      }
     print_report(record);
+    // Every process's files are complete before the run may commit them.
+    distribution.barrier();
     return cycle_records.back();
   }
 
@@ -299,15 +333,22 @@ namespace bilayer
           << "  complementarity              " << r.complementarity << "\n"
           << "  KKT residual (relative)      " << r.kkt.value() << "\n"
           << std::defaultfloat << std::setprecision(3)
+          << "  processes                    " << record.processes
+          << ", traces sent " << record.shared_values
+          << " values, peak memory per process [MiB]";
+    for (const double m : record.memory_mib)
+      pcout << " " << std::fixed << std::setprecision(0) << m;
+    pcout << "\n"
+          << std::defaultfloat << std::setprecision(3)
           << "  wall time                    setup " << record.setup_seconds
           << " s, solve " << record.solve_seconds << " s, total "
           << record.total_seconds << " s" << std::endl;
     for (const auto &c : record.checks)
-      out << "cycle " << record.cycle << ": " << c.first << ": "
-          << (c.second ? "yes" : "NO") << std::endl;
+      rout << "cycle " << record.cycle << ": " << c.first << ": "
+           << (c.second ? "yes" : "NO") << std::endl;
     if (!record.accepted())
-      out << "bilayer: cycle " << record.cycle
-          << " FAILED: " << record.failure() << std::endl;
+      rout << "bilayer: cycle " << record.cycle
+           << " FAILED: " << record.failure() << std::endl;
   }
 
 
@@ -421,6 +462,12 @@ namespace bilayer
               << ", \"dual\": " << json(k.kkt.dual)
               << ", \"complementarity\": " << json(k.kkt.complementarity) << "}"
               << ", \"accepted\": " << (r.accepted() ? "true" : "false")
+              << ", \"processes\": " << r.processes
+              << ", \"shared_values\": " << r.shared_values
+              << ", \"memory_mib\": [";
+            for (unsigned int p = 0; p < r.memory_mib.size(); ++p)
+              o << (p ? ", " : "") << json(r.memory_mib[p]);
+            o << "]"
               << ", \"wall_seconds\": {\"setup\": " << json(r.setup_seconds)
               << ", \"assembly\": " << json(r.assembly_seconds)
               << ", \"factorisation\": " << json(r.factorisation_seconds)

@@ -18,10 +18,12 @@ namespace bilayer
                                        const Subdomain         subdomain,
                                        const Triangulation<2> &triangulation,
                                        const unsigned int      degree,
-                                       const LayerMaterial    &material)
+                                       const LayerMaterial    &material,
+                                       const Distribution     &distribution)
     : layer_(layer)
     , subdomain_(subdomain)
     , material_(material)
+    , distribution(distribution)
     , dofs(triangulation)
   {
     if (triangulation.all_reference_cells_are_hyper_cube())
@@ -69,6 +71,17 @@ namespace bilayer
         }
     constraints.close();
     homogeneous_constraints.close();
+
+    const IndexSet on_sigma =
+      DoFTools::extract_boundary_dofs(dofs,
+                                      ComponentMask(),
+                                      {BoundaryIds::glued, BoundaryIds::crack});
+    trace_dofs_.assign(on_sigma.begin(), on_sigma.end());
+    if (!owned())
+      {
+        assembly_seconds = timer.wall_time();
+        return;
+      }
 
     DynamicSparsityPattern dsp(dofs.n_dofs());
     DoFTools::make_sparsity_pattern(dofs, dsp, constraints, true);
@@ -236,6 +249,17 @@ namespace bilayer
     homogeneous_constraints.condense(solution);
     factorisation.solve(solution);
     homogeneous_constraints.distribute(solution);
+  }
+
+
+  void
+  ElasticSubproblem::share_trace(Vector<double> &w) const
+  {
+    if (!distribution.parallel())
+      return;
+    if (w.size() != n_dofs())
+      w.reinit(n_dofs());
+    distribution.share(index(), w, &trace_dofs_);
   }
 
 

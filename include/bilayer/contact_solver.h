@@ -9,6 +9,7 @@
 #include <bilayer/subproblem.h>
 
 #include <array>
+#include <functional>
 #include <string>
 
 namespace bilayer
@@ -73,6 +74,22 @@ namespace bilayer
                       const Interface           &interface,
                       const unsigned int         max_iterations,
                       const BlockVector<double> *mask = nullptr);
+
+  /**
+   * Send the traces of the solutions from their owners to all processes
+   * (ElasticSubproblem::share_trace(); nothing to do in a serial run).
+   */
+  void
+  share_traces(const Subproblems &subproblems, Solutions &solutions);
+
+  /**
+   * value(s) evaluated by the owner of each present subproblem s, known to
+   * every process afterwards (zero for absent subproblems): for quantities
+   * of whole solutions, such as energies, that only the owner holds.
+   */
+  std::array<double, 4>
+  share_values(const Subproblems                         &subproblems,
+               const std::function<double(unsigned int)> &value);
 
   /**
    * The subdomain solves that every outer solver repeats: the multiplier

@@ -86,19 +86,35 @@ namespace bilayer
     bool        committed = false;
   };
 
+  /// What write_solution() keeps from cycle to cycle.
+  struct SolutionRecords
+  {
+    /// (cycle, solution-NN.pvtu) for solution.pvd.
+    std::vector<std::pair<double, std::string>> pvd;
+    /// Per cycle: the XDMF grids of the pieces (solution.xdmf).
+    std::vector<std::pair<unsigned int, std::vector<std::string>>> xdmf;
+  };
+
   /**
-   * One cycle's VTU output: a .vtu per subproblem (fields displacement,
-   * von_mises, stress_xx, stress_yy, stress_zz, stress_xy and the cell
-   * fields layer = 1, 2 and subdomain = -1, +1), a solution-NN.pvtu that
-   * groups them into one dataset, and solution.pvd over all cycles written
-   * so far (@p records is appended to).
+   * One cycle's solution output, one piece per subproblem written by its
+   * owner (fields displacement, von_mises, stress_xx, stress_yy, stress_zz,
+   * stress_xy and the cell fields layer = 1, 2 and subdomain = -1, +1):
+   *  - with Output/Write VTU, solution-NN-{u,v}-{minus,plus}.vtu, a
+   *    solution-NN.pvtu that groups them into one dataset and solution.pvd
+   *    over all cycles written so far;
+   *  - with Output/Write HDF5, solution-NN-{u,v}-{minus,plus}.h5 (deal.II's
+   *    HDF5 writer: nodes, cells and fields of the piece) and
+   *    solution.xdmf, a temporal collection over the cycles of spatial
+   *    collections of the pieces, which ParaView's XDMF reader opens.
+   * The first process writes the .pvtu, .pvd and .xdmf files (collective).
    */
   void
-  write_vtu(const std::string                              &directory,
-            const unsigned int                              cycle,
-            const std::array<const ElasticSubproblem *, 4> &subproblems,
-            const Solutions                                &solutions,
-            std::vector<std::pair<double, std::string>>    &records);
+  write_solution(const std::string                              &directory,
+                 const unsigned int                              cycle,
+                 const std::array<const ElasticSubproblem *, 4> &subproblems,
+                 const Solutions                                &solutions,
+                 const OutputParameters                         &parameters,
+                 SolutionRecords                                &records);
 } // namespace bilayer
 
 #endif

@@ -334,6 +334,7 @@ namespace bilayer
   {
     std::string    directory         = "results";
     bool           write_vtu         = true;
+    bool           write_hdf5        = false;
     bool           write_interface   = true;
     unsigned int   progress_interval = 100;
     TerminalOutput terminal          = TerminalOutput::full;

@@ -6,8 +6,10 @@
 #include <deal.II/lac/block_vector.h>
 
 #include <bilayer/contact_solver.h>
+#include <bilayer/distribution.h>
 #include <bilayer/geometry.h>
 #include <bilayer/interface.h>
+#include <bilayer/output.h>
 #include <bilayer/parameters.h>
 #include <bilayer/subproblem.h>
 
@@ -36,6 +38,12 @@ namespace bilayer
     /// Acceptance checks: (description, passed).
     std::vector<std::pair<std::string, bool>> checks;
     double setup_seconds = 0, solve_seconds = 0, total_seconds = 0;
+    /// MPI processes, values sent from the subproblems' owners to all
+    /// processes in the iterations (traces on Sigma), and the peak resident
+    /// memory of each process [MiB].
+    unsigned int        processes     = 1;
+    unsigned long       shared_values = 0;
+    std::vector<double> memory_mib;
     /// Parts of setup_seconds: assembly and factorisation of the four
     /// subproblems, summed.
     double assembly_seconds = 0, factorisation_seconds = 0;
@@ -61,7 +69,15 @@ namespace bilayer
   class Study
   {
   public:
-    explicit Study(const Scene &scene, std::ostream &out);
+    /**
+     * A study of @p scene that reports to @p out, run by the processes of
+     * @p distribution (the MPI job if MPI is initialised; results are
+     * reported and written by its first process, the VTU/HDF5 pieces by
+     * the owners of the subproblems).
+     */
+    Study(const Scene        &scene,
+          std::ostream       &out,
+          const Distribution &distribution = Distribution::world());
 
     /// All cycles; true if every cycle converged and passed its checks.
     /// Stops at the first cycle that does not.
@@ -119,16 +135,19 @@ namespace bilayer
     void
     add_to_table(const CycleRecord &record);
 
-    const Scene                                       scene;
-    std::ostream                                     &out;
-    ConditionalOStream                                pcout;
+    const Scene         scene;
+    std::ostream       &out;
+    const Distribution &distribution;
+    /// Progress (Output/Terminal output = full) and the checks, both on the
+    /// first process only.
+    ConditionalOStream                                pcout, rout;
     Geometry                                          domain;
     std::array<std::unique_ptr<ElasticSubproblem>, 4> subproblems;
     Interface                                         coupling;
     Solutions                                         w;
     BlockVector<double>                               mu;
     std::vector<CycleRecord>                          cycle_records;
-    std::vector<std::pair<double, std::string>>       pvd_records;
+    SolutionRecords                                   outputs;
     ConvergenceTable                                  table;
     /// Error indicators of the last cycle, per subdomain (adaptive
     /// refinement).

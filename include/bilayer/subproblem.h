@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <bilayer/cholesky.h>
+#include <bilayer/distribution.h>
 #include <bilayer/parameters.h>
 
 #include <array>
@@ -37,6 +38,11 @@ namespace bilayer
    * where F holds the tractions on Gamma_N and c is any extra load vector
    * given in the unconstrained dof numbering (the interface's multiplier
    * terms). The subproblem knows nothing of the coupling.
+   *
+   * In an MPI job (see Distribution) every process builds the dof numbering
+   * and the constraints of every subproblem, but only the owners of a
+   * subproblem assemble, factorise and solve it; share_trace() then sends
+   * the values on Sigma to the other processes.
    */
   class ElasticSubproblem
   {
@@ -45,7 +51,8 @@ namespace bilayer
                       const Subdomain         subdomain,
                       const Triangulation<2> &triangulation,
                       const unsigned int      degree,
-                      const LayerMaterial    &material);
+                      const LayerMaterial    &material,
+                      const Distribution &distribution = Distribution::world());
 
     /**
      * Distribute dofs, build constraints, assemble the stiffness matrix and
@@ -56,6 +63,44 @@ namespace bilayer
     setup(const std::array<bool, 4>                &clamped,
           const Function<2>                        &prescribed,
           const std::array<const Function<2> *, 4> &traction);
+
+    /// Whether this process assembles, factorises and solves it.
+    bool
+    owned() const
+    {
+      return distribution.owns(index());
+    }
+
+    /// Position in Solutions (Interface::index()).
+    unsigned int
+    index() const
+    {
+      return 2 * static_cast<unsigned int>(layer_) +
+             static_cast<unsigned int>(subdomain_);
+    }
+
+    const Distribution &
+    processes() const
+    {
+      return distribution;
+    }
+
+    /**
+     * Send the values of @p w on the dofs of the Sigma faces from the
+     * owner to all processes (collective; nothing to do in a serial run).
+     * On the other processes @p w is sized n_dofs() and its other entries
+     * stay as they are: the interface reads only these.
+     */
+    void
+    share_trace(Vector<double> &w) const;
+
+    /// The dofs on the faces on Sigma (glued and crack), constrained ones
+    /// included: the support of every trace the interface evaluates.
+    const std::vector<types::global_dof_index> &
+    trace_dofs() const
+    {
+      return trace_dofs_;
+    }
 
     /// Solve with the extra load vector @p coupling (may be empty = zero).
     void
@@ -147,19 +192,21 @@ namespace bilayer
     assemble(const std::array<bool, 4>                &clamped,
              const std::array<const Function<2> *, 4> &traction);
 
-    const Layer                  layer_;
-    const Subdomain              subdomain_;
-    const LayerMaterial          material_;
-    std::unique_ptr<FESystem<2>> fe_system;
-    DoFHandler<2>                dofs;
-    AffineConstraints<double>    constraints;
-    AffineConstraints<double>    homogeneous_constraints;
-    SparsityPattern              sparsity;
-    SparseMatrix<double>         system_matrix;
-    SparseMatrix<double>         stiffness;
-    Vector<double>               system_rhs;
-    Vector<double>               traction_load;
-    SparseCholesky               factorisation;
+    const Layer                          layer_;
+    const Subdomain                      subdomain_;
+    const LayerMaterial                  material_;
+    const Distribution                  &distribution;
+    std::vector<types::global_dof_index> trace_dofs_;
+    std::unique_ptr<FESystem<2>>         fe_system;
+    DoFHandler<2>                        dofs;
+    AffineConstraints<double>            constraints;
+    AffineConstraints<double>            homogeneous_constraints;
+    SparsityPattern                      sparsity;
+    SparseMatrix<double>                 system_matrix;
+    SparseMatrix<double>                 stiffness;
+    Vector<double>                       system_rhs;
+    Vector<double>                       traction_load;
+    SparseCholesky                       factorisation;
     /// Sigma dofs that are not constrained, and the Dirichlet problem.
     std::vector<types::global_dof_index> sigma_dofs;
     AffineConstraints<double>            dirichlet_constraints;

@@ -1,0 +1,180 @@
+#include <deal.II/base/exceptions.h>
+
+#include <bilayer/distribution.h>
+
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+#include <string>
+
+namespace bilayer
+{
+  Distribution::Distribution()
+    : communicator_(MPI_COMM_SELF)
+    , group_communicator_(MPI_COMM_SELF)
+  {}
+
+
+  Distribution::Distribution(const MPI_Comm communicator)
+    : communicator_(communicator)
+    , group_communicator_(MPI_COMM_SELF)
+    , n_processes_(Utilities::MPI::n_mpi_processes(communicator))
+    , process_(Utilities::MPI::this_mpi_process(communicator))
+  {
+    if (n_processes_ > 4)
+      {
+        const int ierr = MPI_Comm_split(communicator_,
+                                        static_cast<int>(process_ % 4),
+                                        static_cast<int>(process_),
+                                        &group_communicator_);
+        AssertThrowMPI(ierr);
+        own_group_communicator = true;
+      }
+  }
+
+
+  Distribution::~Distribution()
+  {
+    if (own_group_communicator)
+      MPI_Comm_free(&group_communicator_);
+  }
+
+
+  const Distribution &
+  Distribution::world()
+  {
+    static const Distribution serial;
+    if (!Utilities::MPI::job_supports_mpi())
+      return serial;
+    static const Distribution all(MPI_COMM_WORLD);
+    return all;
+  }
+
+
+  bool
+  Distribution::owns(const unsigned int s) const
+  {
+    return n_processes_ <= 4 ? s % n_processes_ == process_ : process_ % 4 == s;
+  }
+
+
+  unsigned int
+  Distribution::group_size(const unsigned int s) const
+  {
+    return n_processes_ <= 4 ? 1 : (n_processes_ - s + 3) / 4;
+  }
+
+
+  void
+  Distribution::share(const unsigned int                          s,
+                      Vector<double>                             &v,
+                      const std::vector<types::global_dof_index> *indices) const
+  {
+    if (!parallel())
+      return;
+    std::vector<double> buffer;
+    if (indices != nullptr)
+      {
+        buffer.resize(indices->size());
+        if (process_ == root(s))
+          for (unsigned int i = 0; i < indices->size(); ++i)
+            buffer[i] = v((*indices)[i]);
+      }
+    else
+      buffer.assign(v.begin(), v.end());
+    unsigned long long size = buffer.size();
+    int                ierr =
+      MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, root(s), communicator_);
+    AssertThrowMPI(ierr);
+    buffer.resize(size);
+    ierr = MPI_Bcast(buffer.data(),
+                     static_cast<int>(size),
+                     MPI_DOUBLE,
+                     static_cast<int>(root(s)),
+                     communicator_);
+    AssertThrowMPI(ierr);
+    if (indices != nullptr)
+      for (unsigned int i = 0; i < indices->size(); ++i)
+        v((*indices)[i]) = buffer[i];
+    else
+      {
+        v.reinit(size, true);
+        std::copy(buffer.begin(), buffer.end(), v.begin());
+      }
+    shared_values_ += size;
+  }
+
+
+  void
+  Distribution::share(const unsigned int s, Vector<float> &v) const
+  {
+    if (!parallel())
+      return;
+    unsigned long long size = v.size();
+    int                ierr =
+      MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, root(s), communicator_);
+    AssertThrowMPI(ierr);
+    v.reinit(size, process_ == root(s));
+    ierr = MPI_Bcast(v.begin(),
+                     static_cast<int>(size),
+                     MPI_FLOAT,
+                     static_cast<int>(root(s)),
+                     communicator_);
+    AssertThrowMPI(ierr);
+  }
+
+
+  void
+  Distribution::share(std::array<double, 4> &values) const
+  {
+    if (!parallel())
+      return;
+    std::array<double, 4> own{};
+    for (unsigned int s = 0; s < 4; ++s)
+      if (process_ == root(s))
+        own[s] = values[s];
+    // Exactly one non-zero contribution per entry: the sum is exact.
+    const int ierr = MPI_Allreduce(
+      own.data(), values.data(), 4, MPI_DOUBLE, MPI_SUM, communicator_);
+    AssertThrowMPI(ierr);
+  }
+
+
+  double
+  Distribution::max(const double value) const
+  {
+    return parallel() ? Utilities::MPI::max(value, communicator_) : value;
+  }
+
+
+  std::vector<double>
+  Distribution::gather(const double value) const
+  {
+    if (!parallel())
+      return {value};
+    return Utilities::MPI::gather(communicator_, value, 0);
+  }
+
+
+  void
+  Distribution::barrier() const
+  {
+    if (parallel())
+      {
+        const int ierr = MPI_Barrier(communicator_);
+        AssertThrowMPI(ierr);
+      }
+  }
+
+
+  void
+  Distribution::broadcast(bool &flag, std::string &message) const
+  {
+    if (!parallel())
+      return;
+    std::pair<bool, std::string> data(flag, message);
+    data    = Utilities::MPI::broadcast(communicator_, data, 0);
+    flag    = data.first;
+    message = data.second;
+  }
+} // namespace bilayer

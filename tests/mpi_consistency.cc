@@ -1,0 +1,166 @@
+// The MPI processes share the subproblems (Distribution): every process
+// keeps the multipliers and the interface, the owners solve, and only the
+// traces on Sigma travel. Run by 1, 2 and 4 processes (the .mpirun=N
+// outputs), every scene must give the serial run's iteration counts and
+// the serial run's numbers to 1e-10 relative: the energy, the residuals of
+// the contact conditions, the multipliers and the crack opening. The serial
+// run is a Study of the first process alone (MPI_COMM_SELF).
+//
+// Scenes: Example 1 with the paper's Uzawa iteration (its energy-norm rule
+// needs the owners' whole solutions), the accelerated method with theta =
+// auto (power iteration), the active-set method with the Dirichlet
+// preconditioner (Schur complements on the owners), three adaptive cycles
+// (the estimator's indicators are computed by the owners, the meshes
+// refine alike on every process, non-matching traces, warm start), a
+// one-layer scene (two subproblems: with 4 processes two have none) and
+// P2 triangles with the consistent coupling.
+
+#include <deal.II/base/mpi.h>
+
+#include <bilayer/distribution.h>
+#include <bilayer/parameters.h>
+#include <bilayer/study.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "reference.h"
+
+using namespace dealii;
+using namespace bilayer;
+
+namespace
+{
+  double
+  relative(const double a, const double b, const double scale)
+  {
+    return std::abs(a - b) / std::max(scale, 1e-300);
+  }
+
+  void
+  compare(const std::string &name, const std::string &text)
+  {
+    const Distribution &all    = Distribution::world();
+    const Scene         scene  = scene_from_string(text, name);
+    Scene               serial = scene, parallel = scene;
+    serial.output.directory   = "serial-" + name;
+    parallel.output.directory = "parallel-" + name;
+    std::ostringstream quiet;
+
+    // The serial reference, on the first process alone.
+    std::unique_ptr<Distribution> self;
+    std::unique_ptr<Study>        reference;
+    if (all.is_root())
+      {
+        self      = std::make_unique<Distribution>(MPI_COMM_SELF);
+        reference = std::make_unique<Study>(serial, quiet, *self);
+        reference->run();
+      }
+    Study study(parallel, quiet, all);
+    study.run();
+    if (!all.is_root())
+      return;
+
+    bool   same_counts = study.records().size() == reference->records().size();
+    double worst       = 0;
+    for (unsigned int c = 0; same_counts && c < study.records().size(); ++c)
+      {
+        const CycleRecord &a = reference->records()[c];
+        const CycleRecord &b = study.records()[c];
+        same_counts =
+          same_counts && a.accepted() && b.accepted() &&
+          a.result.iterations == b.result.iterations &&
+          a.result.subdomain_solves == b.result.subdomain_solves &&
+          a.result.linear_iterations == b.result.linear_iterations &&
+          a.dofs == b.dofs && a.multipliers == b.multipliers;
+        const InterfaceReport &p = a.report, &q = b.report;
+        const double           u = p.displacement_scale;
+        for (const double d :
+             {relative(a.energy, b.energy, std::abs(a.energy)),
+              relative(a.theta, b.theta, std::abs(a.theta) + 1e-300),
+              relative(p.displacement_scale, q.displacement_scale, u),
+              relative(p.max_penetration, q.max_penetration, u),
+              relative(p.constraint_violation, q.constraint_violation, u * u),
+              relative(p.kkt.value(), q.kkt.value(), 1.),
+              relative(p.complementarity, q.complementarity, 1.),
+              relative(p.max_multiplier_over_bound,
+                       q.max_multiplier_over_bound,
+                       1.)})
+          worst = std::max(worst, d);
+      }
+
+    // The final multipliers and crack opening.
+    const BlockVector<double> &mu_a = reference->multipliers();
+    const BlockVector<double> &mu_b = study.multipliers();
+    double                     mu_difference =
+      mu_a.size() == mu_b.size() ? 0 : std::numeric_limits<double>::max();
+    for (unsigned int i = 0; i < std::min(mu_a.size(), mu_b.size()); ++i)
+      mu_difference = std::max(mu_difference, std::abs(mu_a(i) - mu_b(i)));
+    mu_difference /= std::max(mu_a.linfty_norm(), 1e-300);
+    const std::vector<double> open_a =
+      reference->interface().normal_opening(reference->solutions());
+    const std::vector<double> open_b =
+      study.interface().normal_opening(study.solutions());
+    double open_difference =
+      open_a.size() == open_b.size() ? 0 : std::numeric_limits<double>::max();
+    for (unsigned int i = 0; i < std::min(open_a.size(), open_b.size()); ++i)
+      open_difference =
+        std::max(open_difference, std::abs(open_a[i] - open_b[i]));
+    open_difference /= reference->records().back().report.displacement_scale;
+
+    std::cout << name << ": " << study.records().size()
+              << " cycles, converged and same iteration counts: "
+              << yes(same_counts)
+              << "; energy and residuals within 1e-10: " << yes(worst <= 1e-10)
+              << "; multipliers within 1e-10: " << yes(mu_difference <= 1e-10)
+              << "; crack opening within 1e-10: "
+              << yes(open_difference <= 1e-10) << std::endl;
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                quiet_output =
+    "subsection Output\n set Write VTU = false\n"
+    " set Write interface CSV = false\n set Terminal output = checks\nend\n";
+  const std::string example1 = std::string(example1_loads) + quiet_output;
+
+  compare("uzawa",
+          "subsection Mesh\n set Cells along Sigma = 8\nend\n" + example1);
+  compare("accelerated",
+          "subsection Mesh\n set Cells along Sigma = 8\nend\n"
+          "subsection Solver\n set Method = accelerated\n"
+          " set Uzawa step theta = auto\n set Stopping rule = kkt\n"
+          " set Tolerance = 1e-9\nend\n" +
+            example1);
+  compare("active_set",
+          "subsection Mesh\n set Cells along Sigma = 16\nend\n"
+          "subsection Solver\n set Method = active set\n"
+          " set Tolerance = 1e-10\nend\n" +
+            example1);
+  compare("adaptive",
+          "subsection Mesh\n set Cells along Sigma = 8\n"
+          " set Refinement = adaptive\n set Number of cycles = 3\nend\n"
+          "subsection Solver\n set Method = active set\n"
+          " set Warm start = true\n set Tolerance = 1e-10\nend\n" +
+            example1);
+  compare("one_layer",
+          "subsection Mesh\n set Cells along Sigma = 8\nend\n"
+          "subsection Materials\n set Number of layers = 1\nend\n"
+          "subsection Solver\n set Stopping rule = relative\n"
+          " set Tolerance = 1e-9\nend\n" +
+            example1);
+  compare("p2_triangles_consistent",
+          "subsection Mesh\n set Element shape = triangles\n"
+          " set Cells along Sigma = 4\n set Polynomial degree of layer 1 = 2\n"
+          " set Polynomial degree of layer 2 = 2\nend\n"
+          "subsection Contact\n set Multiplier coupling = consistent\nend\n"
+          "subsection Solver\n set Method = active set\n"
+          " set Tolerance = 1e-10\nend\n" +
+            example1);
+}
