@@ -35,7 +35,10 @@ namespace bilayer
 
   Distribution::~Distribution()
   {
-    if (own_group_communicator)
+    // The distribution of the whole job lives until after MPI_Finalize.
+    int finalized = 0;
+    MPI_Finalized(&finalized);
+    if (own_group_communicator && !finalized)
       MPI_Comm_free(&group_communicator_);
   }
 

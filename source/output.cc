@@ -1,5 +1,6 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <bilayer/output.h>
@@ -198,7 +199,12 @@ namespace bilayer
           const std::string        piece =
             stem.str() + "-" + std::string(1, sub.name()[0]) +
             (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus");
-          pieces.push_back(piece + ".vtu");
+          // A subproblem shared by a group of processes is written in one
+          // piece per process of the group (its cells of the partition).
+          const unsigned int group_size = processes.group_size(s);
+          for (unsigned int k = 0; k < group_size; ++k)
+            pieces.push_back(
+              piece + (group_size > 1 ? "." + std::to_string(k) : "") + ".vtu");
           if (!sub.owned() && !(s == 0 && processes.is_root()))
             continue;
           // The root builds the fields of u- to name them in the .pvtu.
@@ -232,6 +238,22 @@ namespace bilayer
                                    DataOut<2>::type_cell_data);
           if (!sub.owned())
             continue;
+          const MPI_Comm group =
+            sub.distributed() ? processes.group_communicator() : MPI_COMM_SELF;
+          std::string vtu = piece + ".vtu";
+          if (sub.distributed())
+            {
+              const DistributedSystem &system = sub.distributed_system();
+              data_out.set_cell_selection(
+                FilteredIterator<DataOut<2>::cell_iterator>(
+                  [&system](const DataOut<2>::cell_iterator &cell) {
+                    return cell->is_active() &&
+                           system.assembles(cell->active_cell_index());
+                  }));
+              vtu = piece + "." +
+                    std::to_string(Utilities::MPI::this_mpi_process(group)) +
+                    ".vtu";
+            }
 
           const bool simplex = !sub.dof_handler()
                                   .get_triangulation()
@@ -239,10 +261,9 @@ namespace bilayer
           data_out.build_patches(sub.mapping(), simplex ? 1 : sub.fe().degree);
 
           if (parameters.write_vtu)
-            write_atomically(directory + "/" + piece + ".vtu",
-                             [&](std::ostream &out) {
-                               data_out.write_vtu(out);
-                             });
+            write_atomically(directory + "/" + vtu, [&](std::ostream &out) {
+              data_out.write_vtu(out);
+            });
           if (parameters.write_hdf5)
             {
               DataOutBase::DataOutFilter filter(
@@ -251,11 +272,13 @@ namespace bilayer
               const std::string h5 = piece + ".h5";
               data_out.write_hdf5_parallel(filter,
                                            directory + "/" + h5 + ".part",
-                                           MPI_COMM_SELF);
+                                           group);
+              const XDMFEntry entry =
+                data_out.create_xdmf_entry(filter, h5, cycle, group);
+              if (processes.process() != processes.root(s))
+                continue;
               std::filesystem::rename(directory + "/" + h5 + ".part",
                                       directory + "/" + h5);
-              const XDMFEntry entry =
-                data_out.create_xdmf_entry(filter, h5, cycle, MPI_COMM_SELF);
               grids.emplace_back(s,
                                  entry.get_xdmf_content(
                                    4,

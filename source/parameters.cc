@@ -631,6 +631,14 @@ namespace bilayer
                       "Bound on the relative constraint violation, relative "
                       "interpenetration and complementarity of the final "
                       "solution; a run beyond it fails [-].");
+    prm.declare_entry("Shared subproblem solver",
+                      "mumps",
+                      Patterns::Selection("mumps|klu"),
+                      "Direct solver (Trilinos Amesos) of a subproblem that "
+                      "a group of MPI processes shares (more than four "
+                      "processes): mumps (MUMPS, the factorisation "
+                      "distributed over the group) or klu (KLU on one "
+                      "process of the group, the others send their rows).");
     prm.declare_entry("Warm start",
                       "false",
                       Patterns::Bool(),
@@ -713,7 +721,10 @@ namespace bilayer
     AssertThrow(acceptance_tolerance > 0,
                 ExcMessage("Solver/Acceptance tolerance must be > 0, got " +
                            prm.get("Acceptance tolerance")));
-    warm_start = prm.get_bool("Warm start");
+    warm_start    = prm.get_bool("Warm start");
+    shared_solver = prm.get("Shared subproblem solver") == "klu" ?
+                      "Amesos_Klu" :
+                      "Amesos_Mumps";
     prm.enter_subsection("Active set");
     const std::string p = prm.get("Preconditioner");
     preconditioner      = p == "dirichlet" ? DualPreconditioner::dirichlet :

@@ -173,7 +173,10 @@ namespace bilayer
                 scene.mesh.degree(layer),
                 scene.materials.layer[static_cast<unsigned int>(layer)],
                 distribution);
-              sub->setup(scene.geometry.clamped, *prescribed, traction);
+              sub->setup(scene.geometry.clamped,
+                         *prescribed,
+                         traction,
+                         scene.solver.shared_solver);
               record.dofs += sub->n_dofs();
             }
         }

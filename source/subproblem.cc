@@ -48,58 +48,6 @@ namespace bilayer
   }
 
 
-  void
-  ElasticSubproblem::setup(const std::array<bool, 4>                &clamped,
-                           const Function<2>                        &prescribed,
-                           const std::array<const Function<2> *, 4> &traction)
-  {
-    Timer timer;
-    dofs.distribute_dofs(*fe_system);
-
-    constraints.clear();
-    homogeneous_constraints.clear();
-    DoFTools::make_hanging_node_constraints(dofs, constraints);
-    DoFTools::make_hanging_node_constraints(dofs, homogeneous_constraints);
-    const Functions::ZeroFunction<2> zero(2);
-    for (unsigned int side = 0; side < 4; ++side)
-      if (clamped[side])
-        {
-          VectorTools::interpolate_boundary_values(
-            mapping(), dofs, side, prescribed, constraints);
-          VectorTools::interpolate_boundary_values(
-            mapping(), dofs, side, zero, homogeneous_constraints);
-        }
-    constraints.close();
-    homogeneous_constraints.close();
-
-    const IndexSet on_sigma =
-      DoFTools::extract_boundary_dofs(dofs,
-                                      ComponentMask(),
-                                      {BoundaryIds::glued, BoundaryIds::crack});
-    trace_dofs_.assign(on_sigma.begin(), on_sigma.end());
-    if (!owned())
-      {
-        assembly_seconds = timer.wall_time();
-        return;
-      }
-
-    DynamicSparsityPattern dsp(dofs.n_dofs());
-    DoFTools::make_sparsity_pattern(dofs, dsp, constraints, true);
-    sparsity.copy_from(dsp);
-    system_matrix.reinit(sparsity);
-    stiffness.reinit(sparsity);
-    system_rhs.reinit(dofs.n_dofs());
-    traction_load.reinit(dofs.n_dofs());
-
-    assemble(clamped, traction);
-    assembly_seconds = timer.wall_time();
-
-    timer.restart();
-    factorisation.initialize(system_matrix);
-    factorisation_seconds = timer.wall_time();
-  }
-
-
   namespace
   {
     /**
@@ -135,65 +83,66 @@ namespace bilayer
     private:
       Triangulation<2> tria;
     };
-  } // namespace
 
 
-  void
-  ElasticSubproblem::assemble(
-    const std::array<bool, 4>                &clamped,
-    const std::array<const Function<2> *, 4> &traction)
-  {
-    const unsigned int  degree    = fe_system->degree;
-    const ReferenceCell cell_type = fe_system->reference_cell();
-    const Quadrature<2> quadrature =
-      cell_type.get_gauss_type_quadrature<2>(degree + 1);
-    const Quadrature<1> face_quadrature =
-      ReferenceCells::Line.get_gauss_type_quadrature<1>(degree + 1);
-
-    FEValues<2>     fe_values(mapping(),
-                          *fe_system,
-                          quadrature,
-                          update_gradients | update_JxW_values);
-    FEFaceValues<2> fe_face_values(mapping(),
-                                   *fe_system,
-                                   face_quadrature,
-                                   update_values | update_quadrature_points |
-                                     update_JxW_values);
-
-    const unsigned int dofs_per_cell = fe_system->n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
-    Vector<double>     cell_rhs(dofs_per_cell);
-    std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
-    std::vector<SymmetricTensor<2, 2>>   eps(dofs_per_cell);
-    std::vector<double>                  div(dofs_per_cell);
-    Vector<double>                       t(2);
-    const FEValuesExtractors::Vector     displacement(0);
-
-    const double mu     = material_.mu();
-    const double lambda = material_.lambda();
-
-    const SimilarityBreaker fresh(cell_type);
-    for (const auto &cell : dofs.active_cell_iterators())
+    /// The element matrix and the traction load of one cell.
+    class CellSystem
+    {
+    public:
+      CellSystem(const FiniteElement<2>                   &fe,
+                 const Mapping<2>                         &mapping,
+                 const LayerMaterial                      &material,
+                 const std::array<bool, 4>                &clamped,
+                 const std::array<const Function<2> *, 4> &traction)
+        : fe(fe)
+        , clamped(clamped)
+        , traction(traction)
+        , mu(material.mu())
+        , lambda(material.lambda())
+        , fe_values(mapping,
+                    fe,
+                    fe.reference_cell().get_gauss_type_quadrature<2>(fe.degree +
+                                                                     1),
+                    update_gradients | update_JxW_values)
+        , fe_face_values(
+            mapping,
+            fe,
+            ReferenceCells::Line.get_gauss_type_quadrature<1>(fe.degree + 1),
+            update_values | update_quadrature_points | update_JxW_values)
+        , fresh(fe.reference_cell())
+        , eps(fe.n_dofs_per_cell())
+        , div(fe.n_dofs_per_cell())
+        , cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+        , cell_rhs(fe.n_dofs_per_cell())
+        , local_dofs(fe.n_dofs_per_cell())
       {
-        cell_matrix = 0;
-        cell_rhs    = 0;
+        t.reinit(2);
+      }
+
+      /// Compute cell_matrix, cell_rhs and local_dofs of @p cell.
+      void
+      compute(const DoFHandler<2>::active_cell_iterator &cell)
+      {
+        const unsigned int n = fe.n_dofs_per_cell();
+        cell_matrix          = 0;
+        cell_rhs             = 0;
         fresh.apply(fe_values);
         fe_values.reinit(cell);
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            for (unsigned int i = 0; i < n; ++i)
               {
                 eps[i] = fe_values[displacement].symmetric_gradient(i, q);
                 div[i] = fe_values[displacement].divergence(i, q);
               }
             const double JxW = fe_values.JxW(q);
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              for (unsigned int j = i; j < dofs_per_cell; ++j)
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = i; j < n; ++j)
                 cell_matrix(i, j) += (2 * mu * scalar_product(eps[i], eps[j]) +
                                       lambda * div[i] * div[j]) *
                                      JxW;
           }
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < i; ++j)
             cell_matrix(i, j) = cell_matrix(j, i);
 
@@ -209,17 +158,130 @@ namespace bilayer
                 {
                   load.vector_value(fe_face_values.quadrature_point(q), t);
                   const Tensor<1, 2> traction_q({t[0], t[1]});
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                  for (unsigned int i = 0; i < n; ++i)
                     cell_rhs(i) += fe_face_values[displacement].value(i, q) *
                                    traction_q * fe_face_values.JxW(q);
                 }
             }
-
         cell->get_dof_indices(local_dofs);
-        constraints.distribute_local_to_global(
-          cell_matrix, cell_rhs, local_dofs, system_matrix, system_rhs);
-        stiffness.add(local_dofs, cell_matrix);
-        traction_load.add(local_dofs, cell_rhs);
+      }
+
+    private:
+      const FiniteElement<2>                   &fe;
+      const std::array<bool, 4>                 clamped;
+      const std::array<const Function<2> *, 4> &traction;
+      const double                              mu, lambda;
+      FEValues<2>                               fe_values;
+      FEFaceValues<2>                           fe_face_values;
+      const SimilarityBreaker                   fresh;
+      const FEValuesExtractors::Vector          displacement{0};
+      std::vector<SymmetricTensor<2, 2>>        eps;
+      std::vector<double>                       div;
+      Vector<double>                            t;
+
+    public:
+      FullMatrix<double>                   cell_matrix;
+      Vector<double>                       cell_rhs;
+      std::vector<types::global_dof_index> local_dofs;
+    };
+  } // namespace
+
+
+  void
+  ElasticSubproblem::setup(const std::array<bool, 4>                &clamped,
+                           const Function<2>                        &prescribed,
+                           const std::array<const Function<2> *, 4> &traction,
+                           const std::string &shared_solver_type)
+  {
+    shared_solver = shared_solver_type;
+    shared.reset();
+    shared_dirichlet.reset();
+    Timer timer;
+    dofs.distribute_dofs(*fe_system);
+
+    constraints.clear();
+    homogeneous_constraints.clear();
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    DoFTools::make_hanging_node_constraints(dofs, homogeneous_constraints);
+    const Functions::ZeroFunction<2> zero(2);
+    for (unsigned int side = 0; side < 4; ++side)
+      if (clamped[side])
+        {
+          VectorTools::interpolate_boundary_values(
+            mapping(), dofs, side, prescribed, constraints);
+          VectorTools::interpolate_boundary_values(
+            mapping(), dofs, side, zero, homogeneous_constraints);
+        }
+    constraints.close();
+    homogeneous_constraints.close();
+
+    const IndexSet on_sigma =
+      DoFTools::extract_boundary_dofs(dofs,
+                                      ComponentMask(),
+                                      {BoundaryIds::glued, BoundaryIds::crack});
+    trace_dofs_.assign(on_sigma.begin(), on_sigma.end());
+    if (!owned())
+      {
+        assembly_seconds = timer.wall_time();
+        return;
+      }
+    if (distribution.group_size(index()) > 1)
+      {
+        shared = std::make_unique<DistributedSystem>(
+          dofs, constraints, distribution.group_communicator(), shared_solver);
+        CellSystem system(*fe_system, mapping(), material_, clamped, traction);
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (shared->assembles(cell->active_cell_index()))
+            {
+              system.compute(cell);
+              constraints.distribute_local_to_global(system.cell_matrix,
+                                                     system.cell_rhs,
+                                                     system.local_dofs,
+                                                     shared->matrix,
+                                                     shared->rhs);
+              shared->stiffness.add(system.local_dofs, system.cell_matrix);
+              shared->load.add(system.local_dofs, system.cell_rhs);
+            }
+        assembly_seconds = timer.wall_time();
+        timer.restart();
+        shared->finish_assembly();
+        factorisation_seconds = timer.wall_time();
+        return;
+      }
+
+    DynamicSparsityPattern dsp(dofs.n_dofs());
+    DoFTools::make_sparsity_pattern(dofs, dsp, constraints, true);
+    sparsity.copy_from(dsp);
+    system_matrix.reinit(sparsity);
+    stiffness.reinit(sparsity);
+    system_rhs.reinit(dofs.n_dofs());
+    traction_load.reinit(dofs.n_dofs());
+
+    assemble(clamped, traction);
+    assembly_seconds = timer.wall_time();
+
+    timer.restart();
+    factorisation.initialize(system_matrix);
+    factorisation_seconds = timer.wall_time();
+  }
+
+
+  void
+  ElasticSubproblem::assemble(
+    const std::array<bool, 4>                &clamped,
+    const std::array<const Function<2> *, 4> &traction)
+  {
+    CellSystem system(*fe_system, mapping(), material_, clamped, traction);
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        system.compute(cell);
+        constraints.distribute_local_to_global(system.cell_matrix,
+                                               system.cell_rhs,
+                                               system.local_dofs,
+                                               system_matrix,
+                                               system_rhs);
+        stiffness.add(system.local_dofs, system.cell_matrix);
+        traction_load.add(system.local_dofs, system.cell_rhs);
       }
   }
 
@@ -228,15 +290,27 @@ namespace bilayer
   ElasticSubproblem::solve(const Vector<double> &coupling,
                            Vector<double>       &solution) const
   {
-    if (coupling.size() > 0)
+    if (shared)
       {
-        solution = coupling;
+        if (coupling.size() > 0)
+          solution = coupling;
+        else
+          solution.reinit(n_dofs());
         homogeneous_constraints.condense(solution);
-        solution += system_rhs;
+        shared->solve(solution, true);
       }
     else
-      solution = system_rhs;
-    factorisation.solve(solution);
+      {
+        if (coupling.size() > 0)
+          {
+            solution = coupling;
+            homogeneous_constraints.condense(solution);
+            solution += system_rhs;
+          }
+        else
+          solution = system_rhs;
+        factorisation.solve(solution);
+      }
     constraints.distribute(solution);
   }
 
@@ -247,7 +321,10 @@ namespace bilayer
   {
     solution = coupling;
     homogeneous_constraints.condense(solution);
-    factorisation.solve(solution);
+    if (shared)
+      shared->solve(solution, false);
+    else
+      factorisation.solve(solution);
     homogeneous_constraints.distribute(solution);
   }
 
@@ -284,12 +361,38 @@ namespace bilayer
         for (const auto i : sigma_dofs)
           dirichlet_constraints.add_line(i);
         dirichlet_constraints.close();
-        // The sparsity pattern already holds the fill of the hanging-node
-        // condensation; holding more dofs at zero adds none.
-        dirichlet_matrix.reinit(sparsity);
-        dirichlet_matrix.copy_from(stiffness);
-        dirichlet_constraints.condense(dirichlet_matrix);
-        dirichlet_factorisation.initialize(dirichlet_matrix);
+        if (shared)
+          {
+            // Assembled again by the group with the Sigma dofs held.
+            shared_dirichlet = std::make_unique<DistributedSystem>(
+              dofs,
+              dirichlet_constraints,
+              distribution.group_communicator(),
+              shared_solver);
+            const std::array<bool, 4> no_loads{true, true, true, true};
+            const std::array<const Function<2> *, 4> none{};
+            CellSystem system(*fe_system, mapping(), material_, no_loads, none);
+            for (const auto &cell : dofs.active_cell_iterators())
+              if (shared_dirichlet->assembles(cell->active_cell_index()))
+                {
+                  system.compute(cell);
+                  dirichlet_constraints.distribute_local_to_global(
+                    system.cell_matrix,
+                    system.local_dofs,
+                    shared_dirichlet->matrix);
+                }
+            shared_dirichlet->finish_assembly();
+          }
+        else
+          {
+            // The sparsity pattern already holds the fill of the
+            // hanging-node condensation; holding more dofs at zero adds
+            // none.
+            dirichlet_matrix.reinit(sparsity);
+            dirichlet_matrix.copy_from(stiffness);
+            dirichlet_constraints.condense(dirichlet_matrix);
+            dirichlet_factorisation.initialize(dirichlet_matrix);
+          }
         dirichlet_ready = true;
       }
     interface_setup_seconds += timer.wall_time();
@@ -307,14 +410,17 @@ namespace bilayer
       extension(i) = x(i);
     // ... then discrete-harmonically into the interior: K_II z = -K_I. x.
     Vector<double> interior(n_dofs());
-    stiffness.vmult(interior, extension);
+    multiply_stiffness(interior, extension);
     interior *= -1.;
     dirichlet_constraints.condense(interior);
-    dirichlet_factorisation.solve(interior);
+    if (shared_dirichlet)
+      shared_dirichlet->solve(interior, false);
+    else
+      dirichlet_factorisation.solve(interior);
     dirichlet_constraints.distribute(interior);
     extension += interior;
     Vector<double> reaction(n_dofs());
-    stiffness.vmult(reaction, extension);
+    multiply_stiffness(reaction, extension);
     y.reinit(n_dofs());
     for (const auto i : sigma_dofs)
       y(i) = reaction(i);
@@ -329,7 +435,7 @@ namespace bilayer
     Vector<double> extension(n_dofs()), reaction(n_dofs());
     for (const auto i : sigma_dofs)
       extension(i) = x(i);
-    stiffness.vmult(reaction, extension);
+    multiply_stiffness(reaction, extension);
     y.reinit(n_dofs());
     for (const auto i : sigma_dofs)
       y(i) = reaction(i);
@@ -351,9 +457,22 @@ namespace bilayer
   } // namespace
 
 
+  void
+  ElasticSubproblem::multiply_stiffness(Vector<double>       &y,
+                                        const Vector<double> &x) const
+  {
+    if (shared)
+      shared->vmult_stiffness(y, x);
+    else
+      stiffness.vmult(y, x);
+  }
+
+
   double
   ElasticSubproblem::energy_norm_squared(const Vector<double> &w) const
   {
+    if (shared)
+      return shared->energy_norm_squared(w);
     Vector<double> aw(w.size());
     stiffness.vmult(aw, w); // row by row: independent of the threads
     return ordered_dot(aw, w);
@@ -363,6 +482,7 @@ namespace bilayer
   double
   ElasticSubproblem::energy(const Vector<double> &w) const
   {
-    return 0.5 * energy_norm_squared(w) - ordered_dot(traction_load, w);
+    return 0.5 * energy_norm_squared(w) -
+           (shared ? shared->load_product(w) : ordered_dot(traction_load, w));
   }
 } // namespace bilayer

@@ -14,6 +14,12 @@
 // refine alike on every process, non-matching traces, warm start), a
 // one-layer scene (two subproblems: with 4 processes two have none) and
 // P2 triangles with the consistent coupling.
+//
+// With 6 processes (.mpirun=6) u- and u+ are shared by two processes each
+// (DistributedSystem: METIS partition, Trilinos matrices, MUMPS; KLU in an
+// extra Uzawa scene), v- and v+ have one owner each; the solutions must
+// agree with the serial ones to 1e-8 (another direct solver: rounding
+// differs).
 
 #include <deal.II/base/mpi.h>
 
@@ -82,7 +88,9 @@ namespace
               relative(a.theta, b.theta, std::abs(a.theta) + 1e-300),
               relative(p.displacement_scale, q.displacement_scale, u),
               relative(p.max_penetration, q.max_penetration, u),
-              relative(p.constraint_violation, q.constraint_violation, u * u),
+              relative(p.relative_constraint_violation,
+                       q.relative_constraint_violation,
+                       1.),
               relative(p.kkt.value(), q.kkt.value(), 1.),
               relative(p.complementarity, q.complementarity, 1.),
               relative(p.max_multiplier_over_bound,
@@ -110,13 +118,31 @@ namespace
         std::max(open_difference, std::abs(open_a[i] - open_b[i]));
     open_difference /= reference->records().back().report.displacement_scale;
 
-    std::cout << name << ": " << study.records().size()
-              << " cycles, converged and same iteration counts: "
-              << yes(same_counts)
-              << "; energy and residuals within 1e-10: " << yes(worst <= 1e-10)
-              << "; multipliers within 1e-10: " << yes(mu_difference <= 1e-10)
-              << "; crack opening within 1e-10: "
-              << yes(open_difference <= 1e-10) << std::endl;
+    if (all.n_processes() <= 4)
+      std::cout << name << ": " << study.records().size()
+                << " cycles, converged and same iteration counts: "
+                << yes(same_counts) << "; energy and residuals within 1e-10: "
+                << yes(worst <= 1e-10)
+                << "; multipliers within 1e-10: " << yes(mu_difference <= 1e-10)
+                << "; crack opening within 1e-10: "
+                << yes(open_difference <= 1e-10) << std::endl;
+    else
+      {
+        // Shared subproblems: another direct solver (Amesos) and other
+        // sums, so rounding differs; where a jump is zero by symmetry it
+        // can flip an active-set decision and change the iteration counts
+        // and the last iterate within the solver's tolerance.
+        bool converged = study.records().size() == reference->records().size();
+        for (const auto &record : study.records())
+          converged = converged && record.accepted();
+        std::cout << name << ": " << study.records().size()
+                  << " cycles, converged: " << yes(converged)
+                  << "; energy and residuals within 1e-8: "
+                  << yes(worst <= 1e-8)
+                  << "; multipliers within 1e-8: " << yes(mu_difference <= 1e-8)
+                  << "; crack opening within 1e-8: "
+                  << yes(open_difference <= 1e-8) << std::endl;
+      }
   }
 } // namespace
 
@@ -130,8 +156,15 @@ main(int argc, char **argv)
     " set Write interface CSV = false\n set Terminal output = checks\nend\n";
   const std::string example1 = std::string(example1_loads) + quiet_output;
 
+  const bool shared = Distribution::world().n_processes() > 4;
   compare("uzawa",
           "subsection Mesh\n set Cells along Sigma = 8\nend\n" + example1);
+  if (shared)
+    compare("uzawa_klu",
+            "subsection Mesh\n set Cells along Sigma = 4\nend\n"
+            "subsection Solver\n set Uzawa step theta = auto\n"
+            " set Shared subproblem solver = klu\nend\n" +
+              example1);
   compare("accelerated",
           "subsection Mesh\n set Cells along Sigma = 8\nend\n"
           "subsection Solver\n set Method = accelerated\n"

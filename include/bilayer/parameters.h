@@ -309,7 +309,9 @@ namespace bilayer
     unsigned int spectrum_iterations = 30;
     unsigned int max_iterations      = 100000;
     StoppingRule stopping_rule       = StoppingRule::paper;
-    double       tolerance           = 1e-6;
+    /// Amesos solver of subproblems shared by a group of processes.
+    std::string shared_solver = "Amesos_Mumps";
+    double      tolerance     = 1e-6;
     /// Divergence: the multiplier increment grew by this factor over its
     /// smallest value so far.
     double divergence_factor = 1e3;

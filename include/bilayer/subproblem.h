@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <bilayer/cholesky.h>
+#include <bilayer/distributed_system.h>
 #include <bilayer/distribution.h>
 #include <bilayer/parameters.h>
 
@@ -42,7 +43,11 @@ namespace bilayer
    * In an MPI job (see Distribution) every process builds the dof numbering
    * and the constraints of every subproblem, but only the owners of a
    * subproblem assemble, factorise and solve it; share_trace() then sends
-   * the values on Sigma to the other processes.
+   * the values on Sigma to the other processes. A subproblem owned by a
+   * group of processes (more than four in all) is assembled and factorised
+   * by the group as a DistributedSystem (Trilinos, METIS, a parallel direct
+   * solver @p shared_solver of Amesos); its vectors stay whole on every
+   * process of the group.
    */
   class ElasticSubproblem
   {
@@ -62,7 +67,22 @@ namespace bilayer
     void
     setup(const std::array<bool, 4>                &clamped,
           const Function<2>                        &prescribed,
-          const std::array<const Function<2> *, 4> &traction);
+          const std::array<const Function<2> *, 4> &traction,
+          const std::string &shared_solver = "Amesos_Mumps");
+
+    /// Whether a group of processes shares it (DistributedSystem).
+    bool
+    distributed() const
+    {
+      return shared != nullptr;
+    }
+
+    /// With distributed(): the matrices of the group.
+    const DistributedSystem &
+    distributed_system() const
+    {
+      return *shared;
+    }
 
     /// Whether this process assembles, factorises and solves it.
     bool
@@ -188,6 +208,10 @@ namespace bilayer
     double factorisation_seconds = 0;
 
   private:
+    /// y = K x, the unconstrained stiffness.
+    void
+    multiply_stiffness(Vector<double> &y, const Vector<double> &x) const;
+
     void
     assemble(const std::array<bool, 4>                &clamped,
              const std::array<const Function<2> *, 4> &traction);
@@ -196,6 +220,8 @@ namespace bilayer
     const Subdomain                      subdomain_;
     const LayerMaterial                  material_;
     const Distribution                  &distribution;
+    std::string                          shared_solver;
+    std::unique_ptr<DistributedSystem>   shared, shared_dirichlet;
     std::vector<types::global_dof_index> trace_dofs_;
     std::unique_ptr<FESystem<2>>         fe_system;
     DoFHandler<2>                        dofs;
