@@ -1,3 +1,4 @@
+#include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
@@ -151,35 +152,48 @@ namespace bilayer
     record.P     = domain.n_sigma_vertices();
     record.M     = domain.n_outer_vertices();
 
+    // The loads of each layer, then the four set-ups (assembly and
+    // factorisation) as parallel tasks.
+    std::array<decltype(scene.loads.prescribed_function(Layer::first)), 2>
+      prescribed;
+    std::array<std::array<std::unique_ptr<FunctionParser<2>>, 4>, 2>
+                                                      traction_owners;
+    std::array<std::array<const Function<2> *, 4>, 2> traction;
+    Threads::TaskGroup<void>                          setups;
     for (const Layer layer : {Layer::first, Layer::second})
       if (scene.materials.has_layer(layer))
         {
-          const auto prescribed = scene.loads.prescribed_function(layer);
-          std::array<std::unique_ptr<FunctionParser<2>>, 4> traction_owners;
-          std::array<const Function<2> *, 4>                traction;
+          const unsigned int l = static_cast<unsigned int>(layer);
+          prescribed[l]        = scene.loads.prescribed_function(layer);
           for (unsigned int side = 0; side < 4; ++side)
             {
-              traction_owners[side] =
+              traction_owners[l][side] =
                 scene.loads.traction_function(layer, static_cast<Side>(side));
-              traction[side] = traction_owners[side].get();
+              traction[l][side] = traction_owners[l][side].get();
             }
           for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
             {
               auto &sub = subproblems[Interface::index(layer, sd)];
-              sub       = std::make_unique<ElasticSubproblem>(
-                layer,
-                sd,
-                domain.triangulation(sd),
-                scene.mesh.degree(layer),
-                scene.materials.layer[static_cast<unsigned int>(layer)],
-                distribution);
-              sub->setup(scene.geometry.clamped,
-                         *prescribed,
-                         traction,
-                         scene.solver.shared_solver);
-              record.dofs += sub->n_dofs();
+              sub =
+                std::make_unique<ElasticSubproblem>(layer,
+                                                    sd,
+                                                    domain.triangulation(sd),
+                                                    scene.mesh.degree(layer),
+                                                    scene.materials.layer[l],
+                                                    distribution);
+              ElasticSubproblem *const target = sub.get();
+              setups += Threads::new_task([&, target, l]() {
+                target->setup(scene.geometry.clamped,
+                              *prescribed[l],
+                              traction[l],
+                              scene.solver.shared_solver);
+              });
             }
         }
+    setups.join_all();
+    for (const auto &sub : subproblems)
+      if (sub)
+        record.dofs += sub->n_dofs();
     std::array<const ElasticSubproblem *, 4> views;
     Subproblems                              solvers;
     for (unsigned int s = 0; s < 4; ++s)
