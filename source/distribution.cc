@@ -109,25 +109,6 @@ namespace bilayer
 
 
   void
-  Distribution::share(const unsigned int s, Vector<float> &v) const
-  {
-    if (!parallel())
-      return;
-    unsigned long long size = v.size();
-    int                ierr =
-      MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, root(s), communicator_);
-    AssertThrowMPI(ierr);
-    v.reinit(size, process_ == root(s));
-    ierr = MPI_Bcast(v.begin(),
-                     static_cast<int>(size),
-                     MPI_FLOAT,
-                     static_cast<int>(root(s)),
-                     communicator_);
-    AssertThrowMPI(ierr);
-  }
-
-
-  void
   Distribution::share(std::array<double, 4> &values) const
   {
     if (!parallel())

@@ -109,18 +109,14 @@ namespace bilayer
 
     /**
      * Copy the entries @p indices (all entries if null) of @p v from the
-     * root of subproblem @p s to every process (collective). @p v keeps
-     * its other entries; it is resized to @p size first where it has
-     * another size.
+     * root of subproblem @p s to every process (collective). With
+     * @p indices, @p v must have its full size on every process and keeps
+     * its other entries; without, it takes the root's size.
      */
     void
     share(const unsigned int                          s,
           Vector<double>                             &v,
           const std::vector<types::global_dof_index> *indices = nullptr) const;
-
-    /// The same for a vector of floats (all entries).
-    void
-    share(const unsigned int s, Vector<float> &v) const;
 
     /**
      * Entry s of @p values from the root of subproblem s, for every s
