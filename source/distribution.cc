@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
 
 #include <bilayer/distribution.h>
 
@@ -75,6 +76,7 @@ namespace bilayer
   {
     if (!parallel())
       return;
+    Timer               timer;
     std::vector<double> buffer;
     if (indices != nullptr)
       {
@@ -105,6 +107,7 @@ namespace bilayer
         std::copy(buffer.begin(), buffer.end(), v.begin());
       }
     shared_values_ += size;
+    shared_seconds_ += timer.wall_time();
   }
 
 

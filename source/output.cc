@@ -205,9 +205,10 @@ namespace bilayer
           for (unsigned int k = 0; k < group_size; ++k)
             pieces.push_back(
               piece + (group_size > 1 ? "." + std::to_string(k) : "") + ".vtu");
+          // The first process builds the fields of u- also to name them in
+          // the .pvtu (it owns u- in every layout).
           if (!sub.owned() && !(s == 0 && processes.is_root()))
             continue;
-          // The root builds the fields of u- to name them in the .pvtu.
 
           DataOut<2> &data_out = data_outs[s];
           data_out.attach_dof_handler(sub.dof_handler());

@@ -227,13 +227,15 @@ namespace bilayer
           << " dofs, " << record.multipliers << " multipliers" << std::endl;
 
     Timer               solve_timer;
-    const unsigned long shared_before = distribution.shared_values();
-    record.result                     = solve_contact_problem(
+    const unsigned long shared_before  = distribution.shared_values();
+    const double        seconds_before = distribution.shared_seconds();
+    record.result                      = solve_contact_problem(
       scene.solver, scene.output, pcout, solvers, coupling, mu, w);
-    record.theta         = record.result.theta;
-    record.solve_seconds = solve_timer.wall_time();
-    record.processes     = distribution.n_processes();
-    record.shared_values = distribution.shared_values() - shared_before;
+    record.theta          = record.result.theta;
+    record.solve_seconds  = solve_timer.wall_time();
+    record.processes      = distribution.n_processes();
+    record.shared_values  = distribution.shared_values() - shared_before;
+    record.shared_seconds = distribution.shared_seconds() - seconds_before;
 
     // Energies (whole solutions: evaluated by the owners), summed in the
     // order of the subproblems as in a serial run.
@@ -351,8 +353,8 @@ namespace bilayer
           << "  KKT residual (relative)      " << r.kkt.value() << "\n"
           << std::defaultfloat << std::setprecision(3)
           << "  processes                    " << record.processes
-          << ", traces sent " << record.shared_values
-          << " values, peak memory per process [MiB]";
+          << ", traces sent " << record.shared_values << " values in "
+          << record.shared_seconds << " s, peak memory per process [MiB]";
     for (const double m : record.memory_mib)
       pcout << " " << std::fixed << std::setprecision(0) << m;
     pcout << "\n"
@@ -481,6 +483,7 @@ namespace bilayer
               << ", \"accepted\": " << (r.accepted() ? "true" : "false")
               << ", \"processes\": " << r.processes
               << ", \"shared_values\": " << r.shared_values
+              << ", \"shared_seconds\": " << json(r.shared_seconds)
               << ", \"memory_mib\": [";
             for (unsigned int p = 0; p < r.memory_mib.size(); ++p)
               o << (p ? ", " : "") << json(r.memory_mib[p]);

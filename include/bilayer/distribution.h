@@ -153,6 +153,14 @@ namespace bilayer
       return shared_values_;
     }
 
+    /// Wall time spent in share() so far [s] (the exchange, with the
+    /// waiting for the slowest owner).
+    double
+    shared_seconds() const
+    {
+      return shared_seconds_;
+    }
+
   private:
     MPI_Comm              communicator_;
     MPI_Comm              group_communicator_;
@@ -160,6 +168,7 @@ namespace bilayer
     unsigned int          n_processes_           = 1;
     unsigned int          process_               = 0;
     mutable unsigned long shared_values_         = 0;
+    mutable double        shared_seconds_        = 0;
   };
 } // namespace bilayer
 

@@ -41,8 +41,10 @@ namespace bilayer
     /// MPI processes, values sent from the subproblems' owners to all
     /// processes in the iterations (traces on Sigma), and the peak resident
     /// memory of each process [MiB].
-    unsigned int        processes     = 1;
-    unsigned long       shared_values = 0;
+    unsigned int  processes     = 1;
+    unsigned long shared_values = 0;
+    /// Wall time of that exchange on the first process [s].
+    double              shared_seconds = 0;
     std::vector<double> memory_mib;
     /// Parts of setup_seconds: assembly and factorisation of the four
     /// subproblems, summed.

@@ -17,7 +17,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 strip() {
-  sed -E 's/, "wall_seconds": \{[^}]*\}//; s/, "memory_mib": \[[^]]*\]//; s/, "processes": [0-9]+//; s/, "shared_values": [0-9]+//' "$1"
+  sed -E 's/, "wall_seconds": \{[^}]*\}//; s/, "memory_mib": \[[^]]*\]//; s/, "processes": [0-9]+//; s/, "shared_values": [0-9]+//; s/, "shared_seconds": [^,]+//' "$1"
 }
 for n in 0 2 4 6; do
   launcher=()
