@@ -226,42 +226,26 @@ namespace bilayer
         return;
       }
     if (distribution.group_size(index()) > 1)
+      shared = std::make_unique<DistributedSystem>(
+        dofs, constraints, distribution.group_communicator(), shared_solver);
+    else
       {
-        shared = std::make_unique<DistributedSystem>(
-          dofs, constraints, distribution.group_communicator(), shared_solver);
-        CellSystem system(*fe_system, mapping(), material_, clamped, traction);
-        for (const auto &cell : dofs.active_cell_iterators())
-          if (shared->assembles(cell->active_cell_index()))
-            {
-              system.compute(cell);
-              constraints.distribute_local_to_global(system.cell_matrix,
-                                                     system.cell_rhs,
-                                                     system.local_dofs,
-                                                     shared->matrix,
-                                                     shared->rhs);
-              shared->stiffness.add(system.local_dofs, system.cell_matrix);
-              shared->load.add(system.local_dofs, system.cell_rhs);
-            }
-        assembly_seconds = timer.wall_time();
-        timer.restart();
-        shared->finish_assembly();
-        factorisation_seconds = timer.wall_time();
-        return;
+        DynamicSparsityPattern dsp(dofs.n_dofs());
+        DoFTools::make_sparsity_pattern(dofs, dsp, constraints, true);
+        sparsity.copy_from(dsp);
+        system_matrix.reinit(sparsity);
+        stiffness.reinit(sparsity);
+        system_rhs.reinit(dofs.n_dofs());
+        traction_load.reinit(dofs.n_dofs());
       }
-
-    DynamicSparsityPattern dsp(dofs.n_dofs());
-    DoFTools::make_sparsity_pattern(dofs, dsp, constraints, true);
-    sparsity.copy_from(dsp);
-    system_matrix.reinit(sparsity);
-    stiffness.reinit(sparsity);
-    system_rhs.reinit(dofs.n_dofs());
-    traction_load.reinit(dofs.n_dofs());
-
     assemble(clamped, traction);
     assembly_seconds = timer.wall_time();
 
     timer.restart();
-    factorisation.initialize(system_matrix);
+    if (shared)
+      shared->finish_assembly();
+    else
+      factorisation.initialize(system_matrix);
     factorisation_seconds = timer.wall_time();
   }
 
@@ -273,16 +257,29 @@ namespace bilayer
   {
     CellSystem system(*fe_system, mapping(), material_, clamped, traction);
     for (const auto &cell : dofs.active_cell_iterators())
-      {
-        system.compute(cell);
-        constraints.distribute_local_to_global(system.cell_matrix,
-                                               system.cell_rhs,
-                                               system.local_dofs,
-                                               system_matrix,
-                                               system_rhs);
-        stiffness.add(system.local_dofs, system.cell_matrix);
-        traction_load.add(system.local_dofs, system.cell_rhs);
-      }
+      if (shared == nullptr)
+        {
+          system.compute(cell);
+          constraints.distribute_local_to_global(system.cell_matrix,
+                                                 system.cell_rhs,
+                                                 system.local_dofs,
+                                                 system_matrix,
+                                                 system_rhs);
+          stiffness.add(system.local_dofs, system.cell_matrix);
+          traction_load.add(system.local_dofs, system.cell_rhs);
+        }
+      else if (shared->assembles(cell->active_cell_index()))
+        {
+          // The cells of this process's part of a shared subproblem.
+          system.compute(cell);
+          constraints.distribute_local_to_global(system.cell_matrix,
+                                                 system.cell_rhs,
+                                                 system.local_dofs,
+                                                 shared->matrix,
+                                                 shared->rhs);
+          shared->stiffness.add(system.local_dofs, system.cell_matrix);
+          shared->load.add(system.local_dofs, system.cell_rhs);
+        }
   }
 
 
