@@ -14,7 +14,8 @@ namespace bilayer
     const DoFHandler<2>             &dofs,
     const AffineConstraints<double> &constraints,
     const MPI_Comm                   group,
-    const std::string               &solver_type)
+    const std::string               &solver_type,
+    const DistributedSystem         *same_partition)
     : group(group)
     , part(Utilities::MPI::this_mpi_process(group))
     , solver_type(solver_type)
@@ -26,7 +27,9 @@ namespace bilayer
     // which other subproblems share; the first process's partition is
     // everybody's.
     partition.resize(tria.n_active_cells());
-    if (part == 0)
+    if (same_partition != nullptr)
+      partition = same_partition->cell_partition();
+    else if (part == 0)
       {
         Triangulation<2> copy;
         copy.copy_triangulation(tria);
@@ -36,7 +39,8 @@ namespace bilayer
         for (const auto &cell : copy.active_cell_iterators())
           partition[cell->active_cell_index()] = cell->subdomain_id();
       }
-    partition = Utilities::MPI::broadcast(group, partition, 0);
+    if (same_partition == nullptr)
+      partition = Utilities::MPI::broadcast(group, partition, 0);
 
     // A dof belongs to the lowest part among its cells.
     std::vector<unsigned int>            owner(dofs.n_dofs(), n_parts);

@@ -76,37 +76,30 @@ namespace bilayer
   {
     if (!parallel())
       return;
-    Timer               timer;
-    std::vector<double> buffer;
+    Timer timer;
+    int   ierr;
     if (indices != nullptr)
       {
-        buffer.resize(indices->size());
+        std::vector<double> buffer(indices->size());
         if (process_ == root(s))
           for (unsigned int i = 0; i < indices->size(); ++i)
             buffer[i] = v((*indices)[i]);
+        ierr = MPI_Bcast(buffer.data(),
+                         static_cast<int>(buffer.size()),
+                         MPI_DOUBLE,
+                         static_cast<int>(root(s)),
+                         communicator_);
+        for (unsigned int i = 0; i < indices->size(); ++i)
+          v((*indices)[i]) = buffer[i];
       }
     else
-      buffer.assign(v.begin(), v.end());
-    unsigned long long size = buffer.size();
-    int                ierr =
-      MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, root(s), communicator_);
+      ierr = MPI_Bcast(v.begin(),
+                       static_cast<int>(v.size()),
+                       MPI_DOUBLE,
+                       static_cast<int>(root(s)),
+                       communicator_);
     AssertThrowMPI(ierr);
-    buffer.resize(size);
-    ierr = MPI_Bcast(buffer.data(),
-                     static_cast<int>(size),
-                     MPI_DOUBLE,
-                     static_cast<int>(root(s)),
-                     communicator_);
-    AssertThrowMPI(ierr);
-    if (indices != nullptr)
-      for (unsigned int i = 0; i < indices->size(); ++i)
-        v((*indices)[i]) = buffer[i];
-    else
-      {
-        v.reinit(size, true);
-        std::copy(buffer.begin(), buffer.end(), v.begin());
-      }
-    shared_values_ += size;
+    shared_values_ += indices != nullptr ? indices->size() : v.size();
     shared_seconds_ += timer.wall_time();
   }
 

@@ -115,6 +115,11 @@ namespace bilayer
         for (const unsigned int s : {sd, sd + 2})
           if (subproblems[s] != nullptr)
             {
+              if (!subproblems[s]->owned())
+                squared[s].reinit(subproblems[s]
+                                    ->dof_handler()
+                                    .get_triangulation()
+                                    .n_active_cells());
               subproblems[s]->processes().share(s, squared[s]);
               if (sum.size() == 0)
                 sum = squared[s];

@@ -205,9 +205,7 @@ namespace bilayer
           for (unsigned int k = 0; k < group_size; ++k)
             pieces.push_back(
               piece + (group_size > 1 ? "." + std::to_string(k) : "") + ".vtu");
-          // The first process builds the fields of u- also to name them in
-          // the .pvtu (it owns u- in every layout).
-          if (!sub.owned() && !(s == 0 && processes.is_root()))
+          if (!sub.owned())
             continue;
 
           DataOut<2> &data_out = data_outs[s];
@@ -237,8 +235,6 @@ namespace bilayer
           data_out.add_data_vector(subdomains[s],
                                    "subdomain",
                                    DataOut<2>::type_cell_data);
-          if (!sub.owned())
-            continue;
           const MPI_Comm group =
             sub.distributed() ? processes.group_communicator() : MPI_COMM_SELF;
           std::string vtu = piece + ".vtu";
@@ -303,6 +299,8 @@ namespace bilayer
       return;
     if (parameters.write_vtu)
       {
+        // The first process owns u- in every layout: its fields name those
+        // of all pieces.
         write_atomically(directory + "/" + stem.str() + ".pvtu",
                          [&](std::ostream &out) {
                            data_outs[0].write_pvtu_record(out, pieces);

@@ -112,12 +112,11 @@ namespace bilayer
         , fresh(fe.reference_cell())
         , eps(fe.n_dofs_per_cell())
         , div(fe.n_dofs_per_cell())
+        , t(2)
         , cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
         , cell_rhs(fe.n_dofs_per_cell())
         , local_dofs(fe.n_dofs_per_cell())
-      {
-        t.reinit(2);
-      }
+      {}
 
       /// Compute cell_matrix, cell_rhs and local_dofs of @p cell.
       void
@@ -365,7 +364,8 @@ namespace bilayer
               dofs,
               dirichlet_constraints,
               distribution.group_communicator(),
-              shared_solver);
+              shared_solver,
+              shared.get());
             const std::array<bool, 4> no_loads{true, true, true, true};
             const std::array<const Function<2> *, 4> none{};
             CellSystem system(*fe_system, mapping(), material_, no_loads, none);

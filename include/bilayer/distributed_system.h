@@ -42,11 +42,21 @@ namespace bilayer
      * Partition the cells of @p dofs among the processes of @p group and
      * set up the sparsity of the matrices for the rows this process writes
      * (its cells' dofs and their constraints' masters in @p constraints).
+     * With @p same_partition, take that system's partition (the same
+     * subproblem under other constraints) instead of running METIS again.
      */
     DistributedSystem(const DoFHandler<2>             &dofs,
                       const AffineConstraints<double> &constraints,
                       const MPI_Comm                   group,
-                      const std::string               &solver_type);
+                      const std::string               &solver_type,
+                      const DistributedSystem *same_partition = nullptr);
+
+    /// The part (process of the group) of each active cell.
+    const std::vector<unsigned int> &
+    cell_partition() const
+    {
+      return partition;
+    }
 
     /// Whether this process assembles (and writes) the active cell with
     /// index @p active_cell_index.
@@ -81,13 +91,6 @@ namespace bilayer
     energy_norm_squared(const Vector<double> &x) const;
     double
     load_product(const Vector<double> &x) const;
-
-    /// Rows of this process.
-    const IndexSet &
-    owned_rows() const
-    {
-      return owned;
-    }
 
   private:
     /// The owned entries of a full vector.

@@ -109,9 +109,8 @@ namespace bilayer
 
     /**
      * Copy the entries @p indices (all entries if null) of @p v from the
-     * root of subproblem @p s to every process (collective). With
-     * @p indices, @p v must have its full size on every process and keeps
-     * its other entries; without, it takes the root's size.
+     * root of subproblem @p s to every process (collective). @p v must
+     * have the same size on every process; it keeps its other entries.
      */
     void
     share(const unsigned int                          s,

@@ -114,14 +114,6 @@ namespace bilayer
     void
     share_trace(Vector<double> &w) const;
 
-    /// The dofs on the faces on Sigma (glued and crack), constrained ones
-    /// included: the support of every trace the interface evaluates.
-    const std::vector<types::global_dof_index> &
-    trace_dofs() const
-    {
-      return trace_dofs_;
-    }
-
     /// Solve with the extra load vector @p coupling (may be empty = zero).
     void
     solve(const Vector<double> &coupling, Vector<double> &solution) const;
@@ -216,12 +208,14 @@ namespace bilayer
     assemble(const std::array<bool, 4>                &clamped,
              const std::array<const Function<2> *, 4> &traction);
 
-    const Layer                          layer_;
-    const Subdomain                      subdomain_;
-    const LayerMaterial                  material_;
-    const Distribution                  &distribution;
-    std::string                          shared_solver;
-    std::unique_ptr<DistributedSystem>   shared, shared_dirichlet;
+    const Layer                        layer_;
+    const Subdomain                    subdomain_;
+    const LayerMaterial                material_;
+    const Distribution                &distribution;
+    std::string                        shared_solver;
+    std::unique_ptr<DistributedSystem> shared, shared_dirichlet;
+    /// The dofs on the faces on Sigma (glued and crack), constrained ones
+    /// included: the support of every trace the interface evaluates.
     std::vector<types::global_dof_index> trace_dofs_;
     std::unique_ptr<FESystem<2>>         fe_system;
     DoFHandler<2>                        dofs;
