@@ -1,6 +1,7 @@
 #include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
 
+#include <bilayer/tasks.h>
 #include <bilayer/active_set_solver.h>
 #include <bilayer/cholesky.h>
 
@@ -42,7 +43,19 @@ namespace bilayer
         if (type == DualPreconditioner::none)
           return;
         interface.coupling_gram(mask, pattern, gram);
-        gram_factorisation.initialize(gram);
+        // Multiplier spaces with redundant constraints (mixed degrees,
+        // non-matching traces) can make the Gram matrix of the active
+        // components singular: then this step uses the diagonal scaling.
+        degraded = !gram_factorisation.try_initialize(gram);
+        if (degraded)
+          ++degraded_steps;
+      }
+
+      /// Newton steps whose Gram matrix could not be factorised.
+      unsigned int
+      n_degraded_steps() const
+      {
+        return degraded_steps;
       }
 
       /// z = M^{-1} r; returns the Dirichlet solves spent.
@@ -50,7 +63,7 @@ namespace bilayer
       vmult(BlockVector<double> &z, const BlockVector<double> &r) const
       {
         z = r;
-        if (type == DualPreconditioner::none)
+        if (type == DualPreconditioner::none || degraded)
           {
             interface.scale_by_weights(z, true);
             z.scale(mask);
@@ -59,10 +72,10 @@ namespace bilayer
         solve_gram(z);
         Solutions loads, reactions;
         interface.apply(z, loads); // -B^T G^{-1} r
-        Threads::TaskGroup<void> tasks;
+        Tasks tasks;
         for (unsigned int s = 0; s < 4; ++s)
           if (subproblems[s] != nullptr && subproblems[s]->owned())
-            tasks += Threads::new_task([&, s]() {
+            tasks.add([&, s]() {
               if (type == DualPreconditioner::dirichlet)
                 subproblems[s]->apply_schur_complement(loads[s], reactions[s]);
               else
@@ -98,6 +111,8 @@ namespace bilayer
       SparsityPattern          pattern;
       SparseMatrix<double>     gram;
       SparseCholesky           gram_factorisation;
+      bool                     degraded       = false;
+      unsigned int             degraded_steps = 0;
     };
   } // namespace
 
@@ -122,10 +137,10 @@ namespace bilayer
     Timer timer;
     if (parameters.preconditioner != DualPreconditioner::none)
       {
-        Threads::TaskGroup<void> tasks;
+        Tasks tasks;
         for (unsigned int s = 0; s < 4; ++s)
           if (subproblems[s] != nullptr && subproblems[s]->owned())
-            tasks += Threads::new_task([&, s]() {
+            tasks.add([&, s]() {
               subproblems[s]->setup_interface_operators(
                 parameters.preconditioner == DualPreconditioner::dirichlet);
             });
@@ -133,17 +148,22 @@ namespace bilayer
       }
     result.setup_seconds = timer.wall_time();
     timer.restart();
-    const auto finish = [&](const std::string &message) {
-      result.message           = message;
-      result.iteration_seconds = timer.wall_time();
-      return result;
-    };
-
     const BlockVector<double> &lower = interface.lower_bounds();
     const BlockVector<double> &upper = interface.upper_bounds();
     DualPreconditionerOperator preconditioner(parameters.preconditioner,
                                               subproblems,
                                               interface);
+    const auto                 finish = [&](const std::string &message) {
+      result.message = message;
+      if (preconditioner.n_degraded_steps() > 0)
+        result.message +=
+          "; the preconditioner's Gram matrix of the free multipliers was "
+          "singular (redundant multiplier constraints) in " +
+          std::to_string(preconditioner.n_degraded_steps()) +
+          " Newton steps, which used the diagonal scaling instead";
+      result.iteration_seconds = timer.wall_time();
+      return result;
+    };
     BlockVector<double> g, mask(lower), previous_mask(lower), r, z, p, q, delta;
     Solutions           homogeneous;
     unsigned int        inner_iterations = 0;
@@ -185,7 +205,13 @@ namespace bilayer
         if (!std::isfinite(kkt.value()))
           {
             result.diverged = true;
-            return finish("diverged: the iterates are no longer finite");
+            return finish(
+              k == 0 ?
+                "the first subdomain solutions are not finite: the loads and "
+                "moduli (Loads, Materials) give displacements beyond the range "
+                "of double; state them in other units" :
+                "diverged: the multipliers of Newton step " +
+                  std::to_string(k) + " are no longer finite");
           }
         if (kkt.value() <= parameters.tolerance)
           {

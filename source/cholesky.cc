@@ -3,6 +3,7 @@
 #include <bilayer/cholesky.h>
 
 #include <algorithm>
+#include <new>
 #include <cholmod.h>
 
 namespace bilayer
@@ -32,7 +33,17 @@ namespace bilayer
 
 
   void
-  SparseCholesky::initialize(const SparseMatrix<double> &matrix)
+  SparseCholesky::initialize(const SparseMatrix<double> &matrix,
+                             const std::string          &what)
+  {
+    AssertThrow(try_initialize(matrix),
+                ExcMessage("the Cholesky factorisation of " + what +
+                           " failed: it is not positive definite"));
+  }
+
+
+  bool
+  SparseCholesky::try_initialize(const SparseMatrix<double> &matrix)
   {
     if (data->factor)
       cholmod_free_factor(&data->factor, &data->common);
@@ -43,7 +54,8 @@ namespace bilayer
     // compressed-column format; stype = 1 uses the upper triangle.
     cholmod_sparse *a = cholmod_allocate_sparse(
       n, n, matrix.n_nonzero_elements(), 0, 1, 1, CHOLMOD_REAL, &data->common);
-    AssertThrow(a != nullptr, ExcMessage("CHOLMOD could not allocate"));
+    if (a == nullptr)
+      throw std::bad_alloc();
     auto *p = static_cast<int *>(a->p);
     auto *i = static_cast<int *>(a->i);
     auto *x = static_cast<double *>(a->x);
@@ -61,14 +73,17 @@ namespace bilayer
     p[n] = k;
 
     data->factor = cholmod_analyze(a, &data->common);
+    if (data->factor == nullptr)
+      {
+        cholmod_free_sparse(&a, &data->common);
+        throw std::bad_alloc();
+      }
     cholmod_factorize(a, data->factor, &data->common);
     const int status = data->common.status;
     cholmod_free_sparse(&a, &data->common);
-    AssertThrow(status == CHOLMOD_OK,
-                ExcMessage("the Cholesky factorisation of a subproblem matrix "
-                           "failed (CHOLMOD status " +
-                           std::to_string(status) +
-                           "; not positive definite?)"));
+    if (status == CHOLMOD_OUT_OF_MEMORY)
+      throw std::bad_alloc();
+    return status == CHOLMOD_OK;
   }
 
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
 
+#include <bilayer/tasks.h>
 #include <bilayer/contact_solver.h>
 
 #include <cmath>
@@ -25,10 +26,10 @@ namespace bilayer
     {
       Solutions loads;
       interface.apply(multipliers, loads);
-      Threads::TaskGroup<void> tasks;
+      Tasks tasks;
       for (unsigned int s = 0; s < 4; ++s)
         if (subproblems[s] != nullptr && subproblems[s]->owned())
-          tasks += Threads::new_task([&, s]() {
+          tasks.add([&, s]() {
             if (homogeneous)
               subproblems[s]->solve_homogeneous(loads[s], solutions[s]);
             else
@@ -187,6 +188,8 @@ namespace bilayer
           extra_solves += estimate.subdomain_solves;
           lambda_max = estimate.lambda_max;
         }
+      if (!std::isfinite(auto_step(lambda_max)) || !(lambda_max > 0))
+        return std::string();
       std::ostringstream text;
       text << std::setprecision(4)
            << "; estimated safe step: theta <= " << auto_step(lambda_max)
@@ -358,9 +361,14 @@ namespace bilayer
         if (!std::isfinite(last_increment) || (k >= 1 && !std::isfinite(value)))
           {
             result.diverged = true;
-            result.message  = "diverged: the iterates are no longer finite "
-                              "(reduce Solver/Uzawa step theta" +
-                             safe_step() + ")";
+            result.message =
+              k == 0 ?
+                "the first subdomain solutions or jumps are not finite: the "
+                "loads and moduli (Loads, Materials) give displacements "
+                "beyond the range of double; state them in other units" :
+                "diverged: the iterates are no longer finite at iteration " +
+                  std::to_string(k) + " (reduce Solver/Uzawa step theta" +
+                  safe_step() + ")";
             return finish();
           }
         if (last_increment > parameters.divergence_factor * min_increment &&

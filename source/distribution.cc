@@ -157,4 +157,16 @@ namespace bilayer
     flag    = data.first;
     message = data.second;
   }
+
+
+  std::string
+  Distribution::first_error(const std::string &message) const
+  {
+    if (!parallel())
+      return message;
+    for (const auto &m : Utilities::MPI::all_gather(communicator_, message))
+      if (!m.empty())
+        return m;
+    return "";
+  }
 } // namespace bilayer

@@ -3,7 +3,9 @@
 
 #include <bilayer/geometry.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -126,12 +128,28 @@ namespace bilayer
                   {
                     std::ostringstream msg;
                     if (mesh.mesh_files.empty())
-                      msg
-                        << "Mesh/Cells along Sigma = " << mesh.cells_along_sigma
-                        << " does not make the crack end point x = " << c
-                        << " a mesh vertex: choose a number of cells for which "
-                        << "the spacing " << geometry.x_max - geometry.x_min
-                        << "/n divides " << c - geometry.x_min;
+                      {
+                        const bool plus = s == Subdomain::plus &&
+                                          mesh.cells_along_sigma_plus > 0;
+                        msg << "Mesh/Cells along Sigma"
+                            << (plus ? " on the plus side = " +
+                                         std::to_string(
+                                           mesh.cells_along_sigma_plus) :
+                                       " = " + std::to_string(
+                                                 mesh.cells_along_sigma))
+                            << " does not make the crack end point x = " << c
+                            << " a mesh vertex";
+                        const auto valid = valid_cells_along_sigma(5);
+                        if (valid.empty())
+                          msg << "; no number of cells up to 100000 does: "
+                                 "move the crack end points";
+                        else
+                          {
+                            msg << "; numbers of cells that do:";
+                            for (const unsigned int n : valid)
+                              msg << " " << n;
+                          }
+                      }
                     else
                       msg << "Mesh/Mesh files: the crack end point x = " << c
                           << " is not a vertex of the mesh of Omega"
@@ -139,6 +157,26 @@ namespace bilayer
                     AssertThrow(false, ExcMessage(msg.str()));
                   }
               }
+  }
+
+
+  std::vector<unsigned int>
+  Geometry::valid_cells_along_sigma(const unsigned int how_many) const
+  {
+    std::vector<unsigned int> valid;
+    const double              width = geometry.x_max - geometry.x_min;
+    for (unsigned int n = 1; n <= 100000 && valid.size() < how_many; ++n)
+      {
+        bool ok = true;
+        for (const double c : {geometry.crack_start, geometry.crack_end})
+          {
+            const double k = (c - geometry.x_min) / width * n;
+            ok = ok && std::abs(k - std::round(k)) < 1e-8 * std::max(1., k);
+          }
+        if (ok)
+          valid.push_back(n);
+      }
+    return valid;
   }
 
 
@@ -153,8 +191,17 @@ namespace bilayer
                 ExcMessage("Mesh/Mesh files: '" + pattern +
                            "' must contain {side} (minus or plus)"));
     file.replace(at, 6, subdomain == Subdomain::minus ? "minus" : "plus");
+    std::error_code error;
+    const auto      status = std::filesystem::status(file, error);
+    AssertThrow(std::filesystem::is_regular_file(status),
+                ExcMessage("Mesh/Mesh files: cannot open '" + file + "': " +
+                           (std::filesystem::exists(status) ?
+                              "not a regular file" :
+                              "no such file")));
     std::ifstream in(file);
-    AssertThrow(in, ExcMessage("Mesh/Mesh files: cannot open '" + file + "'"));
+    AssertThrow(in,
+                ExcMessage("Mesh/Mesh files: cannot open '" + file +
+                           "': " + std::strerror(errno)));
     GridIn<2> grid_in;
     grid_in.attach_triangulation(tria);
     try
@@ -167,6 +214,16 @@ namespace bilayer
                     ExcMessage("Mesh/Mesh files: cannot read '" + file +
                                "' as a Gmsh mesh: " + one_line_message(e)));
       }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage("Mesh/Mesh files: cannot read '" + file +
+                               "' as a Gmsh mesh: " + e.what()));
+      }
+    AssertThrow(!in.bad(),
+                ExcMessage("Mesh/Mesh files: reading '" + file +
+                           "' failed: " + std::strerror(errno)));
+    check_cells(tria, subdomain, file);
 
     // The mesh must fill its subdomain.
     const double y0 =
@@ -196,6 +253,68 @@ namespace bilayer
                 ExcMessage("Mesh/Mesh files: '" + file + "' does not fill " +
                            region.str() + " (Geometry)"));
     assign_boundary_ids(tria);
+  }
+
+
+  void
+  Geometry::check_cells(const Triangulation<2> &tria,
+                        const Subdomain         subdomain,
+                        const std::string      &file) const
+  {
+    const double y0 =
+      subdomain == Subdomain::minus ? geometry.y_min : geometry.sigma_height;
+    const double y1 =
+      subdomain == Subdomain::minus ? geometry.sigma_height : geometry.y_max;
+    const double size = std::max(geometry.x_max - geometry.x_min, y1 - y0);
+    const auto   at   = [](const Point<2> &p) {
+      std::ostringstream s;
+      s << "(" << p[0] << ", " << p[1] << ")";
+      return s.str();
+    };
+    AssertThrow(tria.n_active_cells() > 0,
+                ExcMessage("Mesh/Mesh files: '" + file + "' has no cells"));
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        // Signed area (shoelace) over the vertices in the order of the
+        // cell's boundary: inverted or degenerate cells are broken meshes.
+        const unsigned int n = cell->n_vertices();
+        const std::vector<unsigned int> order =
+          n == 3 ? std::vector<unsigned int>{0, 1, 2} :
+                   std::vector<unsigned int>{0, 1, 3, 2};
+        double area = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const Point<2> &a = cell->vertex(order[i]);
+            const Point<2> &b = cell->vertex(order[(i + 1) % n]);
+            AssertThrow(std::isfinite(a[0]) && std::isfinite(a[1]),
+                        ExcMessage("Mesh/Mesh files: '" + file +
+                                   "' has a vertex that is not finite"));
+            area += a[0] * b[1] - a[1] * b[0];
+          }
+        AssertThrow(area / 2 > 1e-12 * size * size,
+                    ExcMessage("Mesh/Mesh files: '" + file +
+                               "' has an inverted or degenerate cell at " +
+                               at(cell->center())));
+        // Boundary faces may lie only on the subdomain's four sides: any
+        // other is a slit or a hole.
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const double tol = 1e-8 * size;
+              const auto   on  = [&](const unsigned int d, const double v) {
+                return std::abs(face->vertex(0)[d] - v) < tol &&
+                       std::abs(face->vertex(1)[d] - v) < tol;
+              };
+              AssertThrow(on(0, geometry.x_min) || on(0, geometry.x_max) ||
+                            on(1, y0) || on(1, y1),
+                          ExcMessage("Mesh/Mesh files: '" + file +
+                                     "' has a boundary face inside its "
+                                     "subdomain at " +
+                                     at(face->center()) +
+                                     " (a slit, a hole or cells that do not "
+                                     "share their faces)"));
+            }
+      }
   }
 
 

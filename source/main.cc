@@ -5,18 +5,27 @@
 
 #include <bilayer/distribution.h>
 #include <bilayer/output.h>
+#include <bilayer/output_directory.h>
 #include <bilayer/parameters.h>
+#include <bilayer/resources.h>
 #include <bilayer/study.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <string>
 #include <vector>
 
 namespace
 {
+  const char *usage_line =
+    "usage: bilayer PARAMETER_FILE.prm [--set Section/Entry=value ...]; "
+    "bilayer --help";
+
   void
   print_usage(std::ostream &out)
   {
@@ -33,6 +42,95 @@ namespace
            "directory Output/Output directory.\n";
   }
 
+  /// What the command line asks for.
+  struct CommandLine
+  {
+    enum class Action
+    {
+      run,
+      help,
+      print_parameters
+    } action = Action::run;
+    std::string              parameter_file;
+    std::vector<std::string> overrides;
+  };
+
+  /// An environment variable of the MPI launcher as a number, or -1.
+  int
+  launcher_number(const std::vector<const char *> &names)
+  {
+    for (const char *name : names)
+      if (const char *value = std::getenv(name))
+        return std::atoi(value);
+    return -1;
+  }
+
+  /// This process's rank as the MPI launcher set it (0 without one).
+  int
+  launch_rank()
+  {
+    return std::max(0,
+                    launcher_number({"OMPI_COMM_WORLD_RANK",
+                                     "PMIX_RANK",
+                                     "PMI_RANK",
+                                     "MV2_COMM_WORLD_RANK"}));
+  }
+
+  /// The processes the MPI launcher started (1 without one).
+  unsigned int
+  launch_size()
+  {
+    return std::max(1,
+                    launcher_number({"OMPI_COMM_WORLD_SIZE",
+                                     "PMI_SIZE",
+                                     "MV2_COMM_WORLD_SIZE"}));
+  }
+
+  /// Read the command line; mistakes throw a one-line message.
+  CommandLine
+  parse_command_line(const int argc, char **argv)
+  {
+    using dealii::ExcMessage;
+    CommandLine command;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h")
+          command.action = CommandLine::Action::help;
+        else if (arg == "--print-parameters")
+          command.action = CommandLine::Action::print_parameters;
+        else if (arg == "--set")
+          {
+            AssertThrow(i + 1 < argc,
+                        ExcMessage("--set needs a value "
+                                   "'Section/Entry=value' after it (" +
+                                   std::string(usage_line) + ")"));
+            command.overrides.emplace_back(argv[++i]);
+          }
+        else if (arg.rfind("--set=", 0) == 0)
+          command.overrides.emplace_back(arg.substr(6));
+        else if (arg.size() > 1 && arg[0] == '-')
+          {
+            AssertThrow(false,
+                        ExcMessage("unknown option '" + arg + "' (" +
+                                   usage_line + ")"));
+          }
+        else
+          {
+            AssertThrow(command.parameter_file.empty(),
+                        ExcMessage("more than one parameter file given ('" +
+                                   command.parameter_file + "', '" + arg +
+                                   "'): run them one at a time (" +
+                                   usage_line + ")"));
+            command.parameter_file = arg;
+          }
+      }
+    AssertThrow(command.action != CommandLine::Action::run ||
+                  !command.parameter_file.empty(),
+                ExcMessage(std::string("no parameter file given (") +
+                           usage_line + ")"));
+    return command;
+  }
 } // namespace
 
 int
@@ -41,14 +139,12 @@ main(int argc, char **argv)
   using namespace dealii;
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
-  // Under mpirun the processes share the subproblems (bilayer::
-  // Distribution); without it this is a job of one process. Threads: the
-  // cores of the node divided among its processes.
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
-  const bilayer::Distribution     &processes = bilayer::Distribution::world();
-  // Refusals of the input happen on every process alike: one reports.
-  const auto refuse = [&](const std::string &message) {
-    if (processes.is_root())
+  // The input is read and checked before MPI_Init, which costs about a
+  // second for a job of one process: refusals come at once. Under mpirun
+  // every process reads it alike and the first one reports.
+  const bool reporter = launch_rank() == 0;
+  const auto refuse   = [&](const std::string &message) {
+    if (reporter)
       std::cerr << "bilayer: error: " << message << std::endl;
     return 1;
   };
@@ -57,64 +153,85 @@ main(int argc, char **argv)
   ParameterHandler prm;
   try
     {
-      const bool help = argc >= 2 && (std::string(argv[1]) == "--help" ||
-                                      std::string(argv[1]) == "-h");
-      if (argc < 2 || help || argc % 2 != 0)
+      const CommandLine command = parse_command_line(argc, argv);
+      if (command.action == CommandLine::Action::help)
         {
-          if (processes.is_root())
-            print_usage(help ? std::cout : std::cerr);
-          return help ? 0 : 1;
+          if (reporter)
+            print_usage(std::cout);
+          return 0;
         }
-      std::vector<std::string> overrides;
-      for (int i = 2; i + 1 < argc; i += 2)
-        {
-          if (std::string(argv[i]) != "--set")
-            {
-              if (processes.is_root())
-                print_usage(std::cerr);
-              return 1;
-            }
-          overrides.emplace_back(argv[i + 1]);
-        }
-      if (std::string(argv[1]) == "--print-parameters")
+      if (command.action == CommandLine::Action::print_parameters)
         {
           bilayer::Scene::declare_parameters(prm);
-          if (processes.is_root())
+          if (reporter)
             prm.print_parameters(std::cout, ParameterHandler::PRM);
           return 0;
         }
-      scene = bilayer::read_scene(prm, argv[1], overrides);
+      scene =
+        bilayer::read_scene(prm, command.parameter_file, command.overrides);
+      bilayer::check_scene_resources(scene, launch_size());
     }
   catch (const ExceptionBase &e)
     {
       return refuse(bilayer::one_line_message(e));
     }
+  catch (const std::bad_alloc &)
+    {
+      return refuse("out of memory while reading the parameters");
+    }
   catch (const std::exception &e)
     {
       return refuse(e.what());
     }
+  catch (...)
+    {
+      return refuse("the parameters could not be read (unknown error)");
+    }
 
+  // Under mpirun the processes share the subproblems (bilayer::
+  // Distribution); without it this is a job of one process. Threads: the
+  // cores of the node divided among its processes.
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+  const bilayer::Distribution     &processes = bilayer::Distribution::world();
+
+  std::unique_ptr<bilayer::StagedDirectory> output;
   try
     {
       // Results appear in the output directory only when the run is over:
       // a refused or failed run leaves an existing one as it was. The first
       // process prepares it and tells the others whether it could.
-      std::unique_ptr<bilayer::StagedDirectory> output;
-      bool                                      ready = true;
-      std::string                               problem;
+      bool        ready = true;
+      std::string problem;
       if (processes.is_root())
         try
           {
+            std::vector<std::string> inputs = scene.input_files;
+            for (const auto &pattern : scene.mesh.mesh_files)
+              for (const std::string side : {"minus", "plus"})
+                {
+                  std::string file = pattern;
+                  const auto  at   = file.find("{side}");
+                  if (at != std::string::npos)
+                    file.replace(at, 6, side);
+                  inputs.push_back(file);
+                }
             output = std::make_unique<bilayer::StagedDirectory>(
-              scene.output.directory);
+              scene.output.directory, inputs);
             prm.print_parameters(output->staging() + "/used_parameters.prm",
                                  ParameterHandler::ShortPRM);
             problem = output->staging();
           }
         catch (const ExceptionBase &e)
           {
+            output.reset();
             ready   = false;
             problem = bilayer::one_line_message(e);
+          }
+        catch (const std::exception &e)
+          {
+            output.reset();
+            ready   = false;
+            problem = std::string("Output/Output directory: ") + e.what();
           }
       // On success the message is the staging directory.
       processes.broadcast(ready, problem);
@@ -123,30 +240,68 @@ main(int argc, char **argv)
       scene.output.directory = problem;
 
       bilayer::Study study(scene, std::cout, processes);
-      const bool     passed = study.run();
+      bool           passed = false;
+      std::string    failure;
+      unsigned int   failed_cycle = 0;
+      try
+        {
+          passed = study.run();
+          if (!passed)
+            {
+              failed_cycle = study.records().back().cycle;
+              failure      = study.records().back().failure();
+            }
+        }
+      catch (const bilayer::RunFailure &e)
+        {
+          failed_cycle = e.cycle;
+          failure      = e.what();
+        }
+      catch (const std::bad_alloc &)
+        {
+          failed_cycle = study.records().size();
+          failure =
+            "out of memory (an allocation failed): use fewer cells or cycles";
+        }
       if (!processes.is_root())
         return passed ? 0 : 2;
       const std::string where = output->commit(passed);
       if (!passed)
         {
-          const auto &last = study.records().back();
-          std::cerr << "bilayer: cycle " << last.cycle
-                    << " did not pass its checks: " << last.failure()
-                    << " (its results are in " << where << ")" << std::endl;
+          std::cerr << "bilayer: cycle " << failed_cycle
+                    << " FAILED: " << failure << " (its results are in "
+                    << where << ")" << std::endl;
           return 2;
         }
       return 0;
+    }
+  catch (const bilayer::CollectiveError &e)
+    {
+      // Every process knows: the first reports, none aborts, and the
+      // staging directory goes with `output`.
+      return refuse(e.what());
     }
   catch (const ExceptionBase &e)
     {
       std::cerr << "bilayer: error: " << bilayer::one_line_message(e)
                 << std::endl;
     }
+  catch (const std::bad_alloc &)
+    {
+      std::cerr << "bilayer: error: out of memory (an allocation failed)"
+                << std::endl;
+    }
   catch (const std::exception &e)
     {
       std::cerr << "bilayer: error: " << e.what() << std::endl;
     }
-  // An error on one process would leave the others waiting.
+  catch (...)
+    {
+      std::cerr << "bilayer: error: unknown error" << std::endl;
+    }
+  // An error on one process would leave the others waiting; the staging
+  // directory goes first.
+  output.reset();
   if (processes.parallel())
     MPI_Abort(processes.communicator(), 1);
   return 1;

@@ -10,7 +10,9 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -71,75 +73,35 @@ namespace bilayer
                    const std::function<void(std::ostream &)> &writer)
   {
     const std::string temporary = path + ".part";
+    const auto        failed    = [&](const std::string &what) {
+      const std::string why = errno != 0 ? std::strerror(errno) : "unknown";
+      std::error_code   error;
+      std::filesystem::remove(temporary, error);
+      return ExcMessage(what + " '" + path + "': " + why);
+    };
     {
+      errno = 0;
       std::ofstream out(temporary);
-      AssertThrow(out, ExcMessage("cannot write '" + temporary + "'"));
-      writer(out);
+      AssertThrow(out, failed("cannot create"));
+      try
+        {
+          writer(out);
+        }
+      catch (const ExceptionBase &)
+        {
+          // deal.II's writers check the stream themselves (ExcIO).
+          out.setstate(std::ios::badbit);
+        }
       out.flush();
-      AssertThrow(out, ExcMessage("writing '" + temporary + "' failed"));
+      AssertThrow(out, failed("cannot write"));
+      out.close();
+      AssertThrow(out, failed("cannot write"));
     }
-    std::filesystem::rename(temporary, path);
-  }
-
-
-  StagedDirectory::StagedDirectory(const std::string &directory)
-  {
-    namespace fs  = std::filesystem;
-    fs::path path = fs::path(directory).lexically_normal();
-    if (!path.empty() && path.filename().empty())
-      path = path.parent_path(); // a trailing separator
-    const std::string name = path.filename().string();
-    AssertThrow(!name.empty() && name != "." && name != "..",
-                ExcMessage("Output/Output directory must name a directory "
-                           "that a run may create or replace (not '.', '..' "
-                           "or a root), got '" +
-                           directory + "'"));
-    final_path   = path.string();
-    staging_path = final_path + ".partial";
     std::error_code error;
-    AssertThrow(!fs::exists(final_path, error) ||
-                  fs::is_directory(final_path, error),
-                ExcMessage("Output/Output directory '" + directory +
-                           "' exists and is not a directory"));
-    fs::remove_all(staging_path, error);
-    fs::create_directories(staging_path, error);
+    std::filesystem::rename(temporary, path, error);
     AssertThrow(!error,
-                ExcMessage("Output/Output directory: cannot create '" +
-                           staging_path + "': " + error.message()));
-    // Directory permissions do not stop root: try a file too.
-    const std::string probe = staging_path + "/.probe";
-    std::ofstream(probe) << "";
-    AssertThrow(fs::exists(probe, error),
-                ExcMessage("Output/Output directory: cannot write into '" +
-                           staging_path + "'"));
-    fs::remove(probe, error);
-  }
-
-
-  StagedDirectory::~StagedDirectory()
-  {
-    if (!committed)
-      {
-        std::error_code error;
-        std::filesystem::remove_all(staging_path, error);
-      }
-  }
-
-
-  std::string
-  StagedDirectory::commit(const bool success)
-  {
-    namespace fs             = std::filesystem;
-    committed                = true;
-    const std::string target = success ? final_path : final_path + ".failed";
-    const std::string old    = target + ".old";
-    std::error_code   error;
-    fs::remove_all(old, error);
-    if (fs::exists(target))
-      fs::rename(target, old);
-    fs::rename(staging_path, target);
-    fs::remove_all(old, error);
-    return target;
+                ExcMessage("cannot rename '" + temporary + "' to '" + path +
+                           "': " + error.message()));
   }
 
 
@@ -274,8 +236,13 @@ namespace bilayer
                 data_out.create_xdmf_entry(filter, h5, cycle, group);
               if (processes.process() != processes.root(s))
                 continue;
+              std::error_code error;
               std::filesystem::rename(directory + "/" + h5 + ".part",
-                                      directory + "/" + h5);
+                                      directory + "/" + h5,
+                                      error);
+              AssertThrow(!error,
+                          ExcMessage("cannot write '" + directory + "/" + h5 +
+                                     "': " + error.message()));
               grids.emplace_back(s,
                                  entry.get_xdmf_content(
                                    4,

@@ -4,10 +4,16 @@
 
 #include <bilayer/parameters.h>
 
+#include <cctype>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
-#include <regex>
+#include <set>
 #include <sstream>
 
 namespace bilayer
@@ -17,13 +23,52 @@ namespace bilayer
     const std::array<Side, 4> all_sides = {
       {Side::left, Side::right, Side::bottom, Side::top}};
 
-    /// Parse "a, b" into two doubles (the pattern has checked the format).
-    std::array<double, 2>
-    parse_pair(const std::string &text)
+    /**
+     * The number @p text of the entry @p entry (its pattern has checked the
+     * format). Values beyond the range of double and denormal numbers, which
+     * the patterns let through, are refused naming the entry.
+     */
+    double
+    to_double(const std::string &text, const std::string &entry)
     {
-      const auto parts = Utilities::split_string_list(text, ',');
-      return {{Utilities::string_to_double(parts[0]),
-               Utilities::string_to_double(parts[1])}};
+      const std::string trimmed = Utilities::trim(text);
+      errno                     = 0;
+      char        *end          = nullptr;
+      const double value        = std::strtod(trimmed.c_str(), &end);
+      AssertThrow(!trimmed.empty() && end == trimmed.c_str() + trimmed.size(),
+                  ExcMessage(entry + ": cannot read '" + text +
+                             "' as a number"));
+      AssertThrow(errno != ERANGE && std::isfinite(value) &&
+                    (value == 0 || std::isnormal(value)),
+                  ExcMessage(entry + ": '" + text +
+                             "' is outside the range of normal double "
+                             "numbers (0 or 2.3e-308 <= |value| <= 1.7e308)"));
+      return value;
+    }
+
+    /// The number of the entry @p name of the subsection @p section (the
+    /// current one of @p prm).
+    double
+    get_double(const ParameterHandler &prm,
+               const std::string      &section,
+               const std::string      &name)
+    {
+      return to_double(prm.get(name), section + "/" + name);
+    }
+
+    /// The entry "a, b" as two numbers.
+    std::array<double, 2>
+    parse_pair(const ParameterHandler &prm,
+               const std::string      &section,
+               const std::string      &name)
+    {
+      const auto parts = Utilities::split_string_list(prm.get(name), ',');
+      AssertThrow(parts.size() == 2,
+                  ExcMessage(section + "/" + name +
+                             " must be two numbers 'a, b', got '" +
+                             prm.get(name) + "'"));
+      return {{to_double(parts[0], section + "/" + name),
+               to_double(parts[1], section + "/" + name)}};
     }
 
     /// A number as a user would write it.
@@ -47,6 +92,36 @@ namespace bilayer
       return "Traction on " + side_name(side) + " side";
     }
 
+    /// The longest expression text read (Loads section) [characters].
+    constexpr std::size_t max_expression_length = 10000;
+
+    bool
+    is_identifier(const std::string &name)
+    {
+      if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])))
+        return false;
+      for (const char ch : name)
+        if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'))
+          return false;
+      return true;
+    }
+
+    /// Variables and functions of the expressions (muparser and deal.II's
+    /// additions), which a constant may not shadow.
+    bool
+    is_reserved_name(const std::string &name)
+    {
+      static const std::set<std::string> reserved = {
+        "x",     "y",     "z",    "t",     "sin",   "cos",       "tan",
+        "asin",  "acos",  "atan", "sinh",  "cosh",  "tanh",      "asinh",
+        "acosh", "atanh", "log2", "log10", "log",   "ln",        "exp",
+        "sqrt",  "sign",  "rint", "abs",   "min",   "max",       "sum",
+        "avg",   "if",    "int",  "ceil",  "cot",   "csc",       "sec",
+        "pow",   "erfc",  "rand", "floor", "atan2", "rand_seed", "fmod",
+        "_pi",   "_e"};
+      return reserved.count(name) > 0;
+    }
+
     /// Build a two-component parser from "f_x; f_y" and evaluate it once so
     /// that syntax errors surface while the entry's name is known.
     std::unique_ptr<FunctionParser<2>>
@@ -54,6 +129,10 @@ namespace bilayer
                          const std::map<std::string, double> &constants,
                          const std::string                   &entry)
     {
+      AssertThrow(expression.size() <= max_expression_length,
+                  ExcMessage(entry + ": longer than " +
+                             std::to_string(max_expression_length) +
+                             " characters"));
       const auto parts = Utilities::split_string_list(expression, ';');
       AssertThrow(parts.size() == 2,
                   ExcMessage(entry +
@@ -73,7 +152,7 @@ namespace bilayer
           function->vector_value(Point<2>(0.123, 0.456), value);
           restore();
         }
-      catch (const ExceptionBase &)
+      catch (...)
         {
           restore();
           AssertThrow(false,
@@ -136,16 +215,16 @@ namespace bilayer
   GeometryParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    const auto lower               = parse_pair(prm.get("Lower left corner"));
-    const auto upper               = parse_pair(prm.get("Upper right corner"));
+    const auto lower               = parse_pair(prm, "Geometry", "Lower left corner");
+    const auto upper               = parse_pair(prm, "Geometry", "Upper right corner");
     x_min                          = lower[0];
     y_min                          = lower[1];
     x_max                          = upper[0];
     y_max                          = upper[1];
-    sigma_height                   = prm.get_double("Height of Sigma");
+    sigma_height                   = get_double(prm, "Geometry", "Height of Sigma");
     const std::string crack_text   = prm.get("Crack interval on Sigma");
     const std::string clamped_text = prm.get("Clamped sides");
-    const auto        crack        = parse_pair(crack_text);
+    const auto        crack        = parse_pair(prm, "Geometry", "Crack interval on Sigma");
     crack_start                    = crack[0];
     crack_end                      = crack[1];
     clamped.fill(false);
@@ -159,6 +238,16 @@ namespace bilayer
     AssertThrow(x_min < x_max && y_min < y_max,
                 ExcMessage("Geometry/Upper right corner must lie above and to "
                            "the right of Geometry/Lower left corner"));
+    // Areas, Jacobians and stiffnesses are products of lengths: keep them
+    // well inside the range of double.
+    for (const double v : {x_min, x_max, y_min, y_max, sigma_height})
+      AssertThrow(std::abs(v) <= 1e100,
+                  ExcMessage("Geometry: the corners and the height of Sigma "
+                             "must lie within +-1e100 [length], got " +
+                             number(v) + "; state them in other units"));
+    AssertThrow(x_max - x_min >= 1e-100 && y_max - y_min >= 1e-100,
+                ExcMessage("Geometry: Omega must be at least 1e-100 wide and "
+                           "high [length]; state the corners in other units"));
     AssertThrow(y_min < sigma_height && sigma_height < y_max,
                 ExcMessage("Geometry/Height of Sigma must lie in (" +
                            number(y_min) + ", " + number(y_max) + "), got " +
@@ -291,12 +380,12 @@ namespace bilayer
                                                        Refinement::global;
     marking =
       prm.get("Marking") == "bulk" ? Marking::bulk : Marking::fixed_fraction;
-    refinement_fraction = prm.get_double("Refinement fraction");
+    refinement_fraction = get_double(prm, "Mesh", "Refinement fraction");
     AssertThrow(refinement_fraction > 0 && refinement_fraction <= 1,
                 ExcMessage("Mesh/Refinement fraction must lie in (0, 1], got " +
                            prm.get("Refinement fraction")));
     interface_terms = prm.get_bool("Interface terms in the estimator");
-    contact_weight  = prm.get_double("Weight of the contact term");
+    contact_weight  = get_double(prm, "Mesh", "Weight of the contact term");
     AssertThrow(refinement == Refinement::global ||
                   shape == ElementShape::quadrilateral,
                 ExcMessage("Mesh/Refinement = adaptive needs Mesh/Element "
@@ -348,8 +437,8 @@ namespace bilayer
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
-        layer[l].youngs_modulus = prm.get_double("Young's modulus");
-        layer[l].poisson_ratio  = prm.get_double("Poisson's ratio");
+        layer[l].youngs_modulus = get_double(prm, "Materials/" + layer_subsection(l), "Young's modulus");
+        layer[l].poisson_ratio  = get_double(prm, "Materials/" + layer_subsection(l), "Poisson's ratio");
         const std::string where = "Materials/" + layer_subsection(l) + "/";
         AssertThrow(layer[l].youngs_modulus > 0,
                     ExcMessage(where + "Young's modulus must be > 0, got " +
@@ -412,6 +501,7 @@ namespace bilayer
                                    const MaterialParameters &materials)
   {
     constant_values.clear();
+    std::set<std::string> materials_constants;
     for (unsigned int l = 0; l < 2; ++l)
       {
         const std::string n           = std::to_string(l + 1);
@@ -420,35 +510,61 @@ namespace bilayer
         constant_values["nu" + n]     = m.poisson_ratio;
         constant_values["mu" + n]     = m.mu();
         constant_values["lambda" + n] = m.lambda();
+        for (const std::string name : {"E", "nu", "mu", "lambda"})
+          materials_constants.insert(name + n);
       }
 
     prm.enter_subsection("Loads");
     constants = prm.get("Constants");
-    const std::regex definition(R"(\s*([A-Za-z_][A-Za-z_0-9]*)\s*=\s*(.+))");
+    AssertThrow(constants.size() <= max_expression_length,
+                ExcMessage("Loads/Constants: longer than " +
+                           std::to_string(max_expression_length) +
+                           " characters"));
     for (const auto &item : Utilities::split_string_list(constants, ';'))
       {
-        std::smatch match;
-        AssertThrow(std::regex_match(item, match, definition),
+        if (Utilities::trim(item).empty())
+          continue;
+        const auto        equal = item.find('=');
+        const std::string name =
+          Utilities::trim(item.substr(0, std::min(equal, item.size())));
+        const std::string value = equal == std::string::npos ?
+                                    "" :
+                                    Utilities::trim(item.substr(equal + 1));
+        AssertThrow(equal != std::string::npos && is_identifier(name) &&
+                      !value.empty(),
                     ExcMessage("Loads/Constants must read 'name = expression; "
-                               "...', cannot read '" +
+                               "...' with names of letters, digits and '_', "
+                               "cannot read '" +
                                item + "'"));
+        AssertThrow(!is_reserved_name(name) &&
+                      materials_constants.count(name) == 0,
+                    ExcMessage("Loads/Constants: the name '" + name +
+                               "' is reserved (the coordinates x, y, the "
+                               "material constants E1, nu1, mu1, lambda1, E2, "
+                               "nu2, mu2, lambda2 and the functions of the "
+                               "expressions): choose another name"));
         FunctionParser<1>  parser(1);
         std::ostringstream muparser_noise;
         std::streambuf *cerr_buffer = std::cerr.rdbuf(muparser_noise.rdbuf());
+        double          result      = 0;
+        bool            evaluated   = true;
         try
           {
-            parser.initialize("t", match[2].str(), constant_values);
-            constant_values[match[1].str()] = parser.value(Point<1>());
-            std::cerr.rdbuf(cerr_buffer);
+            parser.initialize("t", value, constant_values);
+            result = parser.value(Point<1>());
           }
-        catch (const ExceptionBase &)
+        catch (...)
           {
-            std::cerr.rdbuf(cerr_buffer);
-            AssertThrow(false,
-                        ExcMessage("Loads/Constants: cannot evaluate '" +
-                                   match[2].str() + "' for constant '" +
-                                   match[1].str() + "'"));
+            evaluated = false;
           }
+        std::cerr.rdbuf(cerr_buffer);
+        AssertThrow(evaluated,
+                    ExcMessage("Loads/Constants: cannot evaluate '" + value +
+                               "' for constant '" + name + "'"));
+        AssertThrow(std::isfinite(result),
+                    ExcMessage("Loads/Constants: constant '" + name + "' = '" +
+                               value + "' is not a finite number"));
+        constant_values[name] = result;
       }
 
     for (unsigned int l = 0; l < 2; ++l)
@@ -548,7 +664,7 @@ namespace bilayer
   {
     prm.enter_subsection("Contact");
     non_penetration  = prm.get_bool("Non-penetration on the crack");
-    multiplier_bound = prm.get_double("Multiplier bound p");
+    multiplier_bound = get_double(prm, "Contact", "Multiplier bound p");
     AssertThrow(multiplier_bound > 0,
                 ExcMessage("Contact/Multiplier bound p must be > 0, got " +
                            prm.get("Multiplier bound p")));
@@ -694,13 +810,13 @@ namespace bilayer
                     ExcMessage("Solver/Uzawa step theta must be a number > 0 "
                                "or 'auto', got '" +
                                step + "'"));
-        theta = Utilities::string_to_double(step);
+        theta = to_double(step, "Solver/Uzawa step theta");
         AssertThrow(theta > 0,
                     ExcMessage("Solver/Uzawa step theta must be > 0 or "
                                "'auto', got " +
                                step));
       }
-    auto_theta_fraction = prm.get_double("Auto theta fraction");
+    auto_theta_fraction = get_double(prm, "Solver", "Auto theta fraction");
     AssertThrow(auto_theta_fraction > 0 && auto_theta_fraction < 1,
                 ExcMessage("Solver/Auto theta fraction must lie in (0, 1), "
                            "got " +
@@ -712,12 +828,12 @@ namespace bilayer
                           rule == "paper with norm" ? StoppingRule::paper_norm :
                           rule == "relative"        ? StoppingRule::relative :
                                                       StoppingRule::kkt;
-    tolerance           = prm.get_double("Tolerance");
+    tolerance           = get_double(prm, "Solver", "Tolerance");
     AssertThrow(tolerance > 0,
                 ExcMessage("Solver/Tolerance must be > 0, got " +
                            prm.get("Tolerance")));
-    divergence_factor    = prm.get_double("Divergence growth factor");
-    acceptance_tolerance = prm.get_double("Acceptance tolerance");
+    divergence_factor    = get_double(prm, "Solver", "Divergence growth factor");
+    acceptance_tolerance = get_double(prm, "Solver", "Acceptance tolerance");
     AssertThrow(acceptance_tolerance > 0,
                 ExcMessage("Solver/Acceptance tolerance must be > 0, got " +
                            prm.get("Acceptance tolerance")));
@@ -730,7 +846,7 @@ namespace bilayer
     preconditioner      = p == "dirichlet" ? DualPreconditioner::dirichlet :
                           p == "lumped"    ? DualPreconditioner::lumped :
                                              DualPreconditioner::none;
-    inner_tolerance     = prm.get_double("Inner tolerance");
+    inner_tolerance     = get_double(prm, "Solver/Active set", "Inner tolerance");
     AssertThrow(inner_tolerance > 0 && inner_tolerance < 1,
                 ExcMessage("Solver/Active set/Inner tolerance must lie in "
                            "(0, 1), got " +
@@ -903,17 +1019,87 @@ namespace bilayer
   }
 
 
+  namespace
+  {
+    /**
+     * Refuse a parameter file that is not a regular readable file, and
+     * follow its "include" lines (ParameterHandler opens them relative to
+     * the working directory) to refuse missing, unreadable or recursive
+     * includes before ParameterHandler would recurse into them. Appends the
+     * files read to @p files.
+     */
+    void
+    check_parameter_file(const std::string        &filename,
+                         std::vector<std::string> &chain,
+                         std::vector<std::string> &files)
+    {
+      namespace fs = std::filesystem;
+      const std::string where =
+        chain.empty() ? "parameter file '" + filename + "'" :
+                        "file '" + filename + "' included from '" +
+                          chain.back() + "'";
+      std::error_code error;
+      const auto      status = fs::status(filename, error);
+      AssertThrow(fs::exists(status),
+                  ExcMessage("cannot open " + where + ": no such file"));
+      AssertThrow(!fs::is_directory(status),
+                  ExcMessage("cannot read " + where + ": it is a directory"));
+      AssertThrow(fs::is_regular_file(status),
+                  ExcMessage("cannot read " + where +
+                             ": it is not a regular file (a device, pipe or "
+                             "socket)"));
+      constexpr std::uintmax_t limit = 1 << 24;
+      AssertThrow(fs::file_size(filename, error) <= limit,
+                  ExcMessage("cannot read " + where +
+                             ": larger than 16 MiB, not a parameter file"));
+      const std::string canonical = fs::canonical(filename, error).string();
+      for (const auto &open : chain)
+        AssertThrow(fs::canonical(open, error).string() != canonical,
+                    ExcMessage("the " + where +
+                               " includes itself (directly or through other "
+                               "files)"));
+      AssertThrow(chain.size() < 16,
+                  ExcMessage("the " + where +
+                             " is included more than 16 levels deep"));
+      std::ifstream in(filename);
+      AssertThrow(in,
+                  ExcMessage("cannot read " + where + ": " +
+                             std::strerror(errno)));
+      files.push_back(filename);
+      chain.push_back(filename);
+      std::string  line;
+      unsigned int n = 0;
+      while (std::getline(in, line))
+        {
+          ++n;
+          const auto comment = line.find('#');
+          if (comment != std::string::npos)
+            line.erase(comment);
+          line = Utilities::trim(line);
+          if (line.rfind("include ", 0) == 0 || line.rfind("INCLUDE ", 0) == 0)
+            check_parameter_file(Utilities::trim(line.substr(8)), chain, files);
+        }
+      AssertThrow(!in.bad(),
+                  ExcMessage("reading " + where + " failed at line " +
+                             std::to_string(n + 1) + ": " +
+                             std::strerror(errno)));
+      chain.pop_back();
+    }
+  } // namespace
+
+
   Scene
   read_scene(ParameterHandler               &prm,
              const std::string              &filename,
              const std::vector<std::string> &overrides)
   {
     Scene::declare_parameters(prm);
-    AssertThrow(std::filesystem::exists(filename),
-                ExcMessage("cannot open parameter file '" + filename + "'"));
+    std::vector<std::string> chain, files;
+    check_parameter_file(filename, chain, files);
     prm.parse_input(filename, "", false, true);
 
-    // "Section/Subsection/Entry=value" from the command line.
+    // "Section/Subsection/Entry=value" from the command line; blanks around
+    // the names and the value do not count.
     for (const auto &assignment : overrides)
       {
         const auto equal = assignment.find('=');
@@ -925,11 +1111,13 @@ namespace bilayer
         AssertThrow(path.size() >= 2,
                     ExcMessage("--set expects 'Section/Entry=value', got '" +
                                assignment + "'"));
-        for (unsigned int i = 0; i + 1 < path.size(); ++i)
-          prm.enter_subsection(path[i]);
+        unsigned int entered = 0;
         try
           {
-            prm.set(path.back(), assignment.substr(equal + 1));
+            for (; entered + 1 < path.size(); ++entered)
+              prm.enter_subsection(path[entered]);
+            prm.set(path.back(),
+                    Utilities::trim(assignment.substr(equal + 1)));
           }
         catch (const ExceptionBase &e)
           {
@@ -937,7 +1125,7 @@ namespace bilayer
                         ExcMessage("--set " + assignment + ": " +
                                    one_line_message(e)));
           }
-        for (unsigned int i = 0; i + 1 < path.size(); ++i)
+        for (; entered > 0; --entered)
           prm.leave_subsection();
       }
 
@@ -948,6 +1136,7 @@ namespace bilayer
     for (auto &file : scene.mesh.mesh_files)
       if (std::filesystem::path(file).is_relative())
         file = (base / file).string();
+    scene.input_files = files;
     return scene;
   }
 

@@ -2,9 +2,11 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <bilayer/tasks.h>
 #include <bilayer/active_set_solver.h>
 #include <bilayer/estimator.h>
 #include <bilayer/output.h>
+#include <bilayer/resources.h>
 #include <bilayer/study.h>
 
 #include <cmath>
@@ -151,6 +153,23 @@ namespace bilayer
     record.plus  = domain.statistics(Subdomain::plus);
     record.P     = domain.n_sigma_vertices();
     record.M     = domain.n_outer_vertices();
+    {
+      // Adaptive cycles and mesh files: the sizes are known only now.
+      const ResourceEstimate need =
+        estimate_resources(scene, record.minus.cells, record.plus.cells);
+      const double available = distribution.max(-available_memory());
+      if (need.memory > -available)
+        throw RunFailure(cycle,
+                         "the meshes of this cycle (" +
+                           std::to_string(record.minus.cells +
+                                          record.plus.cells) +
+                           " cells) would need about " +
+                           format_bytes(need.memory) + " of memory, but " +
+                           format_bytes(-available) +
+                           " are available: use fewer cycles "
+                           "(Mesh/Number of cycles) or a smaller "
+                           "Mesh/Refinement fraction");
+    }
 
     // The loads of each layer, then the four set-ups (assembly and
     // factorisation) as parallel tasks.
@@ -159,7 +178,7 @@ namespace bilayer
     std::array<std::array<std::unique_ptr<FunctionParser<2>>, 4>, 2>
                                                       traction_owners;
     std::array<std::array<const Function<2> *, 4>, 2> traction;
-    Threads::TaskGroup<void>                          setups;
+    Tasks                          setups;
     for (const Layer layer : {Layer::first, Layer::second})
       if (scene.materials.has_layer(layer))
         {
@@ -182,7 +201,7 @@ namespace bilayer
                                                     scene.materials.layer[l],
                                                     distribution);
               ElasticSubproblem *const target = sub.get();
-              setups += Threads::new_task([&, target, l]() {
+              setups.add([&, target, l]() {
                 target->setup(scene.geometry.clamped,
                               *prescribed[l],
                               traction[l],
@@ -253,15 +272,28 @@ namespace bilayer
                                   scene.mesh.interface_terms,
                                   scene.mesh.contact_weight);
 
-    const std::string &dir = scene.output.directory;
-    if (distribution.is_root())
-      std::filesystem::create_directories(dir);
-    distribution.barrier();
+    // A file that cannot be written (a full disk) stops every process
+    // together, with the file and the reason.
+    const std::string &dir         = scene.output.directory;
+    std::string        write_error;
+    const auto         writing     = [&](const std::function<void()> &write) {
+      if (write_error.empty())
+        try
+          {
+            write();
+          }
+        catch (const ExceptionBase &e)
+          {
+            write_error = one_line_message(e);
+          }
+        catch (const std::exception &e)
+          {
+            write_error = e.what();
+          }
+    };
     if (scene.output.write_vtu || scene.output.write_hdf5)
-      write_solution(dir, cycle, views, w, scene.output, outputs);
-    if (scene.output.write_interface && distribution.is_root())
-      write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
-                       [&](std::ostream &o) { coupling.write_csv(o, w, mu); });
+      writing(
+        [&]() { write_solution(dir, cycle, views, w, scene.output, outputs); });
     record.total_seconds = distribution.max(total.wall_time());
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
@@ -270,7 +302,12 @@ namespace bilayer
     cycle_records.push_back(record);
     add_to_table(record);
     if (distribution.is_root())
-      {
+      writing([&]() {
+        if (scene.output.write_interface)
+          write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
+                           [&](std::ostream &o) {
+                             coupling.write_csv(o, w, mu);
+                           });
         write_summary();
         write_atomically(dir + "/table.txt", [&](std::ostream &o) {
           table.write_text(o, TableHandler::org_mode_table);
@@ -279,7 +316,11 @@ namespace bilayer
                          [&](std::ostream &o) { table.write_tex(o); });
         write_atomically(dir + "/table.csv",
                          [&](std::ostream &o) { write_csv_table(o); });
-      }
+      });
+    write_error = distribution.first_error(write_error);
+    if (!write_error.empty())
+      throw CollectiveError("writing the results of cycle " +
+                            std::to_string(cycle) + " failed: " + write_error);
     print_report(record);
     // Every process's files are complete before the run may commit them.
     distribution.barrier();
@@ -310,6 +351,15 @@ namespace bilayer
                                r.kkt.value() <= tol);
     record.checks.emplace_back("multipliers below the bound p",
                                r.max_multiplier_over_bound < 1.);
+    // Comparisons with NaN are false: a non-finite result must fail here,
+    // not pass the checks below by being compared.
+    const bool finite =
+      std::isfinite(record.energy) && std::isfinite(r.constraint_violation) &&
+      std::isfinite(r.max_penetration) && std::isfinite(r.displacement_scale) &&
+      std::isfinite(r.relative_discrete_violation) &&
+      std::isfinite(r.min_contact_multiplier) &&
+      std::isfinite(r.complementarity) && std::isfinite(r.kkt.value());
+    record.checks.emplace_back("energy and residuals finite", finite);
     if (r.max_multiplier_over_bound >= 1.)
       {
         std::ostringstream note;
@@ -365,6 +415,38 @@ namespace bilayer
     for (const auto &c : record.checks)
       rout << "cycle " << record.cycle << ": " << c.first << ": "
            << (c.second ? "yes" : "NO") << std::endl;
+    // Two numbers that the tests meet with an independent computation
+    // (tests/prm_references.cc): the energy and the largest normal opening
+    // (u+ - u-).nu at the layer-1 nodes of the crack, with its position,
+    // each as v = m 10^k, 1 <= |m| < 10, m with 8 digits (O(1) for numdiff).
+    const auto scaled = [](const double v) {
+      int k = v == 0 ? 0 : int(std::floor(std::log10(std::abs(v))));
+      double m = v / std::pow(10., k);
+      if (std::abs(m) >= 9.99999995)
+        m /= 10, ++k;
+      std::ostringstream s;
+      s << "[10^" << k << "]: " << std::fixed << std::setprecision(7) << m;
+      return s.str();
+    };
+    rout << "cycle " << record.cycle << ": energy Pi " << scaled(record.energy)
+         << std::endl;
+    if (distribution.is_root())
+      {
+        const std::vector<double> opening = coupling.normal_opening(w);
+        int                       a_max   = -1;
+        for (unsigned int a = 0; a < coupling.n_nodes(); ++a)
+          if (coupling.node_on_crack(a) &&
+              (a_max < 0 || opening[a] > opening[a_max]))
+            a_max = a;
+        if (a_max >= 0)
+          {
+            std::ostringstream x;
+            x << std::setprecision(6) << coupling.node_position(a_max);
+            rout << "cycle " << record.cycle << ": largest crack opening "
+                 << scaled(opening[a_max]) << " at x = " << x.str()
+                 << std::endl;
+          }
+      }
     if (!record.accepted())
       rout << "bilayer: cycle " << record.cycle
            << " FAILED: " << record.failure() << std::endl;

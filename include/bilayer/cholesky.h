@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <string>
 
 namespace bilayer
 {
@@ -28,10 +29,17 @@ namespace bilayer
     SparseCholesky &
     operator=(const SparseCholesky &) = delete;
 
-    /// Analyse and factorise; throws if the matrix is not positive
-    /// definite.
+    /// Analyse and factorise; throws a message naming @p what if the
+    /// matrix is not positive definite, std::bad_alloc if CHOLMOD runs out
+    /// of memory.
     void
-    initialize(const SparseMatrix<double> &matrix);
+    initialize(const SparseMatrix<double> &matrix,
+               const std::string          &what = "a subproblem matrix");
+
+    /// As initialize(), but returns false instead of throwing when the
+    /// matrix is not (numerically) positive definite.
+    bool
+    try_initialize(const SparseMatrix<double> &matrix);
 
     /// Overwrite @p rhs_and_solution with A^{-1} rhs.
     void

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace bilayer
@@ -144,6 +146,15 @@ namespace bilayer
     void
     broadcast(bool &flag, std::string &message) const;
 
+    /**
+     * The first non-empty @p message over the processes (in process
+     * order), on every process (collective): an error found by some
+     * processes (a file that could not be written) becomes known to all,
+     * which then stop together.
+     */
+    std::string
+    first_error(const std::string &message) const;
+
     /// Values sent by share() so far (the root's count: the exchange
     /// volume of the iterations is 8 bytes times this per receiver).
     unsigned long
@@ -168,6 +179,16 @@ namespace bilayer
     unsigned int          process_               = 0;
     mutable unsigned long shared_values_         = 0;
     mutable double        shared_seconds_        = 0;
+  };
+
+  /**
+   * An error that every process throws together (after first_error()), so
+   * that they can stop without MPI_Abort and remove what they staged.
+   */
+  class CollectiveError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
   };
 } // namespace bilayer
 

@@ -86,9 +86,22 @@ namespace bilayer
     unsigned int
     n_outer_vertices() const;
 
+    /// The first @p how_many numbers of cells along Sigma whose structured
+    /// meshes have both crack end points as vertices.
+    std::vector<unsigned int>
+    valid_cells_along_sigma(const unsigned int how_many) const;
+
   private:
     void
     check_crack_vertices() const;
+
+    /// Refuse a mesh read from a file whose cells are inverted or
+    /// degenerate, or whose boundary has faces inside the subdomain (slits,
+    /// holes, overlapping or unconnected cells).
+    void
+    check_cells(const Triangulation<2> &tria,
+                const Subdomain         subdomain,
+                const std::string      &file) const;
 
     void
     make_subdomain(const Subdomain    subdomain,

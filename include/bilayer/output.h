@@ -5,6 +5,7 @@
 
 #include <bilayer/contact_solver.h>
 #include <bilayer/interface.h>
+#include <bilayer/output_directory.h>
 #include <bilayer/subproblem.h>
 
 #include <functional>
@@ -51,40 +52,6 @@ namespace bilayer
   void
   write_atomically(const std::string                         &path,
                    const std::function<void(std::ostream &)> &writer);
-
-  /**
-   * A run's output directory, written whole or not at all. The run writes
-   * into staging() (DIR.partial next to DIR, created afresh); commit(true)
-   * then replaces DIR by it, commit(false) renames it to DIR.failed for
-   * inspection. Either way a pre-existing DIR is never left half-written,
-   * and a refused or failed run leaves it as it was. The constructor
-   * refuses, with a one-line message naming Output/Output directory, a
-   * directory that cannot be replaced ("." or a file system root) and one
-   * whose staging directory cannot be created. A StagedDirectory destroyed
-   * without commit() (an exception during the run) removes its staging
-   * directory.
-   */
-  class StagedDirectory
-  {
-  public:
-    explicit StagedDirectory(const std::string &directory);
-    ~StagedDirectory();
-
-    const std::string &
-    staging() const
-    {
-      return staging_path;
-    }
-
-    /// Move the staged results into place (@p success) or aside to
-    /// DIR.failed; returns where they are.
-    std::string
-    commit(const bool success);
-
-  private:
-    std::string final_path, staging_path;
-    bool        committed = false;
-  };
 
   /// What write_solution() keeps from cycle to cycle.
   struct SolutionRecords

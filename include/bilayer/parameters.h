@@ -361,6 +361,8 @@ namespace bilayer
     ContactParameters  contact;
     SolverParameters   solver;
     OutputParameters   output;
+    /// The parameter file and the files it includes (not the mesh files).
+    std::vector<std::string> input_files;
 
     static void
     declare_parameters(ParameterHandler &prm);

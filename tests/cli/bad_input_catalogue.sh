@@ -2,38 +2,63 @@
 # The bad-input catalogue: every case must end with exactly one line
 # "bilayer: error: ..." on stderr that names the parameter (and, where
 # deal.II gives them, the file and line) with the allowed range, a non-zero
-# exit, no backtrace, and a pre-existing output directory left unchanged with
-# no staging directory behind. A run that fails its checks leaves the output
-# directory unchanged too and puts its results in DIR.failed.
+# exit, no backtrace, no file outside the output directory changed, a
+# pre-existing output directory left unchanged and no staging directory
+# behind. Several members of each class of hostile input are tried: output
+# directories that hold the user's files (the working directory under other
+# names, its ancestors, a directory holding an input, foreign files,
+# symbolic links), concurrent runs into one directory, parameter files that
+# are no regular file or include themselves, names and sizes of text that
+# broke the expression parser, scenes too large for the memory, numbers
+# outside the range of double, and command-line mistakes. Then the runs
+# that do not refuse: a failed run keeps the directory and puts its results
+# in DIR.failed, a failed write keeps it too, a passing run replaces it and
+# removes DIR.failed.
 # Usage: bad_input_catalogue.sh BILAYER PARAMETER_FILE
 set -u
-bilayer=$1
-prm=$2
+bilayer=$(realpath "$1")
+prm_source=$(realpath "$2")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-mkdir out
-echo '{"previous": "results"}' > out/summary.json
-echo 'kept' > out/notes.txt
-snapshot() { (cd out && find . -type f -exec md5sum {} + | sort); }
-before=$(snapshot)
+cp "$prm_source" scene.prm
+prm=scene.prm
 failures=0
+fail() {
+  echo "$1: no ($2)"
+  [[ -f stderr ]] && cat stderr
+  failures=$((failures + 1))
+}
+
+# The output directory of an earlier run (bilayer's own), with a file the
+# user added; every refusal must leave it and all other files unchanged.
+"$bilayer" "$prm" --set "Output/Output directory=out" --set "Output/Write VTU=false" \
+  > /dev/null 2>&1 || fail "set-up run" "exit status $?"
+echo 'kept' > out/notes.txt
+mkdir -p keep/sub
+echo 'precious' > keep/data.txt
+echo 'precious' > keep/sub/data.txt
+# (The files of the check itself and a failed run's out.failed aside.)
+snapshot() {
+  find . \( -path ./stdout -o -path ./stderr -o -path ./out.failed \) -prune -o -type f -print0 \
+    | sort -z | xargs -0 md5sum
+}
+before=$(snapshot)
 
 # check NAME EXPECTED-FRAGMENT ARGS...: one refusal.
 check() {
   local name=$1 expect=$2
   shift 2
   "$bilayer" "$@" > stdout 2> stderr
-  local rc=$? ok=yes why=""
-  [[ $rc -ne 0 ]] || { ok=no; why="exit status 0"; }
-  [[ $(wc -l < stderr) -eq 1 ]] || { ok=no; why="$why; $(wc -l < stderr) lines on stderr"; }
-  grep -qF "bilayer: error: " stderr || { ok=no; why="$why; no 'bilayer: error:'"; }
-  grep -qF -- "$expect" stderr || { ok=no; why="$why; '$expect' not named"; }
-  ! grep -qiE "stacktrace|^-{5,}" stderr || { ok=no; why="$why; backtrace"; }
-  [[ "$(snapshot)" == "$before" ]] || { ok=no; why="$why; output directory changed"; }
-  [[ ! -e out.partial && ! -e out.failed ]] || { ok=no; why="$why; staging left behind"; }
-  echo "$name: $ok${why:+ ($why)}"
-  [[ $ok == yes ]] || { cat stderr; failures=$((failures + 1)); }
+  local rc=$? why=""
+  [[ $rc -eq 1 ]] || why="exit status $rc"
+  [[ $(wc -l < stderr) -eq 1 ]] || why="$why; $(wc -l < stderr) lines on stderr"
+  grep -qF "bilayer: error: " stderr || why="$why; no 'bilayer: error:'"
+  grep -qF -- "$expect" stderr || why="$why; '$expect' not named"
+  ! grep -qiE "stacktrace|terminate called|^-{5,}" stderr || why="$why; backtrace"
+  [[ "$(snapshot)" == "$before" ]] || why="$why; files changed"
+  [[ -z $(find . -name '*.partial' -o -name '*.lock') ]] || why="$why; staging or lock left behind"
+  if [[ -z $why ]]; then echo "$name: yes"; else fail "$name" "$why"; fi
 }
 run() {
   local name=$1 expect=$2
@@ -41,15 +66,39 @@ run() {
   check "$name" "$expect" "$prm" --set "Output/Output directory=out" --set "$@"
 }
 
+# Parameter files.
 printf 'subsection Mesh\n  sett Cells along Sigma = 8\nend\n' > malformed.prm
 printf 'subsection Mesh\n  set Cels along Sigma = 8\nend\n' > unknown_entry.prm
 printf 'subsection Meshes\n  set Cells along Sigma = 8\nend\n' > unknown_subsection.prm
 printf 'subsection Mesh\n  set Cells along Sigma = 8\n' > unterminated.prm
+printf 'include self.prm\n' > self.prm
+printf 'include b.prm\n' > a.prm
+printf 'include a.prm\n' > b.prm
+printf 'include nothere.prm\n' > include_missing.prm
+mkdir -p a_directory.prm mesh_dir_minus mesh_dir_plus
+mkfifo a_fifo.prm
+before=$(snapshot)
 check "malformed line" "Line <2> of file <malformed.prm>" malformed.prm
 check "unknown entry" "Line <2> of file <unknown_entry.prm>: No entry with name <Cels along Sigma>" unknown_entry.prm
 check "unknown subsection" "Line <1> of file <unknown_subsection.prm: There is no such subsection to be entered: Meshes" unknown_subsection.prm
 check "unterminated subsection" "unterminated.prm" unterminated.prm
-check "missing parameter file" "no-such-file.prm" no-such-file.prm
+check "missing parameter file" "cannot open parameter file 'no-such-file.prm': no such file" no-such-file.prm
+check "parameter file is a directory" "parameter file 'a_directory.prm': it is a directory" a_directory.prm
+check "parameter file is a device" "parameter file '/dev/null': it is not a regular file" /dev/null
+check "parameter file is a FIFO" "parameter file 'a_fifo.prm': it is not a regular file" a_fifo.prm
+check "file includes itself" "includes itself" self.prm
+check "files include each other" "includes itself" a.prm
+check "included file missing" "cannot open file 'nothere.prm' included from 'include_missing.prm'" include_missing.prm
+
+# The command line.
+check "no arguments" "no parameter file given"
+check "two parameter files" "more than one parameter file given" "$prm" "$prm"
+check "--set without a value" "--set needs a value" "$prm" --set
+check "unknown option" "unknown option '--frobnicate'" "$prm" --frobnicate
+check "--set without '='" "--set expects 'Section/Entry=value'" "$prm" --set "Mesh/Cells along Sigma"
+check "--set of an unknown entry" "--set Mesh/Cels along Sigma=8" "$prm" --set "Mesh/Cels along Sigma=8"
+
+# Entries and their ranges.
 run "value outside its pattern" "Mesh/Cells along Sigma=-3: The string <-3> does not match the given pattern <[Integer range 1...100000" "Mesh/Cells along Sigma=-3"
 run "zero cells" "Mesh/Cells along Sigma=0: The string <0> does not match the given pattern <[Integer range 1...100000" "Mesh/Cells along Sigma=0"
 run "degree 0" "Mesh/Polynomial degree of layer 1=0: The string <0> does not match the given pattern <[Integer range 1...4" "Mesh/Polynomial degree of layer 1=0"
@@ -65,33 +114,130 @@ run "load evaluates to NaN" "Loads/Layer 1/Traction on bottom side must be finit
 run "prescribed displacement infinite" "Loads/Layer 2/Prescribed displacement must be finite on the left side" "Loads/Layer 2/Prescribed displacement=0; 1/(x-x)"
 run "load on an absent layer" "Loads/Layer 2/Traction on top side must be '0; 0': layer 2 is absent (Materials/Number of layers = 1)" "Loads/Layer 2/Traction on top side=0; 1" --set "Materials/Number of layers=1"
 run "missing mesh file" "Mesh/Mesh files: cannot open" "Mesh/Mesh files=nothere_{side}.msh"
+run "mesh file is a directory" "Mesh/Mesh files: cannot open 'mesh_dir_minus': not a regular file" "Mesh/Mesh files=mesh_dir_{side}"
 run "theta <= 0" "Solver/Uzawa step theta must be a number > 0 or 'auto', got '-1'" "Solver/Uzawa step theta=-1"
 run "theta = 0" "Solver/Uzawa step theta must be > 0 or 'auto', got 0" "Solver/Uzawa step theta=0"
 run "bound p <= 0" "Contact/Multiplier bound p must be > 0, got 0" "Contact/Multiplier bound p=0"
-check "output directory not writable" "Output/Output directory: cannot create '/dev/null/x.partial'" \
-  "$prm" --set "Output/Output directory=/dev/null/x"
-check "output directory is a file" "Output/Output directory 'out/notes.txt' exists and is not a directory" \
-  "$prm" --set "Output/Output directory=out/notes.txt"
-check "output directory '.'" "Output/Output directory must name a directory that a run may create or replace" \
-  "$prm" --set "Output/Output directory=."
+run "crack end not a vertex, plus side" "Mesh/Cells along Sigma on the plus side = 3 does not make the crack end point" "Mesh/Cells along Sigma on the plus side=3"
+run "crack end not a vertex, proposals" "numbers of cells that do: 4 8 12" "Mesh/Cells along Sigma=6"
+
+# Constants and expressions that clash with the parser's names or sizes.
+for name in x y t sin E1 mu2; do
+  run "constant named $name" "Loads/Constants: the name '$name' is reserved" "Loads/Constants=$name = 1"
+done
+long=$(printf '1+%.0s' $(seq 15000))1
+run "constant of 30 000 characters" "Loads/Constants: longer than 10000 characters" "Loads/Constants=c = $long"
+run "traction of 30 000 characters" "Loads/Layer 1/Traction on top side: longer than 10000 characters" "Loads/Layer 1/Traction on top side=0; $long"
+run "constant not a name" "Loads/Constants must read 'name = expression" "Loads/Constants=2c = 1"
+run "constant not finite" "Loads/Constants: constant 'c' = '1/0' is not a finite number" "Loads/Constants=c = 1/0"
+
+# Numbers outside the range of double, and scenes beyond the memory.
+run "denormal modulus" "Materials/Layer 1/Young's modulus: '1e-320' is outside the range of normal double numbers" "Materials/Layer 1/Young's modulus=1e-320"
+run "denormal tolerance" "Solver/Tolerance: '4e-310' is outside the range of normal double numbers" "Solver/Tolerance=4e-310"
+run "denormal corner" "Geometry/Lower left corner: '-1e-315' is outside the range" "Geometry/Lower left corner=-1e-315, -1"
+run "huge corners" "Geometry: the corners and the height of Sigma must lie within +-1e100" "Geometry/Lower left corner=-1e300, -1e300" --set "Geometry/Upper right corner=1e300, 1e300"
+run "tiny Omega" "Geometry: Omega must be at least 1e-100 wide and high" "Geometry/Lower left corner=-1e-300, -1e-300" --set "Geometry/Upper right corner=1e-300, 1e-300" --set "Geometry/Crack interval on Sigma=-5e-301, 5e-301"
+run "modulus 1e308" "the stiffness matrix of subproblem u- has entries that are not finite: Materials/Layer 1/Young's modulus" "Materials/Layer 1/Young's modulus=1e308"
+run "100000 cells along Sigma" "Mesh/Cells along Sigma, Mesh/Cells across each subdomain, Mesh/Number of cycles: cycle 0 would have" "Mesh/Cells along Sigma=100000"
+run "40 cycles of global refinement" "cycle 39 would have" "Mesh/Number of cycles=40"
+run "many cells across" "GiB of memory, but" "Mesh/Cells across each subdomain=100000" --set "Mesh/Cells along Sigma=4096"
+
+# Output directories that would take the user's files with them.
+mkdir -p sub
+ln -s keep link_to_keep
+ln -s nowhere dangling
+echo x > plainfile
+before=$(snapshot)
+for dir in "." ".." "./" "$work" "$work/." "$work/" "sub/.." "../$(basename "$work")" "$(dirname "$work")" "/"; do
+  check "output directory '$dir'" "Output/Output directory" "$prm" --set "Output/Output directory=$dir"
+done
+check "output directory holding foreign files" "'keep' holds files that bilayer did not write" \
+  "$prm" --set "Output/Output directory=keep"
+check "output directory holding foreign subdirectory" "'keep/sub/..' holds files that bilayer did not write" \
+  "$prm" --set "Output/Output directory=keep/sub/.."
+check "output directory through a symbolic link" "is a symbolic link" "$prm" --set "Output/Output directory=link_to_keep"
+check "output directory a dangling symbolic link" "is a symbolic link" "$prm" --set "Output/Output directory=dangling"
+check "output directory is a file" "'plainfile' exists and is not a directory" "$prm" --set "Output/Output directory=plainfile"
+check "output directory not writable" "Output/Output directory: cannot create" "$prm" --set "Output/Output directory=/dev/null/x"
+mkdir -p inputs/meshes && cp "$prm" inputs/scene.prm
+printf 'include inputs/scene.prm\n' > including.prm
+cp "$(dirname "$prm_source")"/../meshes/table1_P12_M32_minus.msh inputs/meshes/m_minus.msh
+cp "$(dirname "$prm_source")"/../meshes/table1_P12_M32_plus.msh inputs/meshes/m_plus.msh
+before=$(snapshot)
+check "output directory holding the parameter file" "contains the input file 'inputs/scene.prm'" \
+  inputs/scene.prm --set "Output/Output directory=inputs"
+check "output directory is the parameter file" "is the input file 'inputs/scene.prm'" \
+  inputs/scene.prm --set "Output/Output directory=inputs/scene.prm"
+check "output directory holding an included file" "contains the input file 'inputs/scene.prm'" \
+  including.prm --set "Output/Output directory=inputs"
+check "output directory holding a mesh file" "contains the input file 'inputs/meshes/m_minus.msh'" \
+  "$prm" --set "Mesh/Mesh files=inputs/meshes/m_{side}.msh" --set "Output/Output directory=inputs/meshes"
+
+# A second run into a directory that a first run is writing: refused at
+# once, naming the other process; the first run completes.
+"$bilayer" "$prm" --set "Output/Output directory=busy" --set "Mesh/Cells along Sigma=96" \
+  --set "Solver/Method=uzawa" > first.out 2>&1 &
+first=$!
+for _ in $(seq 100); do [[ -s busy.lock ]] && break; sleep 0.05; done
+"$bilayer" "$prm" --set "Output/Output directory=busy" > stdout 2> stderr
+rc=$?
+if [[ $rc -eq 1 && $(wc -l < stderr) -eq 1 ]] && grep -qE "'busy' is being written by another run \(process $first " stderr; then
+  echo "second run into a busy directory refused: yes"
+else
+  fail "second run into a busy directory refused" "exit status $rc"
+fi
+wait $first
+rc=$?
+if [[ $rc -eq 0 && -f busy/summary.json && ! -e busy.partial && ! -e busy.lock ]]; then
+  echo "first run completes: yes"
+else
+  fail "first run completes" "exit status $rc"
+  cat first.out
+fi
+rm -rf busy first.out
+before=$(snapshot)
 
 # A run that fails its checks (iteration limit): exit 2, the output
 # directory unchanged, the failed run's results in out.failed.
 "$bilayer" "$prm" --set "Output/Output directory=out" --set "Solver/Maximum iterations=10" > stdout 2> stderr
 rc=$?
-ok=yes
-[[ $rc -eq 2 ]] || ok=no
-grep -qF "did not pass its checks" stderr || ok=no
-[[ "$(snapshot)" == "$before" && ! -e out.partial && -f out.failed/summary.json ]] || ok=no
-echo "failed run leaves the output directory unchanged, results in out.failed: $ok"
-[[ $ok == yes ]] || { cat stderr; failures=$((failures + 1)); }
+if [[ $rc -eq 2 ]] && grep -qF "bilayer: cycle 0 FAILED" stderr && [[ -f out.failed/summary.json ]] \
+  && [[ "$(snapshot)" == "$before" && ! -e out.partial ]]; then
+  echo "failed run leaves the output directory unchanged, results in out.failed: yes"
+else
+  fail "failed run leaves the output directory unchanged" "exit status $rc"
+fi
+rm -rf out.failed
+before=$(snapshot)
 
-# A run that passes replaces the directory whole.
-"$bilayer" "$prm" --set "Output/Output directory=out" > stdout 2> stderr
-ok=yes
-[[ $? -eq 0 && -f out/solution.pvd && ! -e out/notes.txt && ! -e out.partial ]] || ok=no
-echo "passing run replaces the output directory: $ok"
-[[ $ok == yes ]] || { cat stderr; failures=$((failures + 1)); }
+# A write that fails (file size limit, as on a full disk): one line naming
+# the file and the reason, the output directory unchanged, nothing staged.
+# (Open MPI's PMIx keeps its data in a shared file unless told otherwise,
+# which the limit would stop.)
+(trap '' XFSZ; ulimit -f 600; PMIX_MCA_gds=hash exec "$bilayer" "$prm" --set "Output/Output directory=out" \
+  --set "Mesh/Cells along Sigma=128" > stdout 2> stderr)
+rc=$?
+if [[ $rc -eq 1 && $(wc -l < stderr) -eq 1 ]] && grep -qE "bilayer: error: writing the results of cycle 0 failed: cannot write '.*': File too large" stderr \
+  && [[ "$(snapshot)" == "$before" && -z $(find . -name '*.partial' -o -name '*.lock') ]]; then
+  echo "failed write leaves the output directory unchanged: yes"
+else
+  fail "failed write leaves the output directory unchanged" "exit status $rc"
+fi
+
+# A run that passes replaces bilayer's directory whole (the user's note
+# with it, as documented) and removes an earlier failed run's results;
+# blanks around --set values do not count.
+"$bilayer" "$prm" --set "Output/Output directory=out" --set "Solver/Maximum iterations=10" > /dev/null 2>&1
+"$bilayer" "$prm" --set "Output/Output directory = out " --set "Solver/Method = active set" > stdout 2> stderr
+rc=$?
+if [[ $rc -eq 0 && -f out/solution.pvd && -f out/.bilayer-output && ! -e out/notes.txt && ! -e out.partial && ! -e out.failed && ! -e "out " ]] \
+  && grep -q '"solver": "active set"' out/summary.json; then
+  echo "passing run replaces the output directory: yes"
+else
+  fail "passing run replaces the output directory" "exit status $rc"
+fi
+[[ $(cat keep/data.txt keep/sub/data.txt) == $'precious\nprecious' && $(find keep | wc -l) -eq 4 ]] \
+  && echo "foreign directory untouched: yes" || fail "foreign directory untouched" "changed"
 
 echo "failures: $failures"
 [[ $failures -eq 0 ]]
