@@ -24,7 +24,7 @@ namespace bilayer
     bytes_per_dof(const double n, const unsigned int k)
     {
       const double fill = std::log2(std::max(n, 1e3)) / std::log2(2.6e5);
-      return (600. + 2600. * fill) * (k == 1 ? 1. : 0.8 * k);
+      return (600. + 2600. * fill) * (1. + 0.2 * (k - 1.));
     }
 
     /// The number read from /proc/meminfo's line @p key [bytes].
@@ -70,9 +70,12 @@ namespace bilayer
         for (const double cells : {cells_minus, cells_plus})
           {
             const unsigned int k = scene.mesh.degree(layer);
-            // Nodes of a degree-k mesh of square-ish cells, two components.
+            // Nodes of a degree-k mesh of square-ish cells (two triangles
+            // per square), two components.
+            const double squares =
+              scene.mesh.shape == ElementShape::triangle ? cells / 2 : cells;
             const double dofs =
-              2 * (k * k * cells + 2 * k * std::sqrt(cells) + 1);
+              2 * (k * k * squares + 2 * k * std::sqrt(squares) + 1);
             estimate.dofs += dofs;
             estimate.memory += dofs * bytes_per_dof(dofs, k);
             // Per cell, the (k+1)^2 points of its patch with coordinates,

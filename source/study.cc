@@ -157,6 +157,7 @@ namespace bilayer
       // Adaptive cycles and mesh files: the sizes are known only now.
       const ResourceEstimate need =
         estimate_resources(scene, record.minus.cells, record.plus.cells);
+      record.memory_estimate_mib = need.memory / (1 << 20);
       const double available = distribution.max(-available_memory());
       if (need.memory > -available)
         throw RunFailure(cycle,
@@ -407,6 +408,7 @@ namespace bilayer
           << record.shared_seconds << " s, peak memory per process [MiB]";
     for (const double m : record.memory_mib)
       pcout << " " << std::fixed << std::setprecision(0) << m;
+    pcout << " (estimated " << record.memory_estimate_mib << ")";
     pcout << "\n"
           << std::defaultfloat << std::setprecision(3)
           << "  wall time                    setup " << record.setup_seconds
@@ -570,6 +572,7 @@ namespace bilayer
             for (unsigned int p = 0; p < r.memory_mib.size(); ++p)
               o << (p ? ", " : "") << json(r.memory_mib[p]);
             o << "]"
+              << ", \"memory_estimate_mib\": " << json(r.memory_estimate_mib)
               << ", \"wall_seconds\": {\"setup\": " << json(r.setup_seconds)
               << ", \"assembly\": " << json(r.assembly_seconds)
               << ", \"factorisation\": " << json(r.factorisation_seconds)

@@ -1,7 +1,15 @@
 // Properties of the contact solution that the mathematics guarantees.
 //
 // Example 1 (partial closure), solved to a tight relative tolerance:
-// - mu_c >= 0 at every crack node (the projection onto [0, p]);
+// - the contact force is compressive: recovered from the displacements
+//   alone, as the residual of the equilibrium equations of u+ and v+ at the
+//   crack nodes (stiffness assembled here, independently of the library;
+//   the Sigma dofs carry no traction load, so K w is the interface load):
+//   (K_u+ u+)_y(a) + (K_v+ v+)_y(a) = D_a mu_c(a) >= 0 (the gluing
+//   multiplier lambda+ cancels in the sum; D_a = lumped weight of node a).
+//   Unlike mu_c >= 0, which the projection onto [0, p] enforces, this fails
+//   for a multiplier applied with the wrong sign or a crack held shut by a
+//   tensile force; the force must also be D_a mu_c;
 // - [u].nu >= 0 up to the iteration error (non-penetration);
 // - mu_c [u].nu = 0 (complementarity): where mu_c > 0 the faces touch;
 // - the load c x opens the left part of the crack (x < 0) and presses the
@@ -13,6 +21,13 @@
 // of the contact problem is positively homogeneous, so doubling the loads
 // doubles every displacement. Example 2 is mirror symmetric in x: the
 // normal opening is even, the tangential displacement odd.
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 
 #include <bilayer/parameters.h>
 #include <bilayer/study.h>
@@ -54,6 +69,71 @@ namespace
     return study.interface().normal_opening(study.solutions());
   }
 
+  /// K w for subproblem s of @p study (Q1, plane strain, the moduli of
+  /// paper.md §5 written out here), by its own assembly.
+  Vector<double>
+  stiffness_times(const Study &study, const unsigned int s)
+  {
+    const double E[2] = {200., 112.}, nu[2] = {0.28, 0.32};
+    const double mu     = E[s / 2] / (2. * (1. + nu[s / 2]));
+    const double lambda = 2. * nu[s / 2] * mu / (1. - 2. * nu[s / 2]);
+    const ElasticSubproblem &sub =
+      study.subproblem(static_cast<Layer>(s / 2),
+                       static_cast<Subdomain>(s % 2));
+    const DoFHandler<2>   &dofs = sub.dof_handler();
+    DynamicSparsityPattern dsp(dofs.n_dofs());
+    DoFTools::make_sparsity_pattern(dofs, dsp);
+    SparsityPattern pattern;
+    pattern.copy_from(dsp);
+    SparseMatrix<double> K(pattern);
+    FEValues<2>          fe_values(sub.mapping(),
+                          sub.fe(),
+                          QGauss<2>(2),
+                          update_gradients | update_JxW_values);
+    const unsigned int   n = sub.fe().n_dofs_per_cell();
+    FullMatrix<double>   cell_matrix(n, n);
+    std::vector<types::global_dof_index> local(n);
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        cell_matrix = 0;
+        fe_values.reinit(cell);
+        add_elasticity_matrix(
+          fe_values, FEValuesExtractors::Vector(0), mu, lambda, cell_matrix);
+        cell->get_dof_indices(local);
+        K.add(local, cell_matrix);
+      }
+    Vector<double> Kw(dofs.n_dofs());
+    K.vmult(Kw, study.solutions()[s]);
+    return Kw;
+  }
+
+  /// The y-dof of subproblem s at the point (x, 0) of Sigma.
+  types::global_dof_index
+  sigma_y_dof(const Study &study, const unsigned int s, const double x)
+  {
+    const ElasticSubproblem &sub =
+      study.subproblem(static_cast<Layer>(s / 2),
+                       static_cast<Subdomain>(s % 2));
+    std::vector<Point<2>> points(sub.n_dofs());
+    DoFTools::map_dofs_to_support_points(sub.mapping(),
+                                         sub.dof_handler(),
+                                         points);
+    std::vector<bool> y_component(sub.n_dofs());
+    std::vector<types::global_dof_index> local(sub.fe().n_dofs_per_cell());
+    for (const auto &cell : sub.dof_handler().active_cell_iterators())
+      {
+        cell->get_dof_indices(local);
+        for (unsigned int i = 0; i < local.size(); ++i)
+          y_component[local[i]] =
+            sub.fe().system_to_component_index(i).first == 1;
+      }
+    for (types::global_dof_index i = 0; i < points.size(); ++i)
+      if (y_component[i] && points[i].distance(Point<2>(x, 0)) < 1e-10)
+        return i;
+    AssertThrow(false, ExcMessage("no dof at this point of Sigma"));
+    return 0;
+  }
+
 } // namespace
 
 int
@@ -67,15 +147,36 @@ main()
   const std::vector<double> open  = opening(contact);
   const double scale = sigma.displacement_scale(contact.solutions());
 
-  bool              sign_ok = true, nonpenetration = true;
+  bool              nonpenetration = true;
   double            max_open = 0, complementarity = 0;
+  // The contact force at each crack node from the residual of u+ and v+.
+  const Vector<double> Ku = stiffness_times(contact, 1),
+                       Kv = stiffness_times(contact, 3);
+  std::vector<double>  force(sigma.n_nodes(), 0.);
+  double               max_force = 0;
+  for (unsigned int a = 0; a < sigma.n_nodes(); ++a)
+    if (sigma.node_on_crack(a))
+      {
+        const double x = sigma.node_position(a);
+        force[a]       = Ku(sigma_y_dof(contact, 1, x)) +
+                   Kv(sigma_y_dof(contact, 3, x));
+        max_force      = std::max(max_force, std::abs(force[a]));
+      }
+  bool compressive = max_force > 0, force_is_multiplier = true;
   bool              left_open = true, right_closed_somewhere = false;
   std::vector<bool> closed(sigma.n_nodes(), false);
   for (unsigned int a = 0; a < sigma.n_nodes(); ++a)
     if (sigma.node_on_crack(a))
       {
         const double mu_c = contact.multipliers().block(0)(2 * a + 1);
-        sign_ok           = sign_ok && mu_c >= 0;
+        // D_a: half the adjacent segments (lumped, Q1: all nodes are
+        // vertices).
+        const double D_a = 0.5 * (sigma.node_position(a + 1) -
+                                  sigma.node_position(a - 1));
+        compressive      = compressive && force[a] >= -1e-8 * max_force;
+        force_is_multiplier =
+          force_is_multiplier &&
+          std::abs(force[a] - D_a * mu_c) <= 1e-6 * max_force;
         nonpenetration    = nonpenetration && open[a] >= -1e-9 * scale;
         max_open          = std::max(max_open, open[a]);
         complementarity   = std::max(complementarity, mu_c * std::abs(open[a]));
@@ -86,7 +187,11 @@ main()
           right_closed_somewhere = true;
       }
   double max_mu = contact.multipliers().block(0).linfty_norm();
-  std::cout << "mu_c >= 0 at every crack node: " << yes(sign_ok) << std::endl
+  std::cout << "contact force from the residual (K w)_y of u+ and v+ >= "
+               "-1e-8 max at every crack node: "
+            << yes(compressive) << std::endl
+            << "and equal to D_a mu_c to 1e-6 max: "
+            << yes(force_is_multiplier) << std::endl
             << "opening >= -1e-9 * displacement scale: " << yes(nonpenetration)
             << std::endl
             << "max mu_c |opening| <= 1e-9 * max mu * scale: "

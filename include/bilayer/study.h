@@ -46,6 +46,9 @@ namespace bilayer
     /// Wall time of that exchange on the first process [s].
     double              shared_seconds = 0;
     std::vector<double> memory_mib;
+    /// The memory this cycle was estimated to need before it was built
+    /// (bilayer/resources.h) [MiB].
+    double memory_estimate_mib = 0;
     /// Parts of setup_seconds: assembly and factorisation of the four
     /// subproblems, summed.
     double assembly_seconds = 0, factorisation_seconds = 0;
