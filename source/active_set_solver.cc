@@ -1,9 +1,9 @@
 #include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
 
-#include <bilayer/tasks.h>
 #include <bilayer/active_set_solver.h>
 #include <bilayer/cholesky.h>
+#include <bilayer/tasks.h>
 
 #include <cmath>
 #include <iomanip>
@@ -158,7 +158,7 @@ namespace bilayer
       if (preconditioner.n_degraded_steps() > 0)
         result.message +=
           "; the preconditioner's Gram matrix of the free multipliers was "
-          "singular (redundant multiplier constraints) in " +
+                          "singular (redundant multiplier constraints) in " +
           std::to_string(preconditioner.n_degraded_steps()) +
           " Newton steps, which used the diagonal scaling instead";
       result.iteration_seconds = timer.wall_time();

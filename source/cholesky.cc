@@ -3,8 +3,8 @@
 #include <bilayer/cholesky.h>
 
 #include <algorithm>
-#include <new>
 #include <cholmod.h>
+#include <new>
 
 namespace bilayer
 {

@@ -1,8 +1,8 @@
 #include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
 
-#include <bilayer/tasks.h>
 #include <bilayer/contact_solver.h>
+#include <bilayer/tasks.h>
 
 #include <cmath>
 #include <iomanip>

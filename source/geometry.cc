@@ -131,14 +131,14 @@ namespace bilayer
                       {
                         const bool plus = s == Subdomain::plus &&
                                           mesh.cells_along_sigma_plus > 0;
-                        msg << "Mesh/Cells along Sigma"
-                            << (plus ? " on the plus side = " +
-                                         std::to_string(
-                                           mesh.cells_along_sigma_plus) :
-                                       " = " + std::to_string(
-                                                 mesh.cells_along_sigma))
-                            << " does not make the crack end point x = " << c
-                            << " a mesh vertex";
+                        msg
+                          << "Mesh/Cells along Sigma"
+                          << (plus ?
+                                " on the plus side = " +
+                                  std::to_string(mesh.cells_along_sigma_plus) :
+                                " = " + std::to_string(mesh.cells_along_sigma))
+                          << " does not make the crack end point x = " << c
+                          << " a mesh vertex";
                         const auto valid = valid_cells_along_sigma(5);
                         if (valid.empty())
                           msg << "; no number of cells up to 100000 does: "
@@ -277,7 +277,7 @@ namespace bilayer
       {
         // Signed area (shoelace) over the vertices in the order of the
         // cell's boundary: inverted or degenerate cells are broken meshes.
-        const unsigned int n = cell->n_vertices();
+        const unsigned int              n = cell->n_vertices();
         const std::vector<unsigned int> order =
           n == 3 ? std::vector<unsigned int>{0, 1, 2} :
                    std::vector<unsigned int>{0, 1, 3, 2};

@@ -120,8 +120,8 @@ namespace
             AssertThrow(command.parameter_file.empty(),
                         ExcMessage("more than one parameter file given ('" +
                                    command.parameter_file + "', '" + arg +
-                                   "'): run them one at a time (" +
-                                   usage_line + ")"));
+                                   "'): run them one at a time (" + usage_line +
+                                   ")"));
             command.parameter_file = arg;
           }
       }
@@ -215,8 +215,9 @@ main(int argc, char **argv)
                     file.replace(at, 6, side);
                   inputs.push_back(file);
                 }
-            output = std::make_unique<bilayer::StagedDirectory>(
-              scene.output.directory, inputs);
+            output =
+              std::make_unique<bilayer::StagedDirectory>(scene.output.directory,
+                                                         inputs);
             prm.print_parameters(output->staging() + "/used_parameters.prm",
                                  ParameterHandler::ShortPRM);
             problem = output->staging();

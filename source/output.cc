@@ -9,8 +9,8 @@
 #include <array>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
-#include <cmath>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>

@@ -75,8 +75,8 @@ namespace bilayer
     written_by_bilayer(const fs::path &path, std::string &foreign)
     {
       std::error_code error;
-      if (fs::is_regular_file(fs::symlink_status(
-            path / StagedDirectory::marker_name(), error)))
+      if (fs::is_regular_file(
+            fs::symlink_status(path / StagedDirectory::marker_name(), error)))
         return true;
       for (fs::directory_iterator it(path, error), end; !error && it != end;
            it.increment(error))
@@ -169,8 +169,7 @@ namespace bilayer
         if (is_or_contains(fs::path(final_path + suffix), path))
           refuse("'" + directory + "' " +
                  (suffix.empty() ? "" : "(its companion " + suffix + ") ") +
-                 (fs::path(final_path + suffix) == path ? "is " :
-                                                          "contains ") +
+                 (fs::path(final_path + suffix) == path ? "is " : "contains ") +
                  what +
                  ", which a run would delete; choose a directory of its own");
 
@@ -224,9 +223,9 @@ namespace bilayer
              "': " + error.message());
     for (;;)
       {
-        lock_descriptor =
-          ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW,
-                 0644);
+        lock_descriptor = ::open(lock_path.c_str(),
+                                 O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW,
+                                 0644);
         if (lock_descriptor < 0)
           refuse("cannot create the lock file '" + lock_path +
                  "': " + std::strerror(errno));
@@ -244,8 +243,9 @@ namespace bilayer
             if (holder.rfind(prefix, 0) == 0)
               holder = holder.substr(prefix.size());
             refuse("'" + directory + "' is being written by another run (" +
-                   (holder.empty() ? std::string("lock ") + in_quotes(lock_path) :
-                                     holder) +
+                   (holder.empty() ?
+                      std::string("lock ") + in_quotes(lock_path) :
+                      holder) +
                    "); wait for it to end or choose another directory");
           }
         // The holder before us may have removed the file after we opened
@@ -289,8 +289,8 @@ namespace bilayer
                   "it replaces it whole.\n";
         marker.flush();
         if (!marker)
-          problem = "cannot write into '" + staging_path +
-                    "': " + std::strerror(errno);
+          problem =
+            "cannot write into '" + staging_path + "': " + std::strerror(errno);
       }
     if (!problem.empty())
       {
@@ -336,8 +336,8 @@ namespace bilayer
       {
         fs::rename(target, old, error);
         if (error)
-          refuse("cannot move the previous '" + target + "' aside to '" +
-                 old + "': " + error.message() + " (it is unchanged)");
+          refuse("cannot move the previous '" + target + "' aside to '" + old +
+                 "': " + error.message() + " (it is unchanged)");
         moved_aside = true;
       }
     fs::rename(staging_path, target, error);
@@ -354,7 +354,7 @@ namespace bilayer
     if (success)
       {
         // A failed run's results no longer describe the directory.
-        std::string foreign;
+        std::string       foreign;
         const std::string failed = final_path + ".failed";
         if (fs::is_directory(fs::symlink_status(failed, error)) &&
             written_by_bilayer(failed, foreign))

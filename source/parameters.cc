@@ -5,7 +5,6 @@
 #include <bilayer/parameters.h>
 
 #include <cctype>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -112,13 +111,12 @@ namespace bilayer
     is_reserved_name(const std::string &name)
     {
       static const std::set<std::string> reserved = {
-        "x",     "y",     "z",    "t",     "sin",   "cos",       "tan",
-        "asin",  "acos",  "atan", "sinh",  "cosh",  "tanh",      "asinh",
-        "acosh", "atanh", "log2", "log10", "log",   "ln",        "exp",
-        "sqrt",  "sign",  "rint", "abs",   "min",   "max",       "sum",
-        "avg",   "if",    "int",  "ceil",  "cot",   "csc",       "sec",
-        "pow",   "erfc",  "rand", "floor", "atan2", "rand_seed", "fmod",
-        "_pi",   "_e"};
+        "x",         "y",     "z",    "t",    "sin",  "cos",   "tan",   "asin",
+        "acos",      "atan",  "sinh", "cosh", "tanh", "asinh", "acosh", "atanh",
+        "log2",      "log10", "log",  "ln",   "exp",  "sqrt",  "sign",  "rint",
+        "abs",       "min",   "max",  "sum",  "avg",  "if",    "int",   "ceil",
+        "cot",       "csc",   "sec",  "pow",  "erfc", "rand",  "floor", "atan2",
+        "rand_seed", "fmod",  "_pi",  "_e"};
       return reserved.count(name) > 0;
     }
 
@@ -215,18 +213,18 @@ namespace bilayer
   GeometryParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    const auto lower               = parse_pair(prm, "Geometry", "Lower left corner");
-    const auto upper               = parse_pair(prm, "Geometry", "Upper right corner");
-    x_min                          = lower[0];
-    y_min                          = lower[1];
-    x_max                          = upper[0];
-    y_max                          = upper[1];
-    sigma_height                   = get_double(prm, "Geometry", "Height of Sigma");
+    const auto lower = parse_pair(prm, "Geometry", "Lower left corner");
+    const auto upper = parse_pair(prm, "Geometry", "Upper right corner");
+    x_min            = lower[0];
+    y_min            = lower[1];
+    x_max            = upper[0];
+    y_max            = upper[1];
+    sigma_height     = get_double(prm, "Geometry", "Height of Sigma");
     const std::string crack_text   = prm.get("Crack interval on Sigma");
     const std::string clamped_text = prm.get("Clamped sides");
-    const auto        crack        = parse_pair(prm, "Geometry", "Crack interval on Sigma");
-    crack_start                    = crack[0];
-    crack_end                      = crack[1];
+    const auto crack = parse_pair(prm, "Geometry", "Crack interval on Sigma");
+    crack_start      = crack[0];
+    crack_end        = crack[1];
     clamped.fill(false);
     for (const auto &name :
          Utilities::split_string_list(prm.get("Clamped sides")))
@@ -437,8 +435,12 @@ namespace bilayer
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
-        layer[l].youngs_modulus = get_double(prm, "Materials/" + layer_subsection(l), "Young's modulus");
-        layer[l].poisson_ratio  = get_double(prm, "Materials/" + layer_subsection(l), "Poisson's ratio");
+        layer[l].youngs_modulus = get_double(prm,
+                                             "Materials/" + layer_subsection(l),
+                                             "Young's modulus");
+        layer[l].poisson_ratio  = get_double(prm,
+                                            "Materials/" + layer_subsection(l),
+                                            "Poisson's ratio");
         const std::string where = "Materials/" + layer_subsection(l) + "/";
         AssertThrow(layer[l].youngs_modulus > 0,
                     ExcMessage(where + "Young's modulus must be > 0, got " +
@@ -832,7 +834,7 @@ namespace bilayer
     AssertThrow(tolerance > 0,
                 ExcMessage("Solver/Tolerance must be > 0, got " +
                            prm.get("Tolerance")));
-    divergence_factor    = get_double(prm, "Solver", "Divergence growth factor");
+    divergence_factor = get_double(prm, "Solver", "Divergence growth factor");
     acceptance_tolerance = get_double(prm, "Solver", "Acceptance tolerance");
     AssertThrow(acceptance_tolerance > 0,
                 ExcMessage("Solver/Acceptance tolerance must be > 0, got " +
@@ -846,7 +848,7 @@ namespace bilayer
     preconditioner      = p == "dirichlet" ? DualPreconditioner::dirichlet :
                           p == "lumped"    ? DualPreconditioner::lumped :
                                              DualPreconditioner::none;
-    inner_tolerance     = get_double(prm, "Solver/Active set", "Inner tolerance");
+    inner_tolerance = get_double(prm, "Solver/Active set", "Inner tolerance");
     AssertThrow(inner_tolerance > 0 && inner_tolerance < 1,
                 ExcMessage("Solver/Active set/Inner tolerance must lie in "
                            "(0, 1), got " +
@@ -1035,9 +1037,9 @@ namespace bilayer
     {
       namespace fs = std::filesystem;
       const std::string where =
-        chain.empty() ? "parameter file '" + filename + "'" :
-                        "file '" + filename + "' included from '" +
-                          chain.back() + "'";
+        chain.empty() ?
+          "parameter file '" + filename + "'" :
+          "file '" + filename + "' included from '" + chain.back() + "'";
       std::error_code error;
       const auto      status = fs::status(filename, error);
       AssertThrow(fs::exists(status),
@@ -1116,8 +1118,7 @@ namespace bilayer
           {
             for (; entered + 1 < path.size(); ++entered)
               prm.enter_subsection(path[entered]);
-            prm.set(path.back(),
-                    Utilities::trim(assignment.substr(equal + 1)));
+            prm.set(path.back(), Utilities::trim(assignment.substr(equal + 1)));
           }
         catch (const ExceptionBase &e)
           {

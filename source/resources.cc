@@ -2,14 +2,13 @@
 
 #include <bilayer/resources.h>
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <sys/resource.h>
 
 namespace bilayer
 {
@@ -81,9 +80,9 @@ namespace bilayer
             // Per cell, the (k+1)^2 points of its patch with coordinates,
             // displacement and five stresses, compressed about to half.
             if (scene.output.write_vtu || scene.output.write_hdf5)
-              estimate.output += cells * (k + 1) * (k + 1) * 10 * 8 * 0.5 *
-                                 (scene.output.write_vtu + 0. +
-                                  scene.output.write_hdf5);
+              estimate.output +=
+                cells * (k + 1) * (k + 1) * 10 * 8 * 0.5 *
+                (scene.output.write_vtu + 0. + scene.output.write_hdf5);
           }
     return estimate;
   }
@@ -96,9 +95,9 @@ namespace bilayer
     if (!mesh.mesh_files.empty() ||
         (cycle > 0 && mesh.refinement == Refinement::adaptive))
       return {{0., 0.}};
-    const auto  &g      = scene.geometry;
-    const double factor = std::ldexp(1., cycle);
-    const double width  = g.x_max - g.x_min;
+    const auto           &g      = scene.geometry;
+    const double          factor = std::ldexp(1., cycle);
+    const double          width  = g.x_max - g.x_min;
     std::array<double, 2> cells;
     for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
       {
@@ -123,7 +122,7 @@ namespace bilayer
   double
   available_memory()
   {
-    double available = meminfo("MemAvailable");
+    double        available = meminfo("MemAvailable");
     struct rlimit limit;
     if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
       available = std::min(available, double(limit.rlim_cur));
@@ -146,9 +145,8 @@ namespace bilayer
     const auto &mesh = scene.mesh;
     // Structured cells of the last cycle; with adaptive refinement only the
     // first cycle's meshes are known.
-    const unsigned int last = mesh.refinement == Refinement::adaptive ?
-                                0 :
-                                mesh.n_cycles - 1;
+    const unsigned int last =
+      mesh.refinement == Refinement::adaptive ? 0 : mesh.n_cycles - 1;
     const auto cells = structured_cells(scene, last);
     if (cells[0] + cells[1] == 0)
       return;

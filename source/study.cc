@@ -2,12 +2,12 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <bilayer/tasks.h>
 #include <bilayer/active_set_solver.h>
 #include <bilayer/estimator.h>
 #include <bilayer/output.h>
 #include <bilayer/resources.h>
 #include <bilayer/study.h>
+#include <bilayer/tasks.h>
 
 #include <cmath>
 #include <filesystem>
@@ -158,7 +158,7 @@ namespace bilayer
       const ResourceEstimate need =
         estimate_resources(scene, record.minus.cells, record.plus.cells);
       record.memory_estimate_mib = need.memory / (1 << 20);
-      const double available = distribution.max(-available_memory());
+      const double available     = distribution.max(-available_memory());
       if (need.memory > -available)
         throw RunFailure(cycle,
                          "the meshes of this cycle (" +
@@ -179,7 +179,7 @@ namespace bilayer
     std::array<std::array<std::unique_ptr<FunctionParser<2>>, 4>, 2>
                                                       traction_owners;
     std::array<std::array<const Function<2> *, 4>, 2> traction;
-    Tasks                          setups;
+    Tasks                                             setups;
     for (const Layer layer : {Layer::first, Layer::second})
       if (scene.materials.has_layer(layer))
         {
@@ -275,9 +275,9 @@ namespace bilayer
 
     // A file that cannot be written (a full disk) stops every process
     // together, with the file and the reason.
-    const std::string &dir         = scene.output.directory;
+    const std::string &dir = scene.output.directory;
     std::string        write_error;
-    const auto         writing     = [&](const std::function<void()> &write) {
+    const auto         writing = [&](const std::function<void()> &write) {
       if (write_error.empty())
         try
           {
@@ -422,7 +422,7 @@ namespace bilayer
     // (u+ - u-).nu at the layer-1 nodes of the crack, with its position,
     // each as v = m 10^k, 1 <= |m| < 10, m with 8 digits (O(1) for numdiff).
     const auto scaled = [](const double v) {
-      int k = v == 0 ? 0 : int(std::floor(std::log10(std::abs(v))));
+      int    k = v == 0 ? 0 : int(std::floor(std::log10(std::abs(v))));
       double m = v / std::pow(10., k);
       if (std::abs(m) >= 9.99999995)
         m /= 10, ++k;

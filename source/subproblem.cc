@@ -251,25 +251,26 @@ namespace bilayer
         // (E = 1e308, coordinates of 1e+-300) show here, not as a
         // divergence of the outer solver.
         const std::string layer_entry =
-          "Materials/Layer " + std::string(layer() == Layer::first ? "1" : "2") +
-          "/Young's modulus";
+          "Materials/Layer " +
+          std::string(layer() == Layer::first ? "1" : "2") + "/Young's modulus";
         // Row sums, not only entries: the factorisation adds them up.
         AssertThrow(std::isfinite(system_matrix.linfty_norm()),
-                      ExcMessage("the stiffness matrix of subproblem " +
-                                 name() + " has entries that are not finite: " +
-                                 layer_entry +
-                                 " and the cell sizes (Geometry) leave the "
-                                 "range of double; state them in other units"));
+                    ExcMessage(
+                      "the stiffness matrix of subproblem " + name() +
+                      " has entries that are not finite: " + layer_entry +
+                      " and the cell sizes (Geometry) leave the "
+                      "range of double; state them in other units"));
         AssertThrow(std::isfinite(system_rhs.linfty_norm()) &&
                       std::isfinite(system_rhs.l1_norm()),
-                      ExcMessage("the load vector of subproblem " + name() +
-                                 " has entries that are not finite: the "
-                                 "tractions or prescribed displacements "
-                                 "(Loads) and the side lengths (Geometry) "
-                                 "leave the range of double; state them in "
-                                 "other units"));
+                    ExcMessage("the load vector of subproblem " + name() +
+                               " has entries that are not finite: the "
+                               "tractions or prescribed displacements "
+                               "(Loads) and the side lengths (Geometry) "
+                               "leave the range of double; state them in "
+                               "other units"));
         factorisation.initialize(system_matrix,
-                                 "the stiffness matrix of subproblem " + name());
+                                 "the stiffness matrix of subproblem " +
+                                   name());
       }
     factorisation_seconds = timer.wall_time();
   }

@@ -47,7 +47,7 @@ namespace bilayer
     }
 
   private:
-    dealii::Threads::TaskGroup<void>                  group;
+    dealii::Threads::TaskGroup<void>                 group;
     std::vector<std::shared_ptr<std::exception_ptr>> errors;
   };
 } // namespace bilayer
