@@ -294,6 +294,23 @@ else
   fail "failed write leaves the output directory unchanged" "exit status $rc"
 fi
 
+# An allocation that fails during the run (address space limited below
+# what the factorisations need): one FAILED line naming the memory, the
+# results so far in out.failed, the output directory unchanged; or, where
+# the estimate already sees that the scene cannot fit, one refusal.
+(ulimit -v 1000000; exec "$bilayer" "$prm" --set "Output/Output directory=out" \
+  --set "Mesh/Cells along Sigma=256" --set "Solver/Method=active set" > stdout 2> stderr)
+rc=$?
+if { [[ $rc -eq 2 ]] && grep -qF "FAILED: out of memory" stderr && [[ -d out.failed ]]; } \
+  || { [[ $rc -eq 1 && $(wc -l < stderr) -eq 1 ]] && grep -qF "of memory, but" stderr; }; then
+  [[ "$(snapshot)" == "$before" && -z $(find . -name '*.partial' -o -name '*.lock') ]] \
+    && echo "allocation failure ends the run cleanly: yes" \
+    || fail "allocation failure ends the run cleanly" "files changed"
+else
+  fail "allocation failure ends the run cleanly" "exit status $rc"
+fi
+rm -rf out.failed
+
 # A run that passes replaces bilayer's directory whole (the user's note
 # with it, as documented) and removes an earlier failed run's results;
 # blanks around --set values do not count.
