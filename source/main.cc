@@ -125,6 +125,10 @@ namespace
             command.parameter_file = arg;
           }
       }
+    AssertThrow(command.action != CommandLine::Action::print_parameters ||
+                  (command.parameter_file.empty() && command.overrides.empty()),
+                ExcMessage("--print-parameters prints every entry with its "
+                           "default and takes no parameter file or --set"));
     AssertThrow(command.action != CommandLine::Action::run ||
                   !command.parameter_file.empty(),
                 ExcMessage(std::string("no parameter file given (") +

@@ -6,7 +6,9 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
+#include <set>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -65,36 +67,63 @@ namespace bilayer
              has("interface-", ".csv");
     }
 
+    const std::string manifest_prefix = "file: ";
+    const std::string marker_text =
+      "This directory was written by bilayer. A later run into it replaces "
+      "it whole as long as it holds only the files listed here.\n";
+
     /**
-     * Whether bilayer may delete the directory @p path: it holds the
-     * marker, is empty, or holds only regular files with the names of
-     * bilayer's outputs. Otherwise @p foreign names one entry that is not
-     * bilayer's.
+     * Whether bilayer may delete the directory @p path: it is empty, or its
+     * marker lists every file in it (the marker of a committed directory
+     * lists the files the run wrote; a staging directory's marker lists
+     * none, which is enough for @p staging directories). Otherwise
+     * @p foreign names one entry that bilayer did not write.
      */
     bool
-    written_by_bilayer(const fs::path &path, std::string &foreign)
+    written_by_bilayer(const fs::path &path,
+                       const bool      staging,
+                       std::string    &foreign)
     {
       std::error_code error;
-      if (fs::is_regular_file(
-            fs::symlink_status(path / StagedDirectory::marker_name(), error)))
-        return true;
+      std::set<std::string> listed;
+      bool                  marked = false;
+      const fs::path        marker = path / StagedDirectory::marker_name();
+      if (fs::is_regular_file(fs::symlink_status(marker, error)))
+        {
+          std::ifstream in(marker);
+          std::string   line;
+          marked = std::getline(in, line) &&
+                   line.rfind("This directory was written by bilayer", 0) == 0;
+          while (marked && std::getline(in, line))
+            if (line.rfind(manifest_prefix, 0) == 0)
+              listed.insert(line.substr(manifest_prefix.size()));
+        }
+      bool output_names_only = true;
       for (fs::directory_iterator it(path, error), end; !error && it != end;
            it.increment(error))
         {
           const std::string name = it->path().filename().string();
-          if (!is_output_name(name) ||
-              !fs::is_regular_file(fs::symlink_status(it->path(), error)))
-            {
-              foreign = name;
-              return false;
-            }
+          output_names_only      = output_names_only && is_output_name(name);
+          if ((marked && name == StagedDirectory::marker_name()) ||
+              listed.count(name) > 0 || (marked && staging))
+            continue;
+          if (foreign.empty())
+            foreign = name;
         }
       if (error)
         {
           foreign = "(cannot list it: " + error.message() + ")";
           return false;
         }
-      return true;
+      if (!foreign.empty())
+        foreign = "'" + foreign + "'" +
+                  (!marked && output_names_only ?
+                     ", results of a bilayer version before the marker "
+                     "file " +
+                       std::string(StagedDirectory::marker_name()) +
+                       " or files named like them" :
+                     "");
+      return foreign.empty();
     }
 
     /// Whether @p ancestor is @p path or one of its parent directories
@@ -149,7 +178,9 @@ namespace bilayer
     if (error)
       refuse("cannot resolve '" + directory + "': " + error.message());
     final_path   = resolved.string();
-    staging_path = final_path + ".partial";
+    // staging_path is set once this run has created the directory: until
+    // then there is nothing of this run's to remove.
+    const std::string staging = final_path + ".partial";
     lock_path    = final_path + ".lock";
 
     // Nothing the run reads may be inside what it replaces.
@@ -183,26 +214,24 @@ namespace bilayer
         const std::string shown = "'" + directory + suffix + "'";
         if (suffix == ".lock")
           {
-            std::ifstream lock(path);
-            std::string   first;
-            std::getline(lock, first);
-            if (!fs::is_regular_file(status) ||
-                (!first.empty() && first.rfind("bilayer lock", 0) != 0))
+            if (!fs::is_regular_file(status))
               refuse(shown + " exists and is not a lock file of bilayer; "
                              "choose another directory");
-            continue;
+            continue; // its content is checked once it is locked
           }
         if (fs::is_symlink(status))
           refuse(shown + " is a symbolic link; choose another directory");
         if (!fs::is_directory(status))
           refuse(shown + " exists and is not a directory");
         std::string foreign;
-        if (!written_by_bilayer(path, foreign))
-          refuse(shown + " holds files that bilayer did not write ('" +
+        if (!written_by_bilayer(path,
+                                suffix != "" && suffix != ".failed",
+                                foreign))
+          refuse(shown + " holds files that bilayer did not write (" +
                  foreign +
-                 "'); a run replaces its output directory whole and only "
-                 "ever deletes directories it created: choose another "
-                 "directory");
+                 "); bilayer replaces an output directory only if it holds "
+                 "nothing but what a run of bilayer wrote: choose another "
+                 "directory or move the files");
       }
     if (fs::is_directory(resolved, error))
       {
@@ -216,37 +245,70 @@ namespace bilayer
                  "directory inside it");
       }
 
-    // One run at a time per directory.
+    // One run at a time per directory. Parent directories the run creates
+    // go again if it is refused.
+    for (fs::path p = resolved.parent_path();
+         !p.empty() && !fs::exists(fs::symlink_status(p, error));
+         p = p.parent_path())
+      {
+        created_parents.push_back(p.string());
+        if (p == p.root_path())
+          break;
+      }
     fs::create_directories(resolved.parent_path(), error);
     if (error)
-      refuse("cannot create '" + resolved.parent_path().string() +
-             "': " + error.message());
+      {
+        const std::string why = error.message();
+        release();
+        refuse("cannot create '" + resolved.parent_path().string() +
+               "': " + why);
+      }
+    const auto unlocked = [&](const std::string &why) {
+      if (lock_descriptor >= 0)
+        ::close(lock_descriptor);
+      lock_descriptor = -1;
+      release();
+      refuse(why);
+    };
     for (;;)
       {
-        lock_descriptor = ::open(lock_path.c_str(),
-                                 O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW,
-                                 0644);
+        // A lock file bilayer creates is bilayer's; one that exists must
+        // say so (a killed run's), and is locked before it is read.
+        lock_descriptor =
+          ::open(lock_path.c_str(),
+                 O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW,
+                 0644);
+        lock_created = lock_descriptor >= 0;
+        if (!lock_created && errno == EEXIST)
+          lock_descriptor =
+            ::open(lock_path.c_str(), O_RDWR | O_CLOEXEC | O_NOFOLLOW);
         if (lock_descriptor < 0)
-          refuse("cannot create the lock file '" + lock_path +
-                 "': " + std::strerror(errno));
+          {
+            if (errno == ENOENT)
+              continue; // removed by its holder in between
+            unlocked("cannot create the lock file '" + lock_path +
+                     "': " + std::strerror(errno));
+          }
+        const auto content = [&]() {
+          char          text[256] = {};
+          const ssize_t n = ::pread(lock_descriptor, text, sizeof(text) - 1, 0);
+          std::string   s(text, n > 0 ? n : 0);
+          while (!s.empty() && s.back() == '\n')
+            s.pop_back();
+          return s;
+        };
+        const std::string prefix = "bilayer lock: ";
         if (::flock(lock_descriptor, LOCK_EX | LOCK_NB) != 0)
           {
-            char          text[256] = {};
-            const ssize_t n =
-              ::pread(lock_descriptor, text, sizeof(text) - 1, 0);
-            ::close(lock_descriptor);
-            lock_descriptor = -1;
-            std::string holder(text, n > 0 ? n : 0);
-            while (!holder.empty() && holder.back() == '\n')
-              holder.pop_back();
-            const std::string prefix = "bilayer lock: ";
+            std::string holder = content();
             if (holder.rfind(prefix, 0) == 0)
               holder = holder.substr(prefix.size());
-            refuse("'" + directory + "' is being written by another run (" +
-                   (holder.empty() ?
-                      std::string("lock ") + in_quotes(lock_path) :
-                      holder) +
-                   "); wait for it to end or choose another directory");
+            lock_created = false;
+            unlocked("'" + directory + "' is being written by another run (" +
+                     (holder.empty() ?
+                        std::string("lock ") + in_quotes(lock_path) :
+                        holder) +
+                     "); wait for it to end or choose another directory");
           }
         // The holder before us may have removed the file after we opened
         // it: then lock the new one.
@@ -254,10 +316,18 @@ namespace bilayer
         if (::fstat(lock_descriptor, &held) == 0 &&
             ::stat(lock_path.c_str(), &named) == 0 &&
             held.st_ino == named.st_ino && held.st_dev == named.st_dev)
-          break;
+          {
+            if (!lock_created && content().rfind(prefix, 0) != 0)
+              unlocked("'" + directory + ".lock' exists and is not a lock "
+                       "file of bilayer; choose another directory");
+            break;
+          }
         ::close(lock_descriptor);
         lock_descriptor = -1;
       }
+    // From here on the lock file is bilayer's (created now, or a killed
+    // run's), and release() removes it.
+    lock_created = true;
     {
       char host[256] = {};
       ::gethostname(host, sizeof(host) - 1);
@@ -277,16 +347,16 @@ namespace bilayer
     // A staging or aside directory left by a killed run is stale now.
     for (const std::string suffix : {".partial", ".old", ".failed.old"})
       fs::remove_all(final_path + suffix, error);
-    fs::create_directory(staging_path, error);
+    fs::create_directory(staging, error);
     std::string problem;
     if (error)
-      problem = "cannot create '" + staging_path + "': " + error.message();
+      problem = "cannot create '" + staging + "': " + error.message();
     else
       {
+        staging_path = staging;
         // Directory permissions do not stop root: write a file too.
         std::ofstream marker(staging_path + "/" + marker_name());
-        marker << "This directory was written by bilayer; a later run into "
-                  "it replaces it whole.\n";
+        marker << marker_text;
         marker.flush();
         if (!marker)
           problem =
@@ -317,10 +387,16 @@ namespace bilayer
       {
         // Unlink while holding the lock: a run waiting for the same file
         // notices that the file it locked is gone and locks a new one.
-        ::unlink(lock_path.c_str());
+        if (lock_created)
+          ::unlink(lock_path.c_str());
         ::close(lock_descriptor);
         lock_descriptor = -1;
       }
+    // Parent directories created for a run that did not commit, if empty.
+    if (!committed)
+      for (const auto &p : created_parents)
+        fs::remove(p, error);
+    created_parents.clear();
   }
 
 
@@ -330,6 +406,26 @@ namespace bilayer
     const std::string target = success ? final_path : final_path + ".failed";
     const std::string old    = target + ".old";
     std::error_code   error;
+    // The marker lists what the run wrote: a later run replaces the
+    // directory only while it holds nothing else.
+    {
+      std::vector<std::string> names;
+      for (fs::directory_iterator it(staging_path, error), end;
+           !error && it != end;
+           it.increment(error))
+        names.push_back(it->path().filename().string());
+      std::sort(names.begin(), names.end());
+      errno = 0;
+      std::ofstream marker(staging_path + "/" + marker_name());
+      marker << marker_text;
+      for (const auto &name : names)
+        if (name != marker_name())
+          marker << manifest_prefix << name << "\n";
+      marker.close();
+      if (!marker || error)
+        refuse("cannot write '" + staging_path + "/" + marker_name() +
+               "': " + (error ? error.message() : std::strerror(errno)));
+    }
     fs::remove_all(old, error);
     bool moved_aside = false;
     if (fs::exists(fs::symlink_status(target, error)))
@@ -357,7 +453,7 @@ namespace bilayer
         std::string       foreign;
         const std::string failed = final_path + ".failed";
         if (fs::is_directory(fs::symlink_status(failed, error)) &&
-            written_by_bilayer(failed, foreign))
+            written_by_bilayer(failed, false, foreign))
           fs::remove_all(failed, error);
       }
     return target;

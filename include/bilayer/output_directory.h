@@ -78,7 +78,10 @@ namespace bilayer
 
     std::string final_path, staging_path, lock_path;
     int         lock_descriptor = -1;
+    bool        lock_created    = false;
     bool        committed       = false;
+    /// Parent directories created for this run, deepest first.
+    std::vector<std::string> created_parents;
   };
 } // namespace bilayer
 

@@ -57,13 +57,14 @@ check() {
   grep -qF -- "$expect" stderr || why="$why; '$expect' not named"
   ! grep -qiE "stacktrace|terminate called|^-{5,}" stderr || why="$why; backtrace"
   [[ "$(snapshot)" == "$before" ]] || why="$why; files changed"
-  [[ -z $(find . -name '*.partial' -o -name '*.lock') ]] || why="$why; staging or lock left behind"
+  [[ -z $(find . \( -name '*.partial' -o -name '*.lock' \) ! -path ./empty.lock) ]] || why="$why; staging or lock left behind"
   if [[ -z $why ]]; then echo "$name: yes"; else fail "$name" "$why"; fi
 }
 run() {
   local name=$1 expect=$2
   shift 2
-  check "$name" "$expect" "$prm" --set "Output/Output directory=out" --set "$@"
+  check "$name" "$expect" "$prm" --set "Output/Output directory=fresh/out" --set "$@"
+  [[ ! -e fresh ]] || fail "$name" "'fresh' left behind"
 }
 
 # Parameter files.
@@ -95,6 +96,7 @@ check "no arguments" "no parameter file given"
 check "two parameter files" "more than one parameter file given" "$prm" "$prm"
 check "--set without a value" "--set needs a value" "$prm" --set
 check "unknown option" "unknown option '--frobnicate'" "$prm" --frobnicate
+check "--print-parameters with a file" "--print-parameters prints every entry with its default and takes no parameter file" --print-parameters "$prm"
 check "--set without '='" "--set expects 'Section/Entry=value'" "$prm" --set "Mesh/Cells along Sigma"
 check "--set of an unknown entry" "--set Mesh/Cels along Sigma=8" "$prm" --set "Mesh/Cels along Sigma=8"
 
@@ -223,6 +225,18 @@ for dir in "." ".." "./" "$work" "$work/." "$work/" "sub/.." "../$(basename "$wo
 done
 check "output directory holding foreign files" "'keep' holds files that bilayer did not write" \
   "$prm" --set "Output/Output directory=keep"
+check "output directory holding a file added to bilayer's" "'out' holds files that bilayer did not write ('notes.txt')" \
+  "$prm" --set "Output/Output directory=out"
+mkdir -p lookalike && echo '{"mine": 1}' > lookalike/summary.json && echo 'a,b' > lookalike/table.csv
+: > empty.lock
+before=$(snapshot)
+check "output directory holding files named like bilayer's" "or files named like them); bilayer replaces an output directory only if" \
+  "$prm" --set "Output/Output directory=lookalike"
+check "a foreign (empty) DIR.lock" "'empty.lock' exists and is not a lock file of bilayer" \
+  "$prm" --set "Output/Output directory=empty"
+check "refusal after staging leaves no created parent" "Mesh/Cells along Sigma = 5 does not make the crack end point" \
+  "$prm" --set "Output/Output directory=new/deeper/out" --set "Mesh/Cells along Sigma=5"
+[[ ! -e new ]] || fail "refusal after staging leaves no created parent" "'new' left behind"
 check "output directory holding foreign subdirectory" "'keep/sub/..' holds files that bilayer did not write" \
   "$prm" --set "Output/Output directory=keep/sub/.."
 check "output directory through a symbolic link" "is a symbolic link" "$prm" --set "Output/Output directory=link_to_keep"
@@ -265,6 +279,7 @@ else
   cat first.out
 fi
 rm -rf busy first.out
+rm out/notes.txt
 before=$(snapshot)
 
 # A run that fails its checks (iteration limit): exit 2, the output
@@ -288,7 +303,7 @@ before=$(snapshot)
   --set "Mesh/Cells along Sigma=128" > stdout 2> stderr)
 rc=$?
 if [[ $rc -eq 1 && $(wc -l < stderr) -eq 1 ]] && grep -qE "bilayer: error: writing the results of cycle 0 failed: cannot write '.*': File too large" stderr \
-  && [[ "$(snapshot)" == "$before" && -z $(find . -name '*.partial' -o -name '*.lock') ]]; then
+  && [[ "$(snapshot)" == "$before" && -z $(find . \( -name '*.partial' -o -name '*.lock' \) ! -path ./empty.lock) ]]; then
   echo "failed write leaves the output directory unchanged: yes"
 else
   fail "failed write leaves the output directory unchanged" "exit status $rc"
@@ -303,7 +318,7 @@ fi
 rc=$?
 if { [[ $rc -eq 2 ]] && grep -qF "FAILED: out of memory" stderr && [[ -d out.failed ]]; } \
   || { [[ $rc -eq 1 && $(wc -l < stderr) -eq 1 ]] && grep -qF "of memory, but" stderr; }; then
-  [[ "$(snapshot)" == "$before" && -z $(find . -name '*.partial' -o -name '*.lock') ]] \
+  [[ "$(snapshot)" == "$before" && -z $(find . \( -name '*.partial' -o -name '*.lock' \) ! -path ./empty.lock) ]] \
     && echo "allocation failure ends the run cleanly: yes" \
     || fail "allocation failure ends the run cleanly" "files changed"
 else
@@ -311,13 +326,13 @@ else
 fi
 rm -rf out.failed
 
-# A run that passes replaces bilayer's directory whole (the user's note
-# with it, as documented) and removes an earlier failed run's results;
-# blanks around --set values do not count.
+# A run that passes replaces bilayer's directory whole (the user's note is
+# gone now), and removes an earlier failed run's results; blanks around --set
+# values do not count.
 "$bilayer" "$prm" --set "Output/Output directory=out" --set "Solver/Maximum iterations=10" > /dev/null 2>&1
 "$bilayer" "$prm" --set "Output/Output directory = out " --set "Solver/Method = active set" > stdout 2> stderr
 rc=$?
-if [[ $rc -eq 0 && -f out/solution.pvd && -f out/.bilayer-output && ! -e out/notes.txt && ! -e out.partial && ! -e out.failed && ! -e "out " ]] \
+if [[ $rc -eq 0 && -f out/solution.pvd && -f out/.bilayer-output && ! -e out.partial && ! -e out.failed && ! -e "out " ]] \
   && grep -q '"solver": "active set"' out/summary.json; then
   echo "passing run replaces the output directory: yes"
 else
