@@ -2,11 +2,11 @@
 
 #include <bilayer/output_directory.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
-#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sys/file.h>
@@ -84,7 +84,7 @@ namespace bilayer
                        const bool      staging,
                        std::string    &foreign)
     {
-      std::error_code error;
+      std::error_code       error;
       std::set<std::string> listed;
       bool                  marked = false;
       const fs::path        marker = path / StagedDirectory::marker_name();
@@ -177,11 +177,11 @@ namespace bilayer
     const fs::path resolved = fs::weakly_canonical(absolute, error);
     if (error)
       refuse("cannot resolve '" + directory + "': " + error.message());
-    final_path   = resolved.string();
+    final_path = resolved.string();
     // staging_path is set once this run has created the directory: until
     // then there is nothing of this run's to remove.
     const std::string staging = final_path + ".partial";
-    lock_path    = final_path + ".lock";
+    lock_path                 = final_path + ".lock";
 
     // Nothing the run reads may be inside what it replaces.
     std::vector<std::pair<fs::path, std::string>> protected_paths;
@@ -227,8 +227,7 @@ namespace bilayer
         if (!written_by_bilayer(path,
                                 suffix != "" && suffix != ".failed",
                                 foreign))
-          refuse(shown + " holds files that bilayer did not write (" +
-                 foreign +
+          refuse(shown + " holds files that bilayer did not write (" + foreign +
                  "); bilayer replaces an output directory only if it holds "
                  "nothing but what a run of bilayer wrote: choose another "
                  "directory or move the files");
@@ -318,7 +317,8 @@ namespace bilayer
             held.st_ino == named.st_ino && held.st_dev == named.st_dev)
           {
             if (!lock_created && content().rfind(prefix, 0) != 0)
-              unlocked("'" + directory + ".lock' exists and is not a lock "
+              unlocked("'" + directory +
+                       ".lock' exists and is not a lock "
                        "file of bilayer; choose another directory");
             break;
           }

@@ -292,6 +292,10 @@ namespace bilayer
             write_error = e.what();
           }
     };
+    // (Drivers may call run_cycle() without run().)
+    if (distribution.is_root())
+      writing([&]() { std::filesystem::create_directories(dir); });
+    distribution.barrier();
     if (scene.output.write_vtu || scene.output.write_hdf5)
       writing(
         [&]() { write_solution(dir, cycle, views, w, scene.output, outputs); });

@@ -21,6 +21,10 @@
 // of the contact problem is positively homogeneous, so doubling the loads
 // doubles every displacement. Example 2 is mirror symmetric in x: the
 // normal opening is even, the tangential displacement odd.
+// The lines "energy Pi" and "largest crack opening" that Study prints are
+// the numbers of tests/prm_references.cc (scenes partial_closure,
+// partial_closure_linear, doubled load, full_opening: the same discrete
+// problems), which checks that this .output holds them.
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -85,13 +89,13 @@ namespace
     DoFTools::make_sparsity_pattern(dofs, dsp);
     SparsityPattern pattern;
     pattern.copy_from(dsp);
-    SparseMatrix<double> K(pattern);
-    FEValues<2>          fe_values(sub.mapping(),
+    SparseMatrix<double>                 K(pattern);
+    FEValues<2>                          fe_values(sub.mapping(),
                           sub.fe(),
                           QGauss<2>(2),
                           update_gradients | update_JxW_values);
-    const unsigned int   n = sub.fe().n_dofs_per_cell();
-    FullMatrix<double>   cell_matrix(n, n);
+    const unsigned int                   n = sub.fe().n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
     std::vector<types::global_dof_index> local(n);
     for (const auto &cell : dofs.active_cell_iterators())
       {
@@ -118,7 +122,7 @@ namespace
     DoFTools::map_dofs_to_support_points(sub.mapping(),
                                          sub.dof_handler(),
                                          points);
-    std::vector<bool> y_component(sub.n_dofs());
+    std::vector<bool>                    y_component(sub.n_dofs());
     std::vector<types::global_dof_index> local(sub.fe().n_dofs_per_cell());
     for (const auto &cell : sub.dof_handler().active_cell_iterators())
       {
@@ -147,22 +151,22 @@ main()
   const std::vector<double> open  = opening(contact);
   const double scale = sigma.displacement_scale(contact.solutions());
 
-  bool              nonpenetration = true;
-  double            max_open = 0, complementarity = 0;
+  bool   nonpenetration = true;
+  double max_open = 0, complementarity = 0;
   // The contact force at each crack node from the residual of u+ and v+.
   const Vector<double> Ku = stiffness_times(contact, 1),
                        Kv = stiffness_times(contact, 3);
-  std::vector<double>  force(sigma.n_nodes(), 0.);
-  double               max_force = 0;
+  std::vector<double> force(sigma.n_nodes(), 0.);
+  double              max_force = 0;
   for (unsigned int a = 0; a < sigma.n_nodes(); ++a)
     if (sigma.node_on_crack(a))
       {
         const double x = sigma.node_position(a);
-        force[a]       = Ku(sigma_y_dof(contact, 1, x)) +
-                   Kv(sigma_y_dof(contact, 3, x));
-        max_force      = std::max(max_force, std::abs(force[a]));
+        force[a] =
+          Ku(sigma_y_dof(contact, 1, x)) + Kv(sigma_y_dof(contact, 3, x));
+        max_force = std::max(max_force, std::abs(force[a]));
       }
-  bool compressive = max_force > 0, force_is_multiplier = true;
+  bool              compressive = max_force > 0, force_is_multiplier = true;
   bool              left_open = true, right_closed_somewhere = false;
   std::vector<bool> closed(sigma.n_nodes(), false);
   for (unsigned int a = 0; a < sigma.n_nodes(); ++a)
@@ -171,16 +175,16 @@ main()
         const double mu_c = contact.multipliers().block(0)(2 * a + 1);
         // D_a: half the adjacent segments (lumped, Q1: all nodes are
         // vertices).
-        const double D_a = 0.5 * (sigma.node_position(a + 1) -
-                                  sigma.node_position(a - 1));
-        compressive      = compressive && force[a] >= -1e-8 * max_force;
+        const double D_a =
+          0.5 * (sigma.node_position(a + 1) - sigma.node_position(a - 1));
+        compressive = compressive && force[a] >= -1e-8 * max_force;
         force_is_multiplier =
           force_is_multiplier &&
           std::abs(force[a] - D_a * mu_c) <= 1e-6 * max_force;
-        nonpenetration    = nonpenetration && open[a] >= -1e-9 * scale;
-        max_open          = std::max(max_open, open[a]);
-        complementarity   = std::max(complementarity, mu_c * std::abs(open[a]));
-        closed[a]         = mu_c > 0;
+        nonpenetration  = nonpenetration && open[a] >= -1e-9 * scale;
+        max_open        = std::max(max_open, open[a]);
+        complementarity = std::max(complementarity, mu_c * std::abs(open[a]));
+        closed[a]       = mu_c > 0;
         if (sigma.node_position(a) < 0)
           left_open = left_open && open[a] > 0.1 * scale;
         if (sigma.node_position(a) > 0 && closed[a])
@@ -190,8 +194,8 @@ main()
   std::cout << "contact force from the residual (K w)_y of u+ and v+ >= "
                "-1e-8 max at every crack node: "
             << yes(compressive) << std::endl
-            << "and equal to D_a mu_c to 1e-6 max: "
-            << yes(force_is_multiplier) << std::endl
+            << "and equal to D_a mu_c to 1e-6 max: " << yes(force_is_multiplier)
+            << std::endl
             << "opening >= -1e-9 * displacement scale: " << yes(nonpenetration)
             << std::endl
             << "max mu_c |opening| <= 1e-9 * max mu * scale: "

@@ -29,6 +29,11 @@
 // elastic body (u- and u+ glued off the crack) with non-penetration on the
 // crack, mu_c(a) = r(u+_y(a)) / D_a; bilayer builds only the layer-1
 // subproblems and the crack and gluing multipliers.
+//
+// The lines "energy Pi" and "largest crack opening" that Study prints: for
+// two layers the numbers of tests/prm_references.cc (scene partial_closure,
+// the same discrete problem; it checks this .output), for one layer those of
+// the reference here (printed below; relative differences asserted).
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>

@@ -13,6 +13,9 @@
 // meshes. The two discrete problems are identical, so only the error of the
 // Uzawa iteration (stopped at relative multiplier change 1e-10) remains.
 //
+// The line "energy Pi" that Study prints is the direct solution's energy
+// (printed below; relative difference < 1e-8 asserted).
+//
 // theta = 50: on this coarse mesh the stability threshold of the glued
 // problem lies between 60 and 65 (theta = 65, the paper's value, diverges).
 

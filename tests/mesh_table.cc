@@ -7,6 +7,8 @@
 // 2 V - B - 2 triangles (Euler). Structured quadrilaterals with n cells
 // along Sigma and n/2 across each half: P = n + 1, M = 4 n, n^2/2 cells and
 // n^2/2 + 3n/2 + 1 vertices per half, h = 2/n.
+// The contract scene has no loads: its energy and crack opening (the lines
+// "energy Pi" and "largest crack opening" of Study) are exactly 0.
 
 #include <deal.II/grid/tria.h>
 

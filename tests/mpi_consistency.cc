@@ -3,7 +3,8 @@
 // traces on Sigma travel. Run by 1, 2 and 4 processes (the .mpirun=N
 // outputs), every scene must give the serial run's iteration counts and
 // the serial run's numbers to 1e-10 relative: the energy, the residuals of
-// the contact conditions, the multipliers and the crack opening. The serial
+// the contact conditions (each relative to its own size, not to 1: they are
+// 1e-8 and less themselves), the multipliers and the crack opening. The serial
 // run is a Study of the first process alone (MPI_COMM_SELF).
 //
 // Scenes: Example 1 with the paper's Uzawa iteration (its energy-norm rule
@@ -19,7 +20,8 @@
 // (DistributedSystem: METIS partition, Trilinos matrices, MUMPS; KLU in an
 // extra Uzawa scene), v- and v+ have one owner each; the solutions must
 // agree with the serial ones to 1e-8 (another direct solver: rounding
-// differs).
+// differs), the residuals to 1e-3 of themselves unless both are rounding
+// noise (below 1e-10).
 
 #include <deal.II/base/mpi.h>
 
@@ -28,7 +30,10 @@
 #include <bilayer/study.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
@@ -39,10 +44,12 @@ using namespace bilayer;
 
 namespace
 {
+  /// |a - b| relative to the size of the quantity itself (0 if both are 0).
   double
-  relative(const double a, const double b, const double scale)
+  relative(const double a, const double b)
   {
-    return std::abs(a - b) / std::max(scale, 1e-300);
+    const double size = std::max(std::abs(a), std::abs(b));
+    return size > 0 ? std::abs(a - b) / size : 0.;
   }
 
   void
@@ -70,7 +77,8 @@ namespace
       return;
 
     bool   same_counts = study.records().size() == reference->records().size();
-    double worst       = 0;
+    double worst = 0, worst_residual = 0;
+    bool   residuals_agree = true;
     for (unsigned int c = 0; same_counts && c < study.records().size(); ++c)
       {
         const CycleRecord &a = reference->records()[c];
@@ -81,22 +89,50 @@ namespace
           a.result.subdomain_solves == b.result.subdomain_solves &&
           a.result.linear_iterations == b.result.linear_iterations &&
           a.dofs == b.dofs && a.multipliers == b.multipliers;
+        // Each quantity relative to its own size: the residuals are
+        // 1e-19 ... 1e-8 themselves, so a tolerance relative to 1 (or to
+        // the displacement scale) would accept any wrong residual. With at
+        // most 4 processes the runs are bit-identical: every quantity must
+        // agree to 1e-10 of itself. Shared subproblems (another direct
+        // solver) change the solution by rounding: the energy and the
+        // scales must agree to 1e-8 of themselves, the residuals to 1e-3 of
+        // themselves unless both are rounding noise (after the active-set
+        // method they are 1e-19 ... 1e-14 serial, up to 5e-12 with MUMPS):
+        // below 1e-10 (1e-4 of the acceptance tolerance; for the
+        // interpenetration 1e-10 displacement scales).
         const InterfaceReport &p = a.report, &q = b.report;
         const double           u = p.displacement_scale;
         for (const double d :
-             {relative(a.energy, b.energy, std::abs(a.energy)),
-              relative(a.theta, b.theta, std::abs(a.theta) + 1e-300),
-              relative(p.displacement_scale, q.displacement_scale, u),
-              relative(p.max_penetration, q.max_penetration, u),
-              relative(p.relative_constraint_violation,
-                       q.relative_constraint_violation,
-                       1.),
-              relative(p.kkt.value(), q.kkt.value(), 1.),
-              relative(p.complementarity, q.complementarity, 1.),
+             {relative(a.energy, b.energy),
+              relative(a.theta, b.theta),
+              relative(p.displacement_scale, q.displacement_scale),
               relative(p.max_multiplier_over_bound,
-                       q.max_multiplier_over_bound,
-                       1.)})
+                       q.max_multiplier_over_bound)})
           worst = std::max(worst, d);
+        const std::array<std::array<double, 3>, 4> residuals = {
+          {{p.max_penetration, q.max_penetration, 1e-10 * u},
+           {p.relative_constraint_violation,
+            q.relative_constraint_violation,
+            1e-10},
+           {p.kkt.value(), q.kkt.value(), 1e-10},
+           {p.complementarity, q.complementarity, 1e-10}}};
+        for (const auto &r : residuals)
+          {
+            worst_residual = std::max(worst_residual, relative(r[0], r[1]));
+            residuals_agree =
+              residuals_agree &&
+              (relative(r[0], r[1]) <= 1e-3 ||
+               std::max(std::abs(r[0]), std::abs(r[1])) <= r[2]);
+          }
+        if (std::getenv("BILAYER_TEST_DIAGNOSTICS") != nullptr)
+          {
+            std::cerr << name << " cycle " << c << std::setprecision(3)
+                      << ": scales " << worst << ", residuals (serial, "
+                      << "parallel):";
+            for (const auto &r : residuals)
+              std::cerr << " (" << r[0] << ", " << r[1] << ")";
+            std::cerr << std::endl;
+          }
       }
 
     // The final multipliers and crack opening.
@@ -122,7 +158,7 @@ namespace
       std::cout << name << ": " << study.records().size()
                 << " cycles, converged and same iteration counts: "
                 << yes(same_counts) << "; energy and residuals within 1e-10: "
-                << yes(worst <= 1e-10)
+                << yes(worst <= 1e-10 && worst_residual <= 1e-10)
                 << "; multipliers within 1e-10: " << yes(mu_difference <= 1e-10)
                 << "; crack opening within 1e-10: "
                 << yes(open_difference <= 1e-10) << std::endl;
@@ -137,8 +173,9 @@ namespace
           converged = converged && record.accepted();
         std::cout << name << ": " << study.records().size()
                   << " cycles, converged: " << yes(converged)
-                  << "; energy and residuals within 1e-8: "
-                  << yes(worst <= 1e-8)
+                  << "; energy within 1e-8, residuals within 1e-3 "
+                     "(or both below 1e-10): "
+                  << yes(worst <= 1e-8 && residuals_agree)
                   << "; multipliers within 1e-8: " << yes(mu_difference <= 1e-8)
                   << "; crack opening within 1e-8: "
                   << yes(open_difference <= 1e-8) << std::endl;

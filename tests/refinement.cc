@@ -7,6 +7,9 @@
 // cannot increase under refinement; for the singular solution it decreases
 // strictly, with decreasing decrements (Pi_h -> Pi). The mesh data of the
 // table follow from the construction: h halves, P = 8 2^k + 1.
+// The lines "energy Pi" and "largest crack opening" that Study prints are
+// the numbers of tests/prm_references.cc (scenes "refinement, ..."), which
+// checks that this .output holds them.
 
 #include <bilayer/parameters.h>
 #include <bilayer/study.h>
