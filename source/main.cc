@@ -222,6 +222,23 @@ main(int argc, char **argv)
             output =
               std::make_unique<bilayer::StagedDirectory>(scene.output.directory,
                                                          inputs);
+            // The files of all cycles must fit on the file system (known
+            // in advance for structured meshes refined globally).
+            double files = 0;
+            for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
+              {
+                const auto cells = bilayer::structured_cells(scene, cycle);
+                files += bilayer::estimate_resources(scene, cells[0], cells[1])
+                           .output;
+              }
+            AssertThrow(files <= output->free_bytes(),
+                        ExcMessage(
+                          "Output/Output directory: the results of all "
+                          "cycles need about " +
+                          bilayer::format_bytes(files) + ", but " +
+                          bilayer::format_bytes(output->free_bytes()) +
+                          " are free on its file system: make room, choose "
+                          "another directory or set Output/Write VTU = false"));
             prm.print_parameters(output->staging() + "/used_parameters.prm",
                                  ParameterHandler::ShortPRM);
             problem = output->staging();

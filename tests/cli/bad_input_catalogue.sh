@@ -309,6 +309,30 @@ else
   fail "failed write leaves the output directory unchanged" "exit status $rc"
 fi
 
+# A full disk (a small tmpfs, where this machine lets the test mount one):
+# results that cannot fit are refused before the run; a disk that fills
+# during the writes ends the run with one line naming the file and "No
+# space left on device", and nothing staged.
+mkdir -p small_disk
+if mount -t tmpfs -o size=88k tmpfs small_disk 2> /dev/null; then
+  trap 'umount "$work/small_disk" 2> /dev/null; rm -rf "$work"' EXIT
+  check "results larger than the free space" "are free on its file system" \
+    "$prm" --set "Output/Output directory=small_disk/out" --set "Mesh/Cells along Sigma=64"
+  "$bilayer" "$prm" --set "Output/Output directory=small_disk/out" > stdout 2> stderr
+  rc=$?
+  if [[ $rc -eq 1 && $(wc -l < stderr) -eq 1 ]] && grep -qE "bilayer: error: writing the results of cycle 0 failed: cannot write '.*': No space left on device" stderr \
+    && [[ -z $(ls -A small_disk) ]]; then
+    echo "disk full during the writes: yes"
+  else
+    fail "disk full during the writes" "exit status $rc"
+  fi
+  umount small_disk
+else
+  echo "full disk: skipped (no tmpfs mount here)"
+fi
+rmdir small_disk
+before=$(snapshot)
+
 # An allocation that fails during the run (address space limited below
 # what the factorisations need): one FAILED line naming the memory, the
 # results so far in out.failed, the output directory unchanged; or, where
