@@ -316,6 +316,8 @@ fi
 mkdir -p small_disk
 if mount -t tmpfs -o size=88k tmpfs small_disk 2> /dev/null; then
   trap 'umount "$work/small_disk" 2> /dev/null; rm -rf "$work"' EXIT
+  check "output directory is a mount point" "'small_disk' is a mount point" \
+    "$prm" --set "Output/Output directory=small_disk"
   check "results larger than the free space" "are free on its file system" \
     "$prm" --set "Output/Output directory=small_disk/out" --set "Mesh/Cells along Sigma=64"
   "$bilayer" "$prm" --set "Output/Output directory=small_disk/out" > stdout 2> stderr
