@@ -99,24 +99,13 @@ subsection Output
 end
 )";
 
-  // The data of Example 1, written out here rather than taken from the
-  // Scene, so that the reference does not share the library's parsing.
-  constexpr double E[2]        = {200., 112.};
-  constexpr double poisson[2]  = {0.28, 0.32};
+  // The data of Example 1 (tests/reference.h).
+  using example1::E;
+  using example1::lame_lambda;
+  using example1::lame_mu;
+  using example1::poisson;
   constexpr double crack_start = -0.5, crack_end = 0.5;
   constexpr double tol = 1e-10;
-
-  double
-  lame_mu(const unsigned int l)
-  {
-    return E[l] / (2. * (1. + poisson[l]));
-  }
-
-  double
-  lame_lambda(const unsigned int l)
-  {
-    return 2. * poisson[l] * lame_mu(l) / (1. - 2. * poisson[l]);
-  }
 
   /// Vertical traction of layer 1: (0, c x) on the bottom, (0, -c x) on top.
   Tensor<1, 2>

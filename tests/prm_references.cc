@@ -185,23 +185,12 @@ namespace
      3,
      {"refinement"}}};
 
-  // paper.md §5, in GPa.
-  constexpr double E[2]       = {200., 112.};
-  constexpr double poisson[2] = {0.28, 0.32};
-  constexpr double crack[2]   = {-0.5, 0.5};
-  constexpr double tol        = 1e-10;
-
-  double
-  lame_mu(const unsigned int l)
-  {
-    return E[l] / (2. * (1. + poisson[l]));
-  }
-
-  double
-  lame_lambda(const unsigned int l)
-  {
-    return 2. * poisson[l] * lame_mu(l) / (1. - 2. * poisson[l]);
-  }
+  using example1::E;
+  using example1::lame_lambda;
+  using example1::lame_mu;
+  using example1::poisson;
+  constexpr double crack[2] = {-0.5, 0.5};
+  constexpr double tol      = 1e-10;
 
   long long
   key_of(const double x)

@@ -16,6 +16,27 @@ inline const char *const example1_loads =
   "  set Traction on bottom side = 0; c*x\n"
   "  set Traction on top side = 0; -c*x\n end\nend\n";
 
+/// The materials of Example 1 (paper.md §5, in GPa), written out here rather
+/// than taken from the Scene, so that the references do not share the
+/// library's parsing.
+namespace example1
+{
+  constexpr double E[2]       = {200., 112.};
+  constexpr double poisson[2] = {0.28, 0.32};
+
+  inline double
+  lame_mu(const unsigned int l)
+  {
+    return E[l] / (2. * (1. + poisson[l]));
+  }
+
+  inline double
+  lame_lambda(const unsigned int l)
+  {
+    return 2. * poisson[l] * lame_mu(l) / (1. - 2. * poisson[l]);
+  }
+} // namespace example1
+
 /// cell_matrix += int 2 mu eps(phi_i):eps(phi_j) + lambda div phi_i div phi_j
 inline void
 add_elasticity_matrix(const dealii::FEValues<2>                &fe_values,

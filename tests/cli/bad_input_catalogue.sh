@@ -120,7 +120,7 @@ run "mesh file is a directory" "Mesh/Mesh files: cannot open 'mesh_dir_minus': n
 # Broken meshes (Gmsh format 2.2, three columns of two triangles per half
 # square): a slit (cells that do not share an interior edge) and an
 # overlap (a cell listed twice) are refused when read.
-python3 - slit <<'PYTHON'
+cat > make_mesh.py <<'PYTHON'
 import sys
 def msh(nodes, tris, path):
     with open(path, 'w') as f:
@@ -152,38 +152,8 @@ for side, (y0, y1) in (("minus", (-1, 0)), ("plus", (0, 1))):
     n, t = half(y0, y1, kind if side == "minus" else "valid")
     msh(n, t, "%s_%s.msh" % (kind, side))
 PYTHON
-python3 - overlap <<'PYTHON'
-import sys
-def msh(nodes, tris, path):
-    with open(path, 'w') as f:
-        f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % len(nodes))
-        for i, (x, y) in enumerate(nodes):
-            f.write("%d %r %r 0\n" % (i + 1, x, y))
-        f.write("$EndNodes\n$Elements\n%d\n" % len(tris))
-        for i, t in enumerate(tris):
-            f.write("%d 2 2 1 1 %d %d %d\n" % (i + 1, t[0] + 1, t[1] + 1, t[2] + 1))
-        f.write("$EndElements\n")
-def half(y0, y1, kind):
-    xs = [-1, -0.5, 0.5, 1]
-    nodes = [(x, y0) for x in xs] + [(x, y1) for x in xs]
-    tris = []
-    for i in range(3):
-        a, b, c, d = i, i + 1, 4 + i + 1, 4 + i
-        tris += [(a, b, c), (a, c, d)]
-    if kind == "slit":
-        # column 0 gets its own copies of the nodes at x = -0.5
-        nodes += [(-0.5, y0), (-0.5, y1)]
-        tris[0] = (0, 8, 9); tris[1] = (0, 9, 4)
-    if kind == "inverted":
-        a, b, c = tris[2]; tris[2] = (a, c, b)
-    if kind == "overlap":
-        tris.append(tris[0])
-    return nodes, tris
-kind = sys.argv[1]
-for side, (y0, y1) in (("minus", (-1, 0)), ("plus", (0, 1))):
-    n, t = half(y0, y1, kind if side == "minus" else "valid")
-    msh(n, t, "%s_%s.msh" % (kind, side))
-PYTHON
+python3 make_mesh.py slit
+python3 make_mesh.py overlap
 before=$(snapshot)
 run "mesh with a slit" "has a boundary face inside its subdomain at (-0.5, -0.5)" "Mesh/Mesh files=slit_{side}.msh"
 run "mesh with overlapping cells" "overlap_minus.msh' does not fill (-1, 1) x (-1, 0)" "Mesh/Mesh files=overlap_{side}.msh"
