@@ -100,10 +100,10 @@ end
 )";
 
   // The data of Example 1 (tests/reference.h).
-  using example1::E;
-  using example1::lame_lambda;
-  using example1::lame_mu;
-  using example1::poisson;
+  using example1_materials::E;
+  using example1_materials::lame_lambda;
+  using example1_materials::lame_mu;
+  using example1_materials::poisson;
   constexpr double crack_start = -0.5, crack_end = 0.5;
   constexpr double tol = 1e-10;
 

@@ -185,10 +185,10 @@ namespace
      3,
      {"refinement"}}};
 
-  using example1::E;
-  using example1::lame_lambda;
-  using example1::lame_mu;
-  using example1::poisson;
+  using example1_materials::E;
+  using example1_materials::lame_lambda;
+  using example1_materials::lame_mu;
+  using example1_materials::poisson;
   constexpr double crack[2] = {-0.5, 0.5};
   constexpr double tol      = 1e-10;
 

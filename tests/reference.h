@@ -19,7 +19,7 @@ inline const char *const example1_loads =
 /// The materials of Example 1 (paper.md §5, in GPa), written out here rather
 /// than taken from the Scene, so that the references do not share the
 /// library's parsing.
-namespace example1
+namespace example1_materials
 {
   constexpr double E[2]       = {200., 112.};
   constexpr double poisson[2] = {0.28, 0.32};
@@ -35,7 +35,7 @@ namespace example1
   {
     return 2. * poisson[l] * lame_mu(l) / (1. - 2. * poisson[l]);
   }
-} // namespace example1
+} // namespace example1_materials
 
 /// cell_matrix += int 2 mu eps(phi_i):eps(phi_j) + lambda div phi_i div phi_j
 inline void
