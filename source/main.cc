@@ -76,16 +76,6 @@ namespace
                                      "MV2_COMM_WORLD_RANK"}));
   }
 
-  /// The processes the MPI launcher started (1 without one).
-  unsigned int
-  launch_size()
-  {
-    return std::max(1,
-                    launcher_number({"OMPI_COMM_WORLD_SIZE",
-                                     "PMI_SIZE",
-                                     "MV2_COMM_WORLD_SIZE"}));
-  }
-
   /// Read the command line; mistakes throw a one-line message.
   CommandLine
   parse_command_line(const int argc, char **argv)
@@ -173,7 +163,6 @@ main(int argc, char **argv)
         }
       scene =
         bilayer::read_scene(prm, command.parameter_file, command.overrides);
-      bilayer::check_scene_resources(scene, launch_size());
     }
   catch (const ExceptionBase &e)
     {
@@ -197,6 +186,23 @@ main(int argc, char **argv)
   // cores of the node divided among its processes.
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   const bilayer::Distribution     &processes = bilayer::Distribution::world();
+
+  // The memory each process sees may differ a little: the processes decide
+  // together whether the scene fits.
+  {
+    std::string too_large;
+    try
+      {
+        bilayer::check_scene_resources(scene, processes.n_processes());
+      }
+    catch (const ExceptionBase &e)
+      {
+        too_large = bilayer::one_line_message(e);
+      }
+    too_large = processes.first_error(too_large);
+    if (!too_large.empty())
+      return refuse(too_large);
+  }
 
   std::unique_ptr<bilayer::StagedDirectory> output;
   try
@@ -228,8 +234,8 @@ main(int argc, char **argv)
             for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
               {
                 const auto cells = bilayer::structured_cells(scene, cycle);
-                files += bilayer::estimate_resources(scene, cells[0], cells[1])
-                           .output;
+                files +=
+                  bilayer::estimate_resources(scene, cells[0], cells[1]).output;
               }
             AssertThrow(files <= output->free_bytes(),
                         ExcMessage(
