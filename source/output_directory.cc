@@ -27,46 +27,6 @@ namespace bilayer
       throw dealii::ExcMessage(entry + ": " + message);
     }
 
-    /// The names of the files bilayer writes into an output directory.
-    bool
-    is_output_name(const std::string &name)
-    {
-      const auto starts = [&](const std::string &prefix) {
-        return name.compare(0, prefix.size(), prefix) == 0;
-      };
-      const auto ends = [&](const std::string &suffix) {
-        return name.size() >= suffix.size() &&
-               name.compare(name.size() - suffix.size(),
-                            suffix.size(),
-                            suffix) == 0;
-      };
-      std::string base = name;
-      if (ends(".part"))
-        base = name.substr(0, name.size() - 5);
-      for (const char *fixed : {"used_parameters.prm",
-                                "summary.json",
-                                "table.txt",
-                                "table.tex",
-                                "table.csv",
-                                "solution.pvd",
-                                "solution.xdmf",
-                                ".probe"})
-        if (base == fixed)
-          return true;
-      const auto has = [&](const std::string &prefix,
-                           const std::string &suffix) {
-        return base.size() > prefix.size() + suffix.size() &&
-               base.compare(0, prefix.size(), prefix) == 0 &&
-               base.compare(base.size() - suffix.size(),
-                            suffix.size(),
-                            suffix) == 0;
-      };
-      return (starts("solution-") &&
-              (has("solution-", ".vtu") || has("solution-", ".pvtu") ||
-               has("solution-", ".h5"))) ||
-             has("interface-", ".csv");
-    }
-
     const std::string manifest_prefix = "file: ";
     const std::string marker_text =
       "This directory was written by bilayer. A later run into it replaces "
@@ -98,12 +58,10 @@ namespace bilayer
             if (line.rfind(manifest_prefix, 0) == 0)
               listed.insert(line.substr(manifest_prefix.size()));
         }
-      bool output_names_only = true;
       for (fs::directory_iterator it(path, error), end; !error && it != end;
            it.increment(error))
         {
           const std::string name = it->path().filename().string();
-          output_names_only      = output_names_only && is_output_name(name);
           if ((marked && name == StagedDirectory::marker_name()) ||
               listed.count(name) > 0 || (marked && staging))
             continue;
@@ -117,12 +75,10 @@ namespace bilayer
         }
       if (!foreign.empty())
         foreign = "'" + foreign + "'" +
-                  (!marked && output_names_only ?
-                     ", results of a bilayer version before the marker "
-                     "file " +
-                       std::string(StagedDirectory::marker_name()) +
-                       " or files named like them" :
-                     "");
+                  (marked ? "" :
+                            ", and no marker file " +
+                              std::string(StagedDirectory::marker_name()) +
+                              " of a bilayer run");
       return foreign.empty();
     }
 

@@ -200,7 +200,7 @@ check "output directory holding a file added to bilayer's" "'out' holds files th
 mkdir -p lookalike && echo '{"mine": 1}' > lookalike/summary.json && echo 'a,b' > lookalike/table.csv
 : > empty.lock
 before=$(snapshot)
-check "output directory holding files named like bilayer's" "or files named like them); bilayer replaces an output directory only if" \
+check "output directory holding files named like bilayer's" "and no marker file .bilayer-output of a bilayer run); bilayer replaces" \
   "$prm" --set "Output/Output directory=lookalike"
 check "a foreign (empty) DIR.lock" "'empty.lock' exists and is not a lock file of bilayer" \
   "$prm" --set "Output/Output directory=empty"
