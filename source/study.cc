@@ -94,9 +94,6 @@ namespace bilayer
   bool
   Study::run()
   {
-    if (distribution.is_root())
-      std::filesystem::create_directories(scene.output.directory);
-    distribution.barrier();
     for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
       {
         const CycleRecord &record = run_cycle(cycle);
@@ -292,7 +289,7 @@ namespace bilayer
             write_error = e.what();
           }
     };
-    // (Drivers may call run_cycle() without run().)
+    // (Each cycle: drivers may call run_cycle() without run().)
     if (distribution.is_root())
       writing([&]() { std::filesystem::create_directories(dir); });
     distribution.barrier();
