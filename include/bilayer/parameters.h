@@ -5,6 +5,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <bilayer/layout.h>
+
 #include <array>
 #include <map>
 #include <memory>
@@ -37,20 +39,6 @@ namespace bilayer
   /// Name of a side as written in parameter files ("left", ...).
   std::string
   side_name(const Side side);
-
-  /// The two layers: layer 1 (displacement u, cracked), layer 2 (v).
-  enum class Layer
-  {
-    first  = 0,
-    second = 1
-  };
-
-  /// The two subdomains Omega- (below Sigma) and Omega+ (above Sigma).
-  enum class Subdomain
-  {
-    minus = 0,
-    plus  = 1
-  };
 
   enum class ElementShape
   {
@@ -141,6 +129,16 @@ namespace bilayer
     has_crack() const
     {
       return crack_end > crack_start;
+    }
+
+    /// The crack as a set of pieces of Sigma (coordinate x), compared with
+    /// a tolerance of 1e-10 times the width of Omega.
+    CrackSet
+    crack() const
+    {
+      return has_crack() ?
+               CrackSet({{crack_start, crack_end}}, 1e-10 * (x_max - x_min)) :
+               CrackSet();
     }
   };
 
