@@ -4,6 +4,7 @@
 
 #include <bilayer/estimator.h>
 #include <bilayer/geometry.h>
+#include <bilayer/material.h>
 
 #include <algorithm>
 
@@ -20,11 +21,11 @@ namespace bilayer
     // The squared indicator of each subproblem, evaluated by its owner
     // (the whole solution is needed) and sent to all processes, then
     // summed per subdomain in the order of the subproblems.
-    std::array<Vector<double>, 4>                squared;
-    const std::vector<Interface::ContactSegment> contact =
+    PerSubproblem<Vector<double>>     squared;
+    const std::vector<ContactSegment> contact =
       interface_terms ? interface.contact_residual(w, mu) :
-                        std::vector<Interface::ContactSegment>();
-    for (unsigned int s = 0; s < 4; ++s)
+                        std::vector<ContactSegment>();
+    for (const unsigned int s : Layout::subproblems)
       if (subproblems[s] != nullptr && subproblems[s]->owned())
         {
           const ElasticSubproblem &sub  = *subproblems[s];
@@ -51,8 +52,8 @@ namespace bilayer
                                     update_normal_vectors | update_JxW_values);
           const FEValuesExtractors::Vector   displacement(0);
           std::vector<SymmetricTensor<2, 2>> strain(face_quadrature.size());
-          const double                       mu_material = sub.material().mu();
-          const double                       lambda = sub.material().lambda();
+          const PlaneStrainLaw               law(sub.material());
+          const double                       mu_material = law.shear_modulus();
           for (const auto &cell : sub.dof_handler().active_cell_iterators())
             for (const auto f : cell->face_indices())
               if (cell->face(f)->at_boundary() &&
@@ -67,8 +68,7 @@ namespace bilayer
                        fe_face.quadrature_point_indices())
                     {
                       const SymmetricTensor<2, 2> stress =
-                        2 * mu_material * strain[q] +
-                        lambda * trace(strain[q]) * unit_symmetric_tensor<2>();
+                        law.stress(strain[q]);
                       const Tensor<1, 2> residual =
                         stress * fe_face.normal_vector(q) -
                         interface.multiplier_traction(
@@ -79,21 +79,20 @@ namespace bilayer
                   double term = cell->face(f)->diameter() / 24. * sum;
                   // Layer 1 on the crack: the complementarity of the segments
                   // of the mu_1 mesh under the face, by overlap.
-                  if (s < 2 &&
+                  if (Layout::layer(s) == Layer::first &&
                       cell->face(f)->boundary_id() == BoundaryIds::crack)
                     {
                       const double x0 = std::min(cell->face(f)->vertex(0)[0],
                                                  cell->face(f)->vertex(1)[0]);
                       const double x1 = std::max(cell->face(f)->vertex(0)[0],
                                                  cell->face(f)->vertex(1)[0]);
-                      auto         it =
-                        std::lower_bound(contact.begin(),
-                                         contact.end(),
-                                         x0,
-                                         [](const Interface::ContactSegment &c,
-                                            const double x) {
-                                           return c.b <= x;
-                                         });
+                      auto         it = std::lower_bound(contact.begin(),
+                                                 contact.end(),
+                                                 x0,
+                                                 [](const ContactSegment &c,
+                                                    const double          x) {
+                                                   return c.b <= x;
+                                                 });
                       for (; it != contact.end() && it->a < x1; ++it)
                         {
                           const double overlap =
@@ -108,11 +107,12 @@ namespace bilayer
                 }
         }
 
-    std::array<Vector<float>, 2> eta;
-    for (unsigned int sd = 0; sd < 2; ++sd)
+    std::array<Vector<float>, Layout::n_subdomains> eta;
+    for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
       {
         Vector<double> sum;
-        for (const unsigned int s : {sd, sd + 2})
+        for (const unsigned int s : {Layout::index(Layer::first, sd),
+                                     Layout::index(Layer::second, sd)})
           if (subproblems[s] != nullptr)
             {
               if (!subproblems[s]->owned())
@@ -126,9 +126,10 @@ namespace bilayer
               else
                 sum += squared[s];
             }
-        eta[sd].reinit(sum.size());
+        auto &eta_sd = eta[static_cast<unsigned int>(sd)];
+        eta_sd.reinit(sum.size());
         for (unsigned int i = 0; i < sum.size(); ++i)
-          eta[sd][i] = std::sqrt(sum[i]);
+          eta_sd[i] = std::sqrt(sum[i]);
       }
     return eta;
   }

@@ -22,8 +22,7 @@
 namespace bilayer
 {
   StressPostprocessor::StressPostprocessor(const LayerMaterial &material)
-    : mu(material.mu())
-    , lambda(material.lambda())
+    : law(material)
   {}
 
 
@@ -48,18 +47,15 @@ namespace bilayer
   {
     for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
       {
-        const auto  &grad         = inputs.solution_gradients[q];
-        const double exx          = grad[0][0];
-        const double eyy          = grad[1][1];
-        const double exy          = 0.5 * (grad[0][1] + grad[1][0]);
-        const double sxx          = 2 * mu * exx + lambda * (exx + eyy);
-        const double syy          = 2 * mu * eyy + lambda * (exx + eyy);
-        const double szz          = lambda * (exx + eyy);
-        const double sxy          = 2 * mu * exy;
-        computed_quantities[q](0) = std::sqrt(
-          0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) +
-                 (szz - sxx) * (szz - sxx)) +
-          3 * sxy * sxy);
+        const auto           &grad = inputs.solution_gradients[q];
+        SymmetricTensor<2, 2> strain;
+        strain[0][0]                       = grad[0][0];
+        strain[1][1]                       = grad[1][1];
+        strain[0][1]                       = 0.5 * (grad[0][1] + grad[1][0]);
+        const SymmetricTensor<2, 2> stress = law.stress(strain);
+        const double                szz    = law.out_of_plane_stress(strain);
+        const double sxx = stress[0][0], syy = stress[1][1], sxy = stress[0][1];
+        computed_quantities[q](0) = PlaneStrainLaw::von_mises(stress, szz);
         computed_quantities[q](1) = sxx;
         computed_quantities[q](2) = syy;
         computed_quantities[q](3) = szz;

@@ -10,6 +10,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <bilayer/geometry.h>
+#include <bilayer/material.h>
 #include <bilayer/subproblem.h>
 
 #include <cmath>
@@ -99,8 +100,7 @@ namespace bilayer
         : fe(fe)
         , clamped(clamped)
         , traction(traction)
-        , mu(material.mu())
-        , lambda(material.lambda())
+        , law(material)
         , fe_values(mapping,
                     fe,
                     fe.reference_cell().get_gauss_type_quadrature<2>(fe.degree +
@@ -139,9 +139,8 @@ namespace bilayer
             const double JxW = fe_values.JxW(q);
             for (unsigned int i = 0; i < n; ++i)
               for (unsigned int j = i; j < n; ++j)
-                cell_matrix(i, j) += (2 * mu * scalar_product(eps[i], eps[j]) +
-                                      lambda * div[i] * div[j]) *
-                                     JxW;
+                cell_matrix(i, j) +=
+                  law.energy_density(eps[i], div[i], eps[j], div[j]) * JxW;
           }
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < i; ++j)
@@ -171,7 +170,7 @@ namespace bilayer
       const FiniteElement<2>                   &fe;
       const std::array<bool, 4>                 clamped;
       const std::array<const Function<2> *, 4> &traction;
-      const double                              mu, lambda;
+      const PlaneStrainLaw                      law;
       FEValues<2>                               fe_values;
       FEFaceValues<2>                           fe_face_values;
       const SimilarityBreaker                   fresh;

@@ -5,6 +5,7 @@
 
 #include <bilayer/contact_solver.h>
 #include <bilayer/interface.h>
+#include <bilayer/material.h>
 #include <bilayer/output_directory.h>
 #include <bilayer/subproblem.h>
 
@@ -42,7 +43,7 @@ namespace bilayer
     get_needed_update_flags() const override;
 
   private:
-    const double mu, lambda;
+    const PlaneStrainLaw law;
   };
 
   /**

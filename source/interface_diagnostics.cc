@@ -1,0 +1,297 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <bilayer/interface.h>
+#include <bilayer/interface_diagnostics.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// The traces of all four subproblems at the nodes of mu_1; without
+    /// layer 2 its traces are those of layer 1 (no layer gap).
+    PerSubproblem<Vector<double>>
+    traces_at_nodes(const Interface &interface, const Solutions &w)
+    {
+      PerSubproblem<Vector<double>> t;
+      for (const unsigned int s : Layout::subproblems)
+        {
+          const unsigned int source =
+            interface.present(s) ? s : Layout::first_layer_partner(s);
+          interface.coupling().trace_at_nodes(source, w[source], t[s]);
+        }
+      return t;
+    }
+  } // namespace
+
+
+  double
+  displacement_scale(const Interface &interface, const Solutions &w)
+  {
+    double         scale = 0;
+    Vector<double> trace;
+    for (const unsigned int s : Layout::subproblems)
+      if (interface.present(s))
+        {
+          interface.coupling().trace_at_nodes(s, w[s], trace);
+          scale = std::max(scale, trace.linfty_norm());
+        }
+    return scale;
+  }
+
+
+  KKTResidual
+  kkt_residual(const Interface           &interface,
+               const Solutions           &w,
+               const BlockVector<double> &g,
+               const BlockVector<double> &mu)
+  {
+    const MultiplierSpace &space = interface.space();
+    const auto            &lower = space.lower_bounds();
+    const auto            &upper = space.upper_bounds();
+    KKTResidual            kkt;
+    const double           scale = displacement_scale(interface, w);
+    // A multiplier held at a bound of its box by a jump that pushes it
+    // outward is optimal there (mu = P(mu + theta g)): its jump is no
+    // residual. Only the bound p can hold a constraint violated this way.
+    BlockVector<double> free_g(g);
+    for (unsigned int i = 0; i < mu.size(); ++i)
+      if (space.free(i) && ((mu(i) >= upper(i) && g(i) >= 0) ||
+                            (mu(i) <= lower(i) && g(i) <= 0)))
+        free_g(i) = 0;
+    kkt.primal = scale > 0 ? space.discrete_violation(free_g) / scale :
+                             space.discrete_violation(free_g);
+    const double mu_scale = mu.linfty_norm();
+    if (mu_scale > 0)
+      for (unsigned int i = 0; i < mu.size(); ++i)
+        if (lower(i) == 0. && upper(i) > 0. && mu(i) < upper(i))
+          {
+            kkt.dual = std::max(kkt.dual, -mu(i) / mu_scale);
+            if (scale > 0)
+              kkt.complementarity =
+                std::max(kkt.complementarity,
+                         std::abs(mu(i) * g(i)) / (mu_scale * scale));
+          }
+    return kkt;
+  }
+
+
+  std::vector<double>
+  normal_opening(const Interface &interface, const Solutions &w)
+  {
+    Vector<double> tm, tp;
+    interface.coupling().trace_at_nodes(Layout::u_minus,
+                                        w[Layout::u_minus],
+                                        tm);
+    interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
+    std::vector<double> result(interface.n_nodes());
+    for (unsigned int a = 0; a < interface.n_nodes(); ++a)
+      result[a] = tp(Layout::entry(a, Layout::normal)) -
+                  tm(Layout::entry(a, Layout::normal));
+    return result;
+  }
+
+
+  InterfaceReport
+  assess(const Interface           &interface,
+         const Solutions           &w,
+         const BlockVector<double> &mu)
+  {
+    const MultiplierSpace   &space    = interface.space();
+    const TraceCoupling     &coupling = interface.coupling();
+    const ContactParameters &contact  = interface.contact_parameters();
+    constexpr unsigned int   mu_1     = Layout::across_sigma;
+    InterfaceReport          report;
+    BlockVector<double>      g;
+    interface.jumps(w, g);
+    const double scale        = displacement_scale(interface, w);
+    report.displacement_scale = scale;
+    const double violation    = space.discrete_violation(g);
+    report.relative_discrete_violation =
+      scale > 0 ? violation / scale : violation;
+
+    // Contact multiplier: the normal component of mu_1 at crack nodes.
+    double sum_mu = 0, sum_mu_jump = 0;
+    bool   any = false;
+    for (unsigned int a = 0; a < space.n_nodes(mu_1); ++a)
+      {
+        const unsigned int n = Layout::entry(a, Layout::normal);
+        if (space.on_crack(a) && space.upper_bounds().block(mu_1)(n) > 0)
+          {
+            const double m = mu.block(mu_1)(n);
+            report.min_contact_multiplier =
+              any ? std::min(report.min_contact_multiplier, m) : m;
+            any            = true;
+            const double d = space.node_weight(a, mu_1);
+            sum_mu += d * m;
+            sum_mu_jump += d * m * std::abs(g.block(mu_1)(n));
+          }
+      }
+    report.complementarity =
+      sum_mu > 0 && scale > 0 ? sum_mu_jump / (sum_mu * scale) : 0.;
+    report.max_multiplier_over_bound =
+      mu.linfty_norm() / contact.multiplier_bound;
+    report.kkt = kkt_residual(interface, w, g, mu);
+
+    // The integral (12) and the pointwise penetration at the Gauss points.
+    // Without layer 2 its traces are those of layer 1 (no layer gap).
+    PerSubproblem<Vector<double>> t;
+    for (const unsigned int s : Layout::subproblems)
+      {
+        const unsigned int source =
+          interface.present(s) ? s : Layout::first_layer_partner(s);
+        coupling.trace_at_gauss_points(source, w[source], t[s]);
+      }
+    const CrackSet crack = interface.geometry_parameters().crack();
+    const auto    &x     = coupling.gauss_points();
+    const auto    &wq    = coupling.gauss_weights();
+    double         size  = 0;
+    for (unsigned int q = 0; q < x.size(); ++q)
+      {
+        const bool on_crack = crack.contains(x[q]);
+        double     density  = 0;
+        for (unsigned int c = 0; c < Layout::n_components; ++c)
+          {
+            const unsigned int i = Layout::entry(q, c);
+            const double jump_1  = t[Layout::u_minus](i) - t[Layout::u_plus](i);
+            if (!on_crack)
+              density += std::abs(jump_1);
+            else if (c == Layout::normal)
+              {
+                report.max_penetration =
+                  std::max(report.max_penetration, jump_1);
+                if (contact.non_penetration)
+                  density += std::max(jump_1, 0.);
+              }
+            density += std::abs(t[Layout::u_minus](i) - t[Layout::v_minus](i));
+            density += std::abs(t[Layout::u_plus](i) - t[Layout::v_plus](i));
+            for (const unsigned int s : Layout::subproblems)
+              if (interface.present(s))
+                size += wq[q] * std::abs(t[s](i));
+          }
+        report.constraint_violation += wq[q] * density;
+      }
+    // Penetration at the crack nodes as well (the Gauss points miss them).
+    const std::vector<double> open = normal_opening(interface, w);
+    for (unsigned int a = 0; a < space.n_nodes(mu_1); ++a)
+      if (space.on_crack(a))
+        report.max_penetration = std::max(report.max_penetration, -open[a]);
+    report.relative_constraint_violation =
+      size > 0 ? report.constraint_violation / size :
+                 report.constraint_violation;
+    return report;
+  }
+
+
+  std::vector<ContactSegment>
+  contact_residual(const Interface           &interface,
+                   const Solutions           &w,
+                   const BlockVector<double> &mu)
+  {
+    std::vector<ContactSegment> result;
+    if (!interface.contact_parameters().non_penetration)
+      return result;
+    const MultiplierSpace &space  = interface.space();
+    const unsigned int     degree = space.degree();
+    Vector<double>         tm, tp;
+    interface.coupling().trace_at_nodes(Layout::u_minus,
+                                        w[Layout::u_minus],
+                                        tm);
+    interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
+    // Normal jump and contact multiplier at node a (nu = e_y).
+    const auto gap = [&](const unsigned int a) {
+      return tp(Layout::entry(a, Layout::normal)) -
+             tm(Layout::entry(a, Layout::normal));
+    };
+    const auto mu_c = [&](const unsigned int a) {
+      return space.contact_multiplier(mu, a);
+    };
+    const auto &bp = space.breakpoints(Layout::across_sigma);
+    // Degree >= 3: Gauss quadrature exact for the product of the two
+    // interpolants (degree 2 * degree), shape values of the multiplier
+    // element at its points.
+    const QGauss<1>                  gauss(degree + 1);
+    std::vector<std::vector<double>> shape(gauss.size());
+    if (degree >= 3)
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        space.shape_values(Layout::across_sigma,
+                           bp[0] + gauss.point(q)[0] * (bp[1] - bp[0]),
+                           shape[q]);
+    for (unsigned int e = 0; e + 1 < bp.size(); ++e)
+      {
+        const unsigned int a0 = space.node(e, 0), a1 = space.node(e, 1);
+        if (!space.on_crack(a0) && !space.on_crack(a1))
+          continue;
+        const double h   = bp[e + 1] - bp[e];
+        double       sum = 0;
+        if (degree <= 2)
+          {
+            // Simpson's rule; midpoint values: the middle node for degree
+            // 2, the mean for degree 1 (then it is exact for the product).
+            const double g_m =
+              degree == 2 ? gap(space.node(e, 2)) : 0.5 * (gap(a0) + gap(a1));
+            const double mu_m = degree == 2 ? mu_c(space.node(e, 2)) :
+                                              0.5 * (mu_c(a0) + mu_c(a1));
+            sum               = h / 6 *
+                  (mu_c(a0) * gap(a0) + 4 * mu_m * g_m + mu_c(a1) * gap(a1));
+          }
+        else
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            {
+              double g_q = 0, mu_q = 0;
+              for (unsigned int i = 0; i <= degree; ++i)
+                {
+                  g_q += shape[q][i] * gap(space.node(e, i));
+                  mu_q += shape[q][i] * mu_c(space.node(e, i));
+                }
+              sum += gauss.weight(q) * h * mu_q * g_q;
+            }
+        result.push_back({bp[e], bp[e + 1], sum});
+      }
+    return result;
+  }
+
+
+  void
+  write_interface_csv(std::ostream              &out,
+                      const Interface           &interface,
+                      const Solutions           &w,
+                      const BlockVector<double> &mu)
+  {
+    const MultiplierSpace &space = interface.space();
+    // Without layer 2 its columns repeat layer 1 (gaps and mu+- zero).
+    const PerSubproblem<Vector<double>> t = traces_at_nodes(interface, w);
+    using Layout::u_minus, Layout::u_plus, Layout::v_minus, Layout::v_plus;
+    out << "x,on_crack,jump_normal,jump_tangential,mu_c,mu_g_x,mu_g_y,"
+           "mu_minus_x,mu_minus_y,mu_plus_x,mu_plus_y,gap_minus_x,"
+           "gap_minus_y,gap_plus_x,gap_plus_y,u_minus_x,u_minus_y,u_plus_x,"
+           "u_plus_y,v_minus_x,v_minus_y,v_plus_x,v_plus_y\n";
+    out << std::setprecision(12);
+    for (unsigned int a = 0; a < space.n_nodes(Layout::across_sigma); ++a)
+      {
+        const unsigned int x  = Layout::entry(a, Layout::tangential),
+                           y  = Layout::entry(a, Layout::normal);
+        const double position = space.node_position(a, Layout::across_sigma);
+        out << position << ',' << (space.on_crack(a) ? 1 : 0) << ','
+            << t[u_plus](y) - t[u_minus](y) << ','
+            << t[u_plus](x) - t[u_minus](x) << ','
+            << space.contact_multiplier(mu, a) << ','
+            << space.gluing_multiplier(mu, a, Layout::tangential) << ','
+            << space.gluing_multiplier(mu, a, Layout::normal);
+        for (const unsigned int b : {Layout::glue_minus, Layout::glue_plus})
+          for (unsigned int c = 0; c < Layout::n_components; ++c)
+            out << ',' << space.value(mu, b, position, c);
+        out << ',' << t[u_minus](x) - t[v_minus](x) << ','
+            << t[u_minus](y) - t[v_minus](y) << ','
+            << t[u_plus](x) - t[v_plus](x) << ','
+            << t[u_plus](y) - t[v_plus](y);
+        for (const unsigned int s : Layout::subproblems)
+          out << ',' << t[s](x) << ',' << t[s](y);
+        out << '\n';
+      }
+  }
+} // namespace bilayer
