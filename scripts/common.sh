@@ -1,0 +1,22 @@
+# Shared by the bash scripts of scripts/ (sourced, not run):
+#   source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+# Sets root (the repository) and defines
+#   print_help [SCRIPT]          the leading comment block of SCRIPT (default:
+#                                the sourcing script) without its '# '
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+# The comment lines after the #! line, up to the first line that is not a
+# comment: the help of each script is its opening comment.
+print_help() {
+  local script=${1:-${BASH_SOURCE[1]:-$0}} line first=1
+  while IFS= read -r line || [[ -n $line ]]; do
+    if ((first)); then
+      first=0
+      [[ $line == '#!'* ]] && continue
+    fi
+    [[ $line == '#'* ]] || break
+    line=${line#\#}
+    printf '%s\n' "${line# }"
+  done < "$script"
+}
