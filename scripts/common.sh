@@ -3,6 +3,9 @@
 # Sets root (the repository) and defines
 #   print_help [SCRIPT]          the leading comment block of SCRIPT (default:
 #                                the sourcing script) without its '# '
+#   missing_packages PACKAGE...  those of the Debian packages not installed
+#   install_packages PACKAGE...  apt-get update and install (sudo when not
+#                                root), without questions
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -19,4 +22,19 @@ print_help() {
     line=${line#\#}
     printf '%s\n' "${line# }"
   done < "$script"
+}
+
+missing_packages() {
+  local p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2> /dev/null | grep -q "install ok installed" \
+      || echo "$p"
+  done
+}
+
+install_packages() {
+  local sudo=()
+  [[ $(id -u) -ne 0 ]] && sudo=(sudo)
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "$@"
 }
