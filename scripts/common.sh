@@ -1,11 +1,13 @@
 # Shared by the bash scripts of scripts/ (sourced, not run):
-#   source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+#   source "$(dirname "${BASH_SOURCE[0]}")/common.sh" "$@"
 # Sets root (the repository) and defines
 #   print_help [SCRIPT]          the leading comment block of SCRIPT (default:
-#                                the sourcing script) without its '# '
+#                                the calling script) without its '# '
 #   missing_packages PACKAGE...  those of the Debian packages not installed
 #   install_packages PACKAGE...  apt-get update and install (sudo when not
 #                                root), without questions
+# With --help or -h as the first argument, prints the help of the sourcing
+# script and exits 0.
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -38,3 +40,8 @@ install_packages() {
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "$@"
 }
+
+if [[ "${1:-}" == --help || "${1:-}" == -h ]]; then
+  print_help "${BASH_SOURCE[1]:-$0}"
+  exit 0
+fi
