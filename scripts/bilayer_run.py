@@ -3,6 +3,8 @@
 The scripts import it from their own directory (`import bilayer_run`):
 
     ROOT, BILAYER          the repository and build/bilayer in it
+    argument_parser(doc)   an ArgumentParser whose --help is the script's
+                           docstring (first paragraph, then the rest)
     MPI_ENV                the environment for mpirun as root, oversubscribed
     setup()                scripts/setup (install, configure, build), quietly
     command(prm, settings, processes=None, binary=BILAYER, mpirun=("mpirun",))
@@ -20,6 +22,7 @@ DIR as it was; a refused run writes nothing. bilayer writes only into
 directories it created itself (or empty ones), so DIRECTORY should not exist
 or be empty.
 """
+import argparse
 import collections
 import json
 import os
@@ -38,6 +41,14 @@ returncode: its exit status; stdout, stderr: its terminal output (None where
 not captured); summary: summary.json parsed (None where the run left none);
 directory: where summary.json was read (DIR or DIR.failed; None for a
 temporary directory, which is gone)."""
+
+
+def argument_parser(doc):
+    """An argparse.ArgumentParser describing a script by its docstring DOC:
+    the first paragraph above the options, the rest below, as written."""
+    first, _, rest = doc.partition("\n\n")
+    return argparse.ArgumentParser(description=first, epilog=rest or None,
+                                   formatter_class=argparse.RawDescriptionHelpFormatter)
 
 
 def setup():
