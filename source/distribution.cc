@@ -105,17 +105,21 @@ namespace bilayer
 
 
   void
-  Distribution::share(std::array<double, 4> &values) const
+  Distribution::share(PerSubproblem<double> &values) const
   {
     if (!parallel())
       return;
-    std::array<double, 4> own{};
-    for (unsigned int s = 0; s < 4; ++s)
+    PerSubproblem<double> own{};
+    for (const unsigned int s : Layout::subproblems)
       if (process_ == root(s))
         own[s] = values[s];
     // Exactly one non-zero contribution per entry: the sum is exact.
-    const int ierr = MPI_Allreduce(
-      own.data(), values.data(), 4, MPI_DOUBLE, MPI_SUM, communicator_);
+    const int ierr = MPI_Allreduce(own.data(),
+                                   values.data(),
+                                   own.size(),
+                                   MPI_DOUBLE,
+                                   MPI_SUM,
+                                   communicator_);
     AssertThrowMPI(ierr);
   }
 

@@ -10,8 +10,8 @@
 
 namespace bilayer
 {
-  std::array<Vector<float>, 2>
-  estimate_error(const std::array<const ElasticSubproblem *, 4> &subproblems,
+  std::array<Vector<float>, Layout::n_subdomains>
+  estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Interface                                &interface,
                  const Solutions                                &w,
                  const BlockVector<double>                      &mu,

@@ -344,7 +344,8 @@ namespace bilayer
   void
   Geometry::assign_boundary_ids(Triangulation<2> &tria) const
   {
-    const double tol = 1e-10 * std::max(geometry.x_max - geometry.x_min,
+    const CrackSet crack = geometry.crack();
+    const double   tol   = 1e-10 * std::max(geometry.x_max - geometry.x_min,
                                         geometry.y_max - geometry.y_min);
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
@@ -363,11 +364,9 @@ namespace bilayer
               {
                 Assert(std::abs(c[1] - geometry.sigma_height) < tol,
                        ExcInternalError());
-                const bool on_crack = geometry.has_crack() &&
-                                      c[0] > geometry.crack_start &&
-                                      c[0] < geometry.crack_end;
-                face->set_boundary_id(on_crack ? BoundaryIds::crack :
-                                                 BoundaryIds::glued);
+                face->set_boundary_id(crack.contains(c[0]) ?
+                                        BoundaryIds::crack :
+                                        BoundaryIds::glued);
               }
           }
   }

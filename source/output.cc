@@ -131,7 +131,7 @@ namespace bilayer
   void
   write_solution(const std::string                              &directory,
                  const unsigned int                              cycle,
-                 const std::array<const ElasticSubproblem *, 4> &subproblems,
+                 const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Solutions                                &solutions,
                  const OutputParameters                         &parameters,
                  SolutionRecords                                &records)
@@ -148,9 +148,9 @@ namespace bilayer
     std::vector<std::pair<unsigned int, std::string>> grids;
     // Declared before the DataOut objects that subscribe to them.
     std::vector<std::unique_ptr<StressPostprocessor>> stresses;
-    std::array<DataOut<2>, 4>                         data_outs;
-    std::array<Vector<float>, 4>                      layers, subdomains;
-    for (unsigned int s = 0; s < 4; ++s)
+    PerSubproblem<DataOut<2>>                         data_outs;
+    PerSubproblem<Vector<float>>                      layers, subdomains;
+    for (const unsigned int s : Layout::subproblems)
       if (subproblems[s] != nullptr)
         {
           const ElasticSubproblem &sub = *subproblems[s];

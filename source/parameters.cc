@@ -19,7 +19,7 @@ namespace bilayer
 {
   namespace
   {
-    const std::array<Side, 4> all_sides = {
+    const PerSide<Side> all_sides = {
       {Side::left, Side::right, Side::bottom, Side::top}};
 
     /**
@@ -167,7 +167,7 @@ namespace bilayer
   std::string
   side_name(const Side side)
   {
-    static const std::array<std::string, 4> names = {
+    static const PerSide<std::string> names = {
       {"left", "right", "bottom", "top"}};
     return names[static_cast<unsigned int>(side)];
   }

@@ -46,8 +46,7 @@ namespace bilayer
   std::string
   ElasticSubproblem::name() const
   {
-    return std::string(layer_ == Layer::first ? "u" : "v") +
-           (subdomain_ == Subdomain::minus ? "-" : "+");
+    return Layout::name(index());
   }
 
 
@@ -92,11 +91,11 @@ namespace bilayer
     class CellSystem
     {
     public:
-      CellSystem(const FiniteElement<2>                   &fe,
-                 const Mapping<2>                         &mapping,
-                 const LayerMaterial                      &material,
-                 const std::array<bool, 4>                &clamped,
-                 const std::array<const Function<2> *, 4> &traction)
+      CellSystem(const FiniteElement<2>             &fe,
+                 const Mapping<2>                   &mapping,
+                 const LayerMaterial                &material,
+                 const PerSide<bool>                &clamped,
+                 const PerSide<const Function<2> *> &traction)
         : fe(fe)
         , clamped(clamped)
         , traction(traction)
@@ -167,17 +166,17 @@ namespace bilayer
       }
 
     private:
-      const FiniteElement<2>                   &fe;
-      const std::array<bool, 4>                 clamped;
-      const std::array<const Function<2> *, 4> &traction;
-      const PlaneStrainLaw                      law;
-      FEValues<2>                               fe_values;
-      FEFaceValues<2>                           fe_face_values;
-      const SimilarityBreaker                   fresh;
-      const FEValuesExtractors::Vector          displacement{0};
-      std::vector<SymmetricTensor<2, 2>>        eps;
-      std::vector<double>                       div;
-      Vector<double>                            t;
+      const FiniteElement<2>             &fe;
+      const PerSide<bool>                 clamped;
+      const PerSide<const Function<2> *> &traction;
+      const PlaneStrainLaw                law;
+      FEValues<2>                         fe_values;
+      FEFaceValues<2>                     fe_face_values;
+      const SimilarityBreaker             fresh;
+      const FEValuesExtractors::Vector    displacement{0};
+      std::vector<SymmetricTensor<2, 2>>  eps;
+      std::vector<double>                 div;
+      Vector<double>                      t;
 
     public:
       FullMatrix<double>                   cell_matrix;
@@ -188,9 +187,9 @@ namespace bilayer
 
 
   void
-  ElasticSubproblem::setup(const std::array<bool, 4>                &clamped,
-                           const Function<2>                        &prescribed,
-                           const std::array<const Function<2> *, 4> &traction,
+  ElasticSubproblem::setup(const PerSide<bool>                &clamped,
+                           const Function<2>                  &prescribed,
+                           const PerSide<const Function<2> *> &traction,
                            const std::string &shared_solver_type)
   {
     shared_solver = shared_solver_type;
@@ -204,7 +203,7 @@ namespace bilayer
     DoFTools::make_hanging_node_constraints(dofs, constraints);
     DoFTools::make_hanging_node_constraints(dofs, homogeneous_constraints);
     const Functions::ZeroFunction<2> zero(2);
-    for (unsigned int side = 0; side < 4; ++side)
+    for (unsigned int side = 0; side < n_sides; ++side)
       if (clamped[side])
         {
           VectorTools::interpolate_boundary_values(
@@ -276,9 +275,8 @@ namespace bilayer
 
 
   void
-  ElasticSubproblem::assemble(
-    const std::array<bool, 4>                &clamped,
-    const std::array<const Function<2> *, 4> &traction)
+  ElasticSubproblem::assemble(const PerSide<bool>                &clamped,
+                              const PerSide<const Function<2> *> &traction)
   {
     CellSystem system(*fe_system, mapping(), material_, clamped, traction);
     for (const auto &cell : dofs.active_cell_iterators())
@@ -392,8 +390,8 @@ namespace bilayer
               distribution.group_communicator(),
               shared_solver,
               shared.get());
-            const std::array<bool, 4> no_loads{true, true, true, true};
-            const std::array<const Function<2> *, 4> none{};
+            const PerSide<bool>                no_loads{true, true, true, true};
+            const PerSide<const Function<2> *> none{};
             CellSystem system(*fe_system, mapping(), material_, no_loads, none);
             for (const auto &cell : dofs.active_cell_iterators())
               if (shared_dirichlet->assembles(cell->active_cell_index()))

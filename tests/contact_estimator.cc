@@ -9,6 +9,14 @@
 // has one contact zone, starting inside the crack and reaching its right
 // tip, so exactly one such segment exists. Without non-penetration there is
 // no term at all.
+//
+// For multipliers of degree 1, 3 and 4 the term of each segment is the
+// exact integral of the product of the two interpolants: compared with
+// Lagrange interpolation through the segment's nodes (found by position)
+// and a 12-point Gauss rule. (Degree 2 uses Simpson's rule on the nodal
+// values, an approximation of that integral.)
+
+#include <deal.II/base/quadrature_lib.h>
 
 #include <bilayer/parameters.h>
 #include <bilayer/study.h>
@@ -74,5 +82,67 @@ main()
                 << yes(n_large == 1) << ", positive there: " << yes(value > 0)
                 << ", inside the crack, right of its centre: "
                 << yes(at > 0 && at < 0.5) << std::endl;
+    }
+
+  for (const unsigned int degree : {1u, 3u, 4u})
+    {
+      const std::string d = std::to_string(degree);
+      Study             study(
+        scene_from_string(
+          "subsection Mesh\n set Cells along Sigma = 8\n"
+                      " set Polynomial degree of layer 1 = " +
+            d + "\n set Polynomial degree of layer 2 = " + d + "\nend\n" +
+            std::string(example1_loads) +
+            "subsection Solver\n set Method = active set\n"
+                        " set Tolerance = 1e-12\nend\n"
+                        "subsection Output\n set Output directory = results\n"
+                        " set Write VTU = false\n set Write interface CSV = false\n"
+                        " set Terminal output = checks\nend\n",
+          "contact-estimator-degree"),
+        quiet);
+      study.run_cycle(0);
+      const Interface &sigma = study.interface();
+      const auto       segments =
+        sigma.contact_residual(study.solutions(), study.multipliers());
+      const std::vector<double> open = sigma.normal_opening(study.solutions());
+      const QGauss<1>           gauss(12);
+      double                    largest = 0, error = 0;
+      unsigned int              wrong_nodes = 0;
+      for (const auto &c : segments)
+        {
+          std::vector<unsigned int> nodes;
+          for (unsigned int a = 0; a < sigma.n_nodes(); ++a)
+            if (sigma.node_position(a) >= c.a - 1e-12 &&
+                sigma.node_position(a) <= c.b + 1e-12)
+              nodes.push_back(a);
+          wrong_nodes += nodes.size() != degree + 1;
+          double exact = 0;
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            {
+              const double x  = c.a + gauss.point(q)[0] * (c.b - c.a);
+              double       mu = 0, gap = 0;
+              for (const unsigned int i : nodes)
+                {
+                  double l = 1;
+                  for (const unsigned int j : nodes)
+                    if (j != i)
+                      l *= (x - sigma.node_position(j)) /
+                           (sigma.node_position(i) - sigma.node_position(j));
+                  mu +=
+                    l *
+                    sigma.space().contact_multiplier(study.multipliers(), i);
+                  gap += l * open[i];
+                }
+              exact += gauss.weight(q) * (c.b - c.a) * mu * gap;
+            }
+          largest = std::max(largest, std::abs(exact));
+          error   = std::max(error, std::abs(exact - c.complementarity));
+        }
+      std::cout << "degree " << degree
+                << ": each segment's term is the integral of the product of "
+                   "the interpolants to 1e-10 of the largest: "
+                << yes(wrong_nodes == 0 && largest > 0 &&
+                       error <= 1e-10 * largest)
+                << std::endl;
     }
 }

@@ -82,8 +82,7 @@ namespace
     const double mu     = E[s / 2] / (2. * (1. + nu[s / 2]));
     const double lambda = 2. * nu[s / 2] * mu / (1. - 2. * nu[s / 2]);
     const ElasticSubproblem &sub =
-      study.subproblem(static_cast<Layer>(s / 2),
-                       static_cast<Subdomain>(s % 2));
+      study.subproblem(Layout::layer(s), Layout::subdomain(s));
     const DoFHandler<2>   &dofs = sub.dof_handler();
     DynamicSparsityPattern dsp(dofs.n_dofs());
     DoFTools::make_sparsity_pattern(dofs, dsp);
@@ -116,8 +115,7 @@ namespace
   sigma_y_dof(const Study &study, const unsigned int s, const double x)
   {
     const ElasticSubproblem &sub =
-      study.subproblem(static_cast<Layer>(s / 2),
-                       static_cast<Subdomain>(s % 2));
+      study.subproblem(Layout::layer(s), Layout::subdomain(s));
     std::vector<Point<2>> points(sub.n_dofs());
     DoFTools::map_dofs_to_support_points(sub.mapping(),
                                          sub.dof_handler(),
@@ -172,7 +170,8 @@ main()
   for (unsigned int a = 0; a < sigma.n_nodes(); ++a)
     if (sigma.node_on_crack(a))
       {
-        const double mu_c = contact.multipliers().block(0)(2 * a + 1);
+        const double mu_c =
+          sigma.space().contact_multiplier(contact.multipliers(), a);
         // D_a: half the adjacent segments (lumped, Q1: all nodes are
         // vertices).
         const double D_a =
@@ -190,7 +189,8 @@ main()
         if (sigma.node_position(a) > 0 && closed[a])
           right_closed_somewhere = true;
       }
-  double max_mu = contact.multipliers().block(0).linfty_norm();
+  double max_mu =
+    contact.multipliers().block(Layout::across_sigma).linfty_norm();
   std::cout << "contact force from the residual (K w)_y of u+ and v+ >= "
                "-1e-8 max at every crack node: "
             << yes(compressive) << std::endl
@@ -227,7 +227,7 @@ main()
                 std::cout);
   doubled.run_cycle(0);
   double difference = 0, size = 0;
-  for (unsigned int s = 0; s < 4; ++s)
+  for (const unsigned int s : Layout::subproblems)
     {
       Vector<double> d = doubled.solutions()[s];
       d.add(-2., contact.solutions()[s]);
@@ -257,8 +257,9 @@ main()
   bool all_open = true;
   for (unsigned int a = 0; a < n; ++a)
     if (sigma.node_on_crack(a))
-      all_open = all_open && open_full[a] > 0 &&
-                 full.multipliers().block(0)(2 * a + 1) == 0;
+      all_open =
+        all_open && open_full[a] > 0 &&
+        full.interface().space().contact_multiplier(full.multipliers(), a) == 0;
   std::cout << "crack open with mu_c = 0 at every crack node: " << yes(all_open)
             << std::endl;
 }

@@ -512,7 +512,8 @@ compare(const unsigned int n_layers)
         uzawa_crack.push_back(x);
         const double opening =
           w[1](uzawa_plus.at(x)[1]) - w[0](uzawa_minus.at(x)[1]);
-        const double mu_c = study.multipliers().block(0)(2 * a + 1);
+        const double mu_c =
+          interface.space().contact_multiplier(study.multipliers(), a);
         if (mu_c > 0)
           uzawa_active.insert(x);
         const double ref_opening = reference.opening(x);
@@ -534,10 +535,9 @@ compare(const unsigned int n_layers)
   double max_difference = 0, max_displacement = 0;
   for (unsigned int s = 0; s < 2 * n_layers; ++s)
     {
-      const auto &sub =
-        study.subproblem(static_cast<bilayer::Layer>(s / 2),
-                         static_cast<bilayer::Subdomain>(s % 2));
-      const auto                          &fe = sub.fe();
+      const auto &sub = study.subproblem(bilayer::Layout::layer(s),
+                                         bilayer::Layout::subdomain(s));
+      const auto &fe  = sub.fe();
       std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
       for (const auto &cell : sub.dof_handler().active_cell_iterators())
         {
@@ -569,8 +569,10 @@ compare(const unsigned int n_layers)
                   study
                     .subproblem(bilayer::Layer::first, bilayer::Subdomain::plus)
                     .n_dofs() &&
-              study.multipliers().block(1).size() == 0 &&
-              study.multipliers().block(2).size() == 0 ?
+              study.multipliers().block(bilayer::Layout::glue_minus).size() ==
+                0 &&
+              study.multipliers().block(bilayer::Layout::glue_plus).size() ==
+                0 ?
             "yes" :
             "NO")
       << std::endl;
@@ -624,13 +626,15 @@ compare(const unsigned int n_layers)
         if (interface.node_on_crack(a))
           {
             const long long x = key_of(interface.node_position(a));
-            std::cerr << "  x " << x * 1e-6 << " opening ref "
-                      << reference.opening(x) << " uzawa "
-                      << w[1](uzawa_plus.at(x)[1]) - w[0](uzawa_minus.at(x)[1])
-                      << "  mu_c ref "
-                      << (active.count(x) ? reference.contact_force(x) : 0.)
-                      << " uzawa " << study.multipliers().block(0)(2 * a + 1)
-                      << std::endl;
+            std::cerr
+              << "  x " << x * 1e-6 << " opening ref " << reference.opening(x)
+              << " uzawa "
+              << w[1](uzawa_plus.at(x)[1]) - w[0](uzawa_minus.at(x)[1])
+              << "  mu_c ref "
+              << (active.count(x) ? reference.contact_force(x) : 0.)
+              << " uzawa "
+              << interface.space().contact_multiplier(study.multipliers(), a)
+              << std::endl;
           }
     }
 }

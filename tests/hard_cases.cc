@@ -109,7 +109,10 @@ main()
       if (closed.interface().node_on_crack(a))
         {
           ++n;
-          pressed = pressed && closed.multipliers().block(0)(2 * a + 1) > 0;
+          pressed =
+            pressed &&
+            closed.interface().space().contact_multiplier(closed.multipliers(),
+                                                          a) > 0;
         }
     for (unsigned int a = 0; a < linear.interface().n_nodes(); ++a)
       if (linear.interface().node_on_crack(a))

@@ -5,6 +5,8 @@
 #include <deal.II/base/types.h>
 #include <deal.II/lac/vector.h>
 
+#include <bilayer/layout.h>
+
 #include <algorithm>
 #include <array>
 #include <stdexcept>
@@ -124,7 +126,7 @@ namespace bilayer
      * (collective): each owner fills in its own entries.
      */
     void
-    share(std::array<double, 4> &values) const;
+    share(PerSubproblem<double> &values) const;
 
     /// Largest of @p value over the processes (collective).
     double

@@ -34,8 +34,8 @@ namespace bilayer
    * the discrete constraints hold at the nodes only, and the product is
    * non-zero on the segment where the contact zone ends.
    */
-  std::array<Vector<float>, 2>
-  estimate_error(const std::array<const ElasticSubproblem *, 4> &subproblems,
+  std::array<Vector<float>, Layout::n_subdomains>
+  estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Interface                                &interface,
                  const Solutions                                &solutions,
                  const BlockVector<double>                      &multipliers,

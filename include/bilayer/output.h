@@ -79,7 +79,7 @@ namespace bilayer
   void
   write_solution(const std::string                              &directory,
                  const unsigned int                              cycle,
-                 const std::array<const ElasticSubproblem *, 4> &subproblems,
+                 const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Solutions                                &solutions,
                  const OutputParameters                         &parameters,
                  SolutionRecords                                &records);

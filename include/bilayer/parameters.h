@@ -36,6 +36,12 @@ namespace bilayer
     top    = 3
   };
 
+  constexpr unsigned int n_sides = 4;
+
+  /// One value per side of the rectangle, indexed by Side.
+  template <typename T>
+  using PerSide = std::array<T, n_sides>;
+
   /// Name of a side as written in parameter files ("left", ...).
   std::string
   side_name(const Side side);
@@ -118,7 +124,7 @@ namespace bilayer
     double crack_end    = 0.5;
 
     /// clamped[side] is true if the side belongs to Gamma_D.
-    std::array<bool, 4> clamped = {{true, true, false, false}};
+    PerSide<bool> clamped = {{true, true, false, false}};
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -246,7 +252,7 @@ namespace bilayer
   {
     std::string constants = "";
     /// traction[layer][side], "f_x; f_y"
-    std::array<std::array<std::string, 4>, 2> traction;
+    std::array<PerSide<std::string>, Layout::n_layers> traction;
     /// prescribed[layer], "u_x; u_y", on the clamped sides
     std::array<std::string, 2> prescribed = {{"0; 0", "0; 0"}};
 

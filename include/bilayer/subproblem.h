@@ -65,10 +65,10 @@ namespace bilayer
      * that are not clamped; @p prescribed on the clamped ones.
      */
     void
-    setup(const std::array<bool, 4>                &clamped,
-          const Function<2>                        &prescribed,
-          const std::array<const Function<2> *, 4> &traction,
-          const std::string &shared_solver = "Amesos_Mumps");
+    setup(const PerSide<bool>                &clamped,
+          const Function<2>                  &prescribed,
+          const PerSide<const Function<2> *> &traction,
+          const std::string                  &shared_solver = "Amesos_Mumps");
 
     /// Whether a group of processes shares it (DistributedSystem).
     bool
@@ -91,12 +91,11 @@ namespace bilayer
       return distribution.owns(index());
     }
 
-    /// Position in Solutions (Interface::index()).
+    /// Position in every per-subproblem array (Layout::index()).
     unsigned int
     index() const
     {
-      return 2 * static_cast<unsigned int>(layer_) +
-             static_cast<unsigned int>(subdomain_);
+      return Layout::index(layer_, subdomain_);
     }
 
     const Distribution &
@@ -205,8 +204,8 @@ namespace bilayer
     multiply_stiffness(Vector<double> &y, const Vector<double> &x) const;
 
     void
-    assemble(const std::array<bool, 4>                &clamped,
-             const std::array<const Function<2> *, 4> &traction);
+    assemble(const PerSide<bool>                &clamped,
+             const PerSide<const Function<2> *> &traction);
 
     const Layer                        layer_;
     const Subdomain                    subdomain_;
