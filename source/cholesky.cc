@@ -8,6 +8,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   struct SparseCholesky::Data
   {
     cholmod_common  common;

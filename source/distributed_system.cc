@@ -10,6 +10,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   DistributedSystem::DistributedSystem(
     const DoFHandler<2>             &dofs,
     const AffineConstraints<double> &constraints,

@@ -10,6 +10,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   Distribution::Distribution()
     : communicator_(MPI_COMM_SELF)
     , group_communicator_(MPI_COMM_SELF)

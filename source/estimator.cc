@@ -10,6 +10,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   std::array<Vector<float>, Layout::n_subdomains>
   estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Interface                                &interface,

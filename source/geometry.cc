@@ -13,6 +13,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   Geometry::Geometry(const GeometryParameters &geometry,
                      const MeshParameters     &mesh)
     : geometry(geometry)

@@ -21,6 +21,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   StressPostprocessor::StressPostprocessor(const LayerMaterial &material)
     : law(material)
   {}

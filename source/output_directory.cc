@@ -15,6 +15,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   namespace
   {
     namespace fs = std::filesystem;

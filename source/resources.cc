@@ -12,6 +12,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   namespace
   {
     /// Memory of the program before any mesh: libraries, MPI, threads.

@@ -17,6 +17,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   ElasticSubproblem::ElasticSubproblem(const Layer             layer,
                                        const Subdomain         subdomain,
                                        const Triangulation<2> &triangulation,

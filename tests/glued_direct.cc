@@ -279,7 +279,7 @@ main()
       {
         const auto &sub = study.subproblem(layer, subdomain);
         const auto &w =
-          study.solutions()[bilayer::Interface::index(layer, subdomain)];
+          study.solutions()[bilayer::Layout::index(layer, subdomain)];
         const auto                          &fe = sub.fe();
         std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
         std::vector<bool>                    visited(sub.n_dofs(), false);

@@ -77,8 +77,8 @@ namespace
     for (const Layer layer : {Layer::first, Layer::second})
       for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
         {
-          const auto &sub = study.subproblem(layer, sd);
-          const auto &w   = study.solutions()[Interface::index(layer, sd)];
+          const auto           &sub = study.subproblem(layer, sd);
+          const auto           &w = study.solutions()[Layout::index(layer, sd)];
           std::vector<Point<2>> support(sub.n_dofs());
           DoFTools::map_dofs_to_support_points(sub.mapping(),
                                                sub.dof_handler(),

@@ -9,8 +9,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * Sparse Cholesky factorisation A = L L^T of a symmetric positive
    * definite matrix by CHOLMOD (SuiteSparse, supernodal, with its fill-
@@ -33,17 +31,17 @@ namespace bilayer
     /// matrix is not positive definite, std::bad_alloc if CHOLMOD runs out
     /// of memory.
     void
-    initialize(const SparseMatrix<double> &matrix,
-               const std::string          &what = "a subproblem matrix");
+    initialize(const dealii::SparseMatrix<double> &matrix,
+               const std::string &what = "a subproblem matrix");
 
     /// As initialize(), but returns false instead of throwing when the
     /// matrix is not (numerically) positive definite.
     bool
-    try_initialize(const SparseMatrix<double> &matrix);
+    try_initialize(const dealii::SparseMatrix<double> &matrix);
 
     /// Overwrite @p rhs_and_solution with A^{-1} rhs.
     void
-    solve(Vector<double> &rhs_and_solution) const;
+    solve(dealii::Vector<double> &rhs_and_solution) const;
 
   private:
     struct Data;

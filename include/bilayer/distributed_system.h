@@ -16,8 +16,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * The linear system of one subproblem shared by a group of MPI processes
    * (more than four processes in all, see Distribution): the cells of the
@@ -45,10 +43,10 @@ namespace bilayer
      * With @p same_partition, take that system's partition (the same
      * subproblem under other constraints) instead of running METIS again.
      */
-    DistributedSystem(const DoFHandler<2>             &dofs,
-                      const AffineConstraints<double> &constraints,
-                      const MPI_Comm                   group,
-                      const std::string               &solver_type,
+    DistributedSystem(const dealii::DoFHandler<2>             &dofs,
+                      const dealii::AffineConstraints<double> &constraints,
+                      const MPI_Comm                           group,
+                      const std::string                       &solver_type,
                       const DistributedSystem *same_partition = nullptr);
 
     /// The part (process of the group) of each active cell.
@@ -68,8 +66,8 @@ namespace bilayer
 
     /// The system matrix (constraints condensed), its right-hand side, and
     /// optionally the unconstrained stiffness and load (with_stiffness).
-    TrilinosWrappers::SparseMatrix matrix, stiffness;
-    TrilinosWrappers::MPI::Vector  rhs, load;
+    dealii::TrilinosWrappers::SparseMatrix matrix, stiffness;
+    dealii::TrilinosWrappers::MPI::Vector  rhs, load;
 
     /// Exchange the entries written for other processes, then factorise.
     void
@@ -80,36 +78,38 @@ namespace bilayer
      * vector on every process of the group (collective in the group).
      */
     void
-    solve(Vector<double> &v, const bool add_rhs) const;
+    solve(dealii::Vector<double> &v, const bool add_rhs) const;
 
     /// y = K x for full vectors (collective in the group).
     void
-    vmult_stiffness(Vector<double> &y, const Vector<double> &x) const;
+    vmult_stiffness(dealii::Vector<double>       &y,
+                    const dealii::Vector<double> &x) const;
 
     /// x^T K x and load . x for a full vector x (collective in the group).
     double
-    energy_norm_squared(const Vector<double> &x) const;
+    energy_norm_squared(const dealii::Vector<double> &x) const;
     double
-    load_product(const Vector<double> &x) const;
+    load_product(const dealii::Vector<double> &x) const;
 
   private:
     /// The owned entries of a full vector.
-    void restrict(const Vector<double>          &full,
-                  TrilinosWrappers::MPI::Vector &v) const;
+    void restrict(const dealii::Vector<double>          &full,
+                  dealii::TrilinosWrappers::MPI::Vector &v) const;
     /// The full vector of owned entries from every process.
     void
-    expand(const TrilinosWrappers::MPI::Vector &v, Vector<double> &full) const;
+    expand(const dealii::TrilinosWrappers::MPI::Vector &v,
+           dealii::Vector<double>                      &full) const;
 
     /// rhs and load after assembly, without ghost entries.
-    TrilinosWrappers::MPI::Vector owned_rhs, owned_load;
+    dealii::TrilinosWrappers::MPI::Vector owned_rhs, owned_load;
 
-    const MPI_Comm                                  group;
-    unsigned int                                    part = 0;
-    std::vector<unsigned int>                       partition;
-    IndexSet                                        owned, writable;
-    std::string                                     solver_type;
-    mutable SolverControl                           control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+    const MPI_Comm                                          group;
+    unsigned int                                            part = 0;
+    std::vector<unsigned int>                               partition;
+    dealii::IndexSet                                        owned, writable;
+    std::string                                             solver_type;
+    mutable dealii::SolverControl                           control;
+    std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
   };
 } // namespace bilayer
 

@@ -15,11 +15,9 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * How the four subproblems of the decomposition (u-, u+, v-, v+, in the
-   * order of Interface::index()) are distributed over the processes of an
+   * order of Layout::index()) are distributed over the processes of an
    * MPI job.
    *
    * Subproblem s belongs to process s mod R for R <= 4 processes (R = 4: one
@@ -117,9 +115,10 @@ namespace bilayer
      * have the same size on every process; it keeps its other entries.
      */
     void
-    share(const unsigned int                          s,
-          Vector<double>                             &v,
-          const std::vector<types::global_dof_index> *indices = nullptr) const;
+    share(const unsigned int                                  s,
+          dealii::Vector<double>                             &v,
+          const std::vector<dealii::types::global_dof_index> *indices =
+            nullptr) const;
 
     /**
      * Entry s of @p values from the root of subproblem s, for every s

@@ -11,8 +11,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * Error indicators per active cell of the two subdomain meshes (indexed
    * by active_cell_index()), for adaptive refinement:
@@ -34,11 +32,11 @@ namespace bilayer
    * the discrete constraints hold at the nodes only, and the product is
    * non-zero on the segment where the contact zone ends.
    */
-  std::array<Vector<float>, Layout::n_subdomains>
+  std::array<dealii::Vector<float>, Layout::n_subdomains>
   estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Interface                                &interface,
                  const Solutions                                &solutions,
-                 const BlockVector<double>                      &multipliers,
+                 const dealii::BlockVector<double>              &multipliers,
                  const bool   interface_terms,
                  const double contact_weight = 1);
 } // namespace bilayer

@@ -11,8 +11,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * Boundary ids of the subdomain meshes. The outer sides keep their own
    * ids (so that each side can carry its own traction); which of them form
@@ -21,17 +19,17 @@ namespace bilayer
    */
   namespace BoundaryIds
   {
-    constexpr types::boundary_id left   = 0;
-    constexpr types::boundary_id right  = 1;
-    constexpr types::boundary_id bottom = 2;
-    constexpr types::boundary_id top    = 3;
-    constexpr types::boundary_id glued  = 4;
-    constexpr types::boundary_id crack  = 5;
+    constexpr dealii::types::boundary_id left   = 0;
+    constexpr dealii::types::boundary_id right  = 1;
+    constexpr dealii::types::boundary_id bottom = 2;
+    constexpr dealii::types::boundary_id top    = 3;
+    constexpr dealii::types::boundary_id glued  = 4;
+    constexpr dealii::types::boundary_id crack  = 5;
 
-    inline types::boundary_id
+    inline dealii::types::boundary_id
     of(const Side side)
     {
-      return static_cast<types::boundary_id>(side);
+      return static_cast<dealii::types::boundary_id>(side);
     }
   } // namespace BoundaryIds
 
@@ -70,9 +68,9 @@ namespace bilayer
      * matching where only one side is refined.
      */
     void
-    refine(const std::array<Vector<float>, 2> &indicators);
+    refine(const std::array<dealii::Vector<float>, 2> &indicators);
 
-    const Triangulation<2> &
+    const dealii::Triangulation<2> &
     triangulation(const Subdomain subdomain) const;
 
     MeshStatistics
@@ -99,29 +97,29 @@ namespace bilayer
     /// degenerate, or whose boundary has faces inside the subdomain (slits,
     /// holes, overlapping or unconnected cells).
     void
-    check_cells(const Triangulation<2> &tria,
-                const Subdomain         subdomain,
-                const std::string      &file) const;
+    check_cells(const dealii::Triangulation<2> &tria,
+                const Subdomain                 subdomain,
+                const std::string              &file) const;
 
     void
-    make_subdomain(const Subdomain    subdomain,
-                   const unsigned int cells_along,
-                   const unsigned int cells_across,
-                   Triangulation<2>  &tria) const;
+    make_subdomain(const Subdomain           subdomain,
+                   const unsigned int        cells_along,
+                   const unsigned int        cells_across,
+                   dealii::Triangulation<2> &tria) const;
 
     void
-    read_subdomain(const Subdomain    subdomain,
-                   const std::string &pattern,
-                   Triangulation<2>  &tria) const;
+    read_subdomain(const Subdomain           subdomain,
+                   const std::string        &pattern,
+                   dealii::Triangulation<2> &tria) const;
 
     /// Side ids on the outer boundary, glued/crack ids on Sigma, from the
     /// face centres.
     void
-    assign_boundary_ids(Triangulation<2> &tria) const;
+    assign_boundary_ids(dealii::Triangulation<2> &tria) const;
 
-    const GeometryParameters        geometry;
-    const MeshParameters            mesh;
-    std::array<Triangulation<2>, 2> triangulations;
+    const GeometryParameters                geometry;
+    const MeshParameters                    mesh;
+    std::array<dealii::Triangulation<2>, 2> triangulations;
   };
 } // namespace bilayer
 

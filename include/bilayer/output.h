@@ -17,8 +17,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * Plane-strain stresses of one layer from the displacement gradient:
    * sigma = 2 mu eps + lambda tr(eps) I, sigma_zz = lambda tr(eps), and the
@@ -26,20 +24,20 @@ namespace bilayer
    * sqrt(((s_xx - s_yy)^2 + (s_yy - s_zz)^2 + (s_zz - s_xx)^2) / 2
    *      + 3 s_xy^2).
    */
-  class StressPostprocessor : public DataPostprocessor<2>
+  class StressPostprocessor : public dealii::DataPostprocessor<2>
   {
   public:
     explicit StressPostprocessor(const LayerMaterial &material);
 
     void
     evaluate_vector_field(
-      const DataPostprocessorInputs::Vector<2> &inputs,
-      std::vector<Vector<double>> &computed_quantities) const override;
+      const dealii::DataPostprocessorInputs::Vector<2> &inputs,
+      std::vector<dealii::Vector<double>> &computed_quantities) const override;
 
     std::vector<std::string>
     get_names() const override;
 
-    UpdateFlags
+    dealii::UpdateFlags
     get_needed_update_flags() const override;
 
   private:
