@@ -1,9 +1,7 @@
-#include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
 
 #include <bilayer/active_set_solver.h>
-#include <bilayer/cholesky.h>
-#include <bilayer/tasks.h>
+#include <bilayer/feti_preconditioner.h>
 
 #include <cmath>
 #include <iomanip>
@@ -22,98 +20,6 @@ namespace bilayer
       return jump.linfty_norm();
     }
 
-
-    /// The preconditioner of the conjugate gradients on F_II.
-    class DualPreconditionerOperator
-    {
-    public:
-      DualPreconditionerOperator(const DualPreconditioner type,
-                                 const Subproblems       &subproblems,
-                                 const Interface         &interface)
-        : type(type)
-        , subproblems(subproblems)
-        , interface(interface)
-      {}
-
-      /// Restrict to the components with mask != 0 (rebuilds G).
-      void
-      reinit(const BlockVector<double> &new_mask)
-      {
-        mask = new_mask;
-        if (type == DualPreconditioner::none)
-          return;
-        interface.coupling_gram(mask, pattern, gram);
-        // Multiplier spaces with redundant constraints (mixed degrees,
-        // non-matching traces) can make the Gram matrix of the active
-        // components singular: then this step uses the diagonal scaling.
-        degraded = !gram_factorisation.try_initialize(gram);
-        if (degraded)
-          ++degraded_steps;
-      }
-
-      /// Newton steps whose Gram matrix could not be factorised.
-      unsigned int
-      n_degraded_steps() const
-      {
-        return degraded_steps;
-      }
-
-      /// z = M^{-1} r; returns the Dirichlet solves spent.
-      unsigned int
-      vmult(BlockVector<double> &z, const BlockVector<double> &r) const
-      {
-        z = r;
-        if (type == DualPreconditioner::none || degraded)
-          {
-            interface.scale_by_weights(z, true);
-            z.scale(mask);
-            return 0;
-          }
-        solve_gram(z);
-        Solutions loads, reactions;
-        interface.apply(z, loads); // -B^T G^{-1} r
-        Tasks tasks;
-        for (unsigned int s = 0; s < 4; ++s)
-          if (subproblems[s] != nullptr && subproblems[s]->owned())
-            tasks.add([&, s]() {
-              if (type == DualPreconditioner::dirichlet)
-                subproblems[s]->apply_schur_complement(loads[s], reactions[s]);
-              else
-                subproblems[s]->apply_interface_stiffness(loads[s],
-                                                          reactions[s]);
-            });
-        tasks.join_all();
-        share_traces(subproblems, reactions);
-        interface.jumps(reactions, z);
-        interface.scale_by_weights(z); // B S (-B^T G^{-1} r)
-        z *= -1.;
-        z.scale(mask);
-        solve_gram(z);
-        return type == DualPreconditioner::dirichlet ? 4 : 0;
-      }
-
-    private:
-      void
-      solve_gram(BlockVector<double> &x) const
-      {
-        Vector<double> flat(x.size());
-        for (unsigned int i = 0; i < x.size(); ++i)
-          flat(i) = x(i);
-        gram_factorisation.solve(flat);
-        for (unsigned int i = 0; i < x.size(); ++i)
-          x(i) = flat(i);
-      }
-
-      const DualPreconditioner type;
-      const Subproblems       &subproblems;
-      const Interface         &interface;
-      BlockVector<double>      mask;
-      SparsityPattern          pattern;
-      SparseMatrix<double>     gram;
-      SparseCholesky           gram_factorisation;
-      bool                     degraded       = false;
-      unsigned int             degraded_steps = 0;
-    };
   } // namespace
 
 
@@ -134,25 +40,14 @@ namespace bilayer
   {
     SolverResult result;
     result.solver = "active set";
-    Timer timer;
-    if (parameters.preconditioner != DualPreconditioner::none)
-      {
-        Tasks tasks;
-        for (unsigned int s = 0; s < 4; ++s)
-          if (subproblems[s] != nullptr && subproblems[s]->owned())
-            tasks.add([&, s]() {
-              subproblems[s]->setup_interface_operators(
-                parameters.preconditioner == DualPreconditioner::dirichlet);
-            });
-        tasks.join_all();
-      }
+    Timer              timer;
+    FetiPreconditioner preconditioner(parameters.preconditioner,
+                                      subproblems,
+                                      interface);
     result.setup_seconds = timer.wall_time();
     timer.restart();
-    const BlockVector<double> &lower = interface.lower_bounds();
-    const BlockVector<double> &upper = interface.upper_bounds();
-    DualPreconditionerOperator preconditioner(parameters.preconditioner,
-                                              subproblems,
-                                              interface);
+    const BlockVector<double> &lower  = interface.lower_bounds();
+    const BlockVector<double> &upper  = interface.upper_bounds();
     const auto                 finish = [&](const std::string &message) {
       result.message = message;
       if (preconditioner.n_degraded_steps() > 0)

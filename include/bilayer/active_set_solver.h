@@ -41,15 +41,10 @@ namespace bilayer
    * together.
    *
    * <h3>Linear solves</h3>
-   * Conjugate gradients on F_II, preconditioned by (Solver/Active set/
-   * Preconditioner)
-   *  - dirichlet: M^{-1} = G^{-1} B S B^T G^{-1}, S the Schur complements of
-   *    the subproblems on Sigma (ElasticSubproblem::apply_schur_complement:
-   *    one Dirichlet solve each) and G = B B^T restricted to I: the FETI
-   *    Dirichlet preconditioner with the scaling (B B^T)^{-1} B, which
-   *    bounds the condition number by C (1 + log(H/h))^2;
-   *  - lumped: the same with K_{Sigma Sigma} for S (no solves);
-   *  - none: D^{-1} (conjugate gradients in the metric of the Uzawa step).
+   * Conjugate gradients on F_II, preconditioned by the FetiPreconditioner
+   * of Solver/Active set/Preconditioner (dirichlet, lumped or none), which
+   * the solver builds for each solve (the Dirichlet factorisations: its
+   * set-up time).
    * While the active set still changes, the conjugate gradients stop at a
    * relative reduction Solver/Active set/Inner tolerance of the largest
    * jump on I (an inexact Newton step); once it stays the same, they run

@@ -5,6 +5,7 @@
 #include <deal.II/lac/block_vector.h>
 
 #include <bilayer/interface.h>
+#include <bilayer/layout.h>
 #include <bilayer/parameters.h>
 #include <bilayer/subproblem.h>
 
@@ -16,8 +17,10 @@ namespace bilayer
 {
   using namespace dealii;
 
-  /// The four subproblems, indexed by Interface::index().
-  using Subproblems = std::array<ElasticSubproblem *, 4>;
+  /// The subproblems, indexed by Layout::index() (nullptr where a layer is
+  /// absent). Solving reads them only: the factorisations are made by
+  /// ElasticSubproblem::setup().
+  using Subproblems = PerSubproblem<const ElasticSubproblem *>;
 
   /// How an outer solve ended.
   struct SolverResult
