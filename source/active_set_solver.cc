@@ -67,7 +67,7 @@ namespace bilayer
     for (unsigned int k = 0;; ++k)
       {
         solve_subproblems(subproblems, interface, mu, w);
-        result.subdomain_solves += 4;
+        result.subdomain_solves += Layout::n_subproblems;
         result.iterations = k;
         interface.jumps(w, g);
         const KKTResidual kkt = interface.kkt_residual(w, g, mu);
@@ -161,7 +161,7 @@ namespace bilayer
                                           interface,
                                           p,
                                           homogeneous);
-            result.subdomain_solves += 4;
+            result.subdomain_solves += Layout::n_subproblems;
             interface.jumps(homogeneous, q);
             interface.scale_by_weights(q);
             q *= -1.; // F p
@@ -187,20 +187,4 @@ namespace bilayer
       }
   }
 
-
-  SolverResult
-  solve_contact_problem(const SolverParameters   &parameters,
-                        const OutputParameters   &output,
-                        const ConditionalOStream &pcout,
-                        const Subproblems        &subproblems,
-                        const Interface          &interface,
-                        BlockVector<double>      &multipliers,
-                        Solutions                &solutions)
-  {
-    if (parameters.method == SolverMethod::active_set)
-      return ActiveSetSolver(parameters, output, pcout)
-        .solve(subproblems, interface, multipliers, solutions);
-    return UzawaSolver(parameters, output, pcout)
-      .solve(subproblems, interface, multipliers, solutions);
-  }
 } // namespace bilayer

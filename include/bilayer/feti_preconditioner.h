@@ -6,11 +6,11 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <bilayer/cholesky.h>
-#include <bilayer/contact_solver.h>
 #include <bilayer/interface.h>
 #include <bilayer/interface_stiffness.h>
 #include <bilayer/layout.h>
 #include <bilayer/parameters.h>
+#include <bilayer/subdomain_solves.h>
 
 #include <memory>
 
