@@ -60,7 +60,10 @@ namespace bilayer
      * have to run there and end the solve by an exception, as would
      * p^T F p <= 0, which SolverCG only asserts to be nonzero (in debug
      * mode), and the unconditional first application of the preconditioner
-     * would need a special case.
+     * would need a special case. (Built that way, SolverCG with a
+     * SolverControl that never stops gives the same bits as this function
+     * on every scene of scripts/compare_outputs: the arithmetic is not the
+     * obstacle, the control flow is.)
      */
     ConjugateGradientOutcome
     conjugate_gradients_on_free_set(const Subproblems         &subproblems,
