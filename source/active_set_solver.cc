@@ -1,9 +1,7 @@
-#include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
 
 #include <bilayer/active_set_solver.h>
-#include <bilayer/cholesky.h>
-#include <bilayer/tasks.h>
+#include <bilayer/feti_preconditioner.h>
 
 #include <cmath>
 #include <iomanip>
@@ -23,97 +21,99 @@ namespace bilayer
     }
 
 
-    /// The preconditioner of the conjugate gradients on F_II.
-    class DualPreconditionerOperator
+    /// How the conjugate gradients of a Newton step ended.
+    struct ConjugateGradientOutcome
     {
-    public:
-      DualPreconditionerOperator(const DualPreconditioner type,
-                                 const Subproblems       &subproblems,
-                                 const Interface         &interface)
-        : type(type)
-        , subproblems(subproblems)
-        , interface(interface)
-      {}
-
-      /// Restrict to the components with mask != 0 (rebuilds G).
-      void
-      reinit(const BlockVector<double> &new_mask)
-      {
-        mask = new_mask;
-        if (type == DualPreconditioner::none)
-          return;
-        interface.coupling_gram(mask, pattern, gram);
-        // Multiplier spaces with redundant constraints (mixed degrees,
-        // non-matching traces) can make the Gram matrix of the active
-        // components singular: then this step uses the diagonal scaling.
-        degraded = !gram_factorisation.try_initialize(gram);
-        if (degraded)
-          ++degraded_steps;
-      }
-
-      /// Newton steps whose Gram matrix could not be factorised.
-      unsigned int
-      n_degraded_steps() const
-      {
-        return degraded_steps;
-      }
-
-      /// z = M^{-1} r; returns the Dirichlet solves spent.
-      unsigned int
-      vmult(BlockVector<double> &z, const BlockVector<double> &r) const
-      {
-        z = r;
-        if (type == DualPreconditioner::none || degraded)
-          {
-            interface.scale_by_weights(z, true);
-            z.scale(mask);
-            return 0;
-          }
-        solve_gram(z);
-        Solutions loads, reactions;
-        interface.apply(z, loads); // -B^T G^{-1} r
-        Tasks tasks;
-        for (unsigned int s = 0; s < 4; ++s)
-          if (subproblems[s] != nullptr && subproblems[s]->owned())
-            tasks.add([&, s]() {
-              if (type == DualPreconditioner::dirichlet)
-                subproblems[s]->apply_schur_complement(loads[s], reactions[s]);
-              else
-                subproblems[s]->apply_interface_stiffness(loads[s],
-                                                          reactions[s]);
-            });
-        tasks.join_all();
-        share_traces(subproblems, reactions);
-        interface.jumps(reactions, z);
-        interface.scale_by_weights(z); // B S (-B^T G^{-1} r)
-        z *= -1.;
-        z.scale(mask);
-        solve_gram(z);
-        return type == DualPreconditioner::dirichlet ? 4 : 0;
-      }
-
-    private:
-      void
-      solve_gram(BlockVector<double> &x) const
-      {
-        Vector<double> flat(x.size());
-        for (unsigned int i = 0; i < x.size(); ++i)
-          flat(i) = x(i);
-        gram_factorisation.solve(flat);
-        for (unsigned int i = 0; i < x.size(); ++i)
-          x(i) = flat(i);
-      }
-
-      const DualPreconditioner type;
-      const Subproblems       &subproblems;
-      const Interface         &interface;
-      BlockVector<double>      mask;
-      SparsityPattern          pattern;
-      SparseMatrix<double>     gram;
-      SparseCholesky           gram_factorisation;
-      bool                     degraded       = false;
-      unsigned int             degraded_steps = 0;
+      unsigned int  iterations            = 0;
+      unsigned long subdomain_solves      = 0;
+      unsigned long preconditioner_solves = 0;
+      /// Stopped at the iteration limit with the largest jump @p jump still
+      /// above the target.
+      bool   limit_reached = false;
+      double jump          = 0;
     };
+
+
+    /**
+     * Preconditioned conjugate gradients on F_II delta = r from delta = 0:
+     * F p is minus the weighted jumps D g of the homogeneous solutions with
+     * the multiplier loads of p (4 subdomain solves), restricted by @p mask
+     * to the free components I. On entry @p r is the right-hand side (zero
+     * off I) with largest jump @p start, on return the residual.
+     *
+     * The iteration stops when the largest jump of the residual,
+     * max_i |r_i| / D_i, is at most @p target; when p^T F p is no longer
+     * positive (F_II exhausted: its semidefinite directions), keeping the
+     * iterate; or, as a failure, after @p max_iterations iterations. The
+     * preconditioner is applied to the first residual and to every residual
+     * that misses the target, the last one before the limit included.
+     *
+     * Why not deal.II's SolverCG: its arithmetic is the same, in the same
+     * order (z = M^{-1} r, rz = r.z, p = z + (rz / rz_old) p, q = F p,
+     * alpha = rz / p.q, delta += alpha p, r -= alpha q), but its stopping
+     * test cannot be this one. SolverControl::check() receives only the
+     * Euclidean norm |r|_2 that SolverCG computes, and the iteration_status
+     * signal only the iterate delta; the largest jump is a weighted maximum
+     * norm of r, no function of |r|_2, and r from delta would cost 4 more
+     * solves per iteration. The only place where SolverCG hands out r is the
+     * preconditioner, at the start of the next iteration: the test would
+     * have to run there and end the solve by an exception, as would
+     * p^T F p <= 0, which SolverCG only asserts to be nonzero (in debug
+     * mode), and the unconditional first application of the preconditioner
+     * would need a special case. (Built that way, SolverCG with a
+     * SolverControl that never stops gives the same bits as this function
+     * on every scene of scripts/compare_outputs: the arithmetic is not the
+     * obstacle, the control flow is.)
+     */
+    ConjugateGradientOutcome
+    conjugate_gradients_on_free_set(const Subproblems         &subproblems,
+                                    const Interface           &interface,
+                                    const FetiPreconditioner  &preconditioner,
+                                    const BlockVector<double> &mask,
+                                    const double               start,
+                                    const double               target,
+                                    const unsigned int         max_iterations,
+                                    BlockVector<double>       &r,
+                                    BlockVector<double>       &delta)
+    {
+      ConjugateGradientOutcome outcome;
+      BlockVector<double>      z, p, q;
+      Solutions                homogeneous;
+      delta.reinit(r);
+      outcome.preconditioner_solves += preconditioner.vmult(z, r);
+      p         = z;
+      double rz = r * z;
+      for (double jump = start; jump > target;)
+        {
+          if (outcome.iterations >= max_iterations)
+            {
+              outcome.limit_reached = true;
+              outcome.jump          = jump;
+              return outcome;
+            }
+          solve_homogeneous_subproblems(subproblems, interface, p, homogeneous);
+          outcome.subdomain_solves += Layout::n_subproblems;
+          interface.jumps(homogeneous, q);
+          interface.scale_by_weights(q);
+          q *= -1.; // F p
+          q.scale(mask);
+          const double pq = p * q;
+          if (!(pq > 0))
+            break; // F_II is exhausted (semidefinite directions)
+          const double alpha = rz / pq;
+          delta.add(alpha, p);
+          r.add(-alpha, q);
+          ++outcome.iterations;
+          jump = largest_jump(interface, r);
+          if (jump <= target)
+            break;
+          outcome.preconditioner_solves += preconditioner.vmult(z, r);
+          const double rz_new = r * z;
+          p.sadd(rz_new / rz, 1., z);
+          rz = rz_new;
+        }
+      return outcome;
+    }
   } // namespace
 
 
@@ -134,25 +134,14 @@ namespace bilayer
   {
     SolverResult result;
     result.solver = "active set";
-    Timer timer;
-    if (parameters.preconditioner != DualPreconditioner::none)
-      {
-        Tasks tasks;
-        for (unsigned int s = 0; s < 4; ++s)
-          if (subproblems[s] != nullptr && subproblems[s]->owned())
-            tasks.add([&, s]() {
-              subproblems[s]->setup_interface_operators(
-                parameters.preconditioner == DualPreconditioner::dirichlet);
-            });
-        tasks.join_all();
-      }
+    Timer              timer;
+    FetiPreconditioner preconditioner(parameters.preconditioner,
+                                      subproblems,
+                                      interface);
     result.setup_seconds = timer.wall_time();
     timer.restart();
-    const BlockVector<double> &lower = interface.lower_bounds();
-    const BlockVector<double> &upper = interface.upper_bounds();
-    DualPreconditionerOperator preconditioner(parameters.preconditioner,
-                                              subproblems,
-                                              interface);
+    const BlockVector<double> &lower  = interface.lower_bounds();
+    const BlockVector<double> &upper  = interface.upper_bounds();
     const auto                 finish = [&](const std::string &message) {
       result.message = message;
       if (preconditioner.n_degraded_steps() > 0)
@@ -164,15 +153,14 @@ namespace bilayer
       result.iteration_seconds = timer.wall_time();
       return result;
     };
-    BlockVector<double> g, mask(lower), previous_mask(lower), r, z, p, q, delta;
-    Solutions           homogeneous;
+    BlockVector<double> g, mask(lower), previous_mask(lower), r, delta;
     unsigned int        inner_iterations = 0;
     interface.project(mu);
 
     for (unsigned int k = 0;; ++k)
       {
         solve_subproblems(subproblems, interface, mu, w);
-        result.subdomain_solves += 4;
+        result.subdomain_solves += Layout::n_subproblems;
         result.iterations = k;
         interface.jumps(w, g);
         const KKTResidual kkt = interface.kkt_residual(w, g, mu);
@@ -235,77 +223,43 @@ namespace bilayer
           }
 
         // Newton step: F_II delta_I = (D g)_I by preconditioned conjugate
-        // gradients from delta = 0.
+        // gradients from delta = 0, to a relative reduction of the largest
+        // jump while the active set changes, else to the tolerance.
         if (k == 0 || n_changed > 0)
           preconditioner.reinit(mask);
         r = g;
         interface.scale_by_weights(r);
         r.scale(mask);
-        delta.reinit(r);
         const double scale = interface.displacement_scale(w);
         const double start = largest_jump(interface, r);
         const double target =
           std::max(settled ? 0. : parameters.inner_tolerance * start,
                    0.1 * parameters.tolerance * scale);
-        result.preconditioner_solves += preconditioner.vmult(z, r);
-        p                = z;
-        double rz        = r * z;
-        inner_iterations = 0;
-        for (double jump = start; jump > target;)
-          {
-            if (inner_iterations >= parameters.max_inner_iterations)
-              {
-                std::ostringstream msg;
-                msg << "conjugate gradients of Newton step " << k
-                    << " reached Solver/Active set/Maximum inner iterations = "
-                    << parameters.max_inner_iterations << " with largest jump "
-                    << jump << " > " << target;
-                return finish(msg.str());
-              }
-            solve_homogeneous_subproblems(subproblems,
+        const ConjugateGradientOutcome cg =
+          conjugate_gradients_on_free_set(subproblems,
                                           interface,
-                                          p,
-                                          homogeneous);
-            result.subdomain_solves += 4;
-            interface.jumps(homogeneous, q);
-            interface.scale_by_weights(q);
-            q *= -1.; // F p
-            q.scale(mask);
-            const double pq = p * q;
-            if (!(pq > 0))
-              break; // F_II is exhausted (semidefinite directions)
-            const double alpha = rz / pq;
-            delta.add(alpha, p);
-            r.add(-alpha, q);
-            ++inner_iterations;
-            jump = largest_jump(interface, r);
-            if (jump <= target)
-              break;
-            result.preconditioner_solves += preconditioner.vmult(z, r);
-            const double rz_new = r * z;
-            p.sadd(rz_new / rz, 1., z);
-            rz = rz_new;
+                                          preconditioner,
+                                          mask,
+                                          start,
+                                          target,
+                                          parameters.max_inner_iterations,
+                                          r,
+                                          delta);
+        result.subdomain_solves += cg.subdomain_solves;
+        result.preconditioner_solves += cg.preconditioner_solves;
+        inner_iterations = cg.iterations;
+        if (cg.limit_reached)
+          {
+            std::ostringstream msg;
+            msg << "conjugate gradients of Newton step " << k
+                << " reached Solver/Active set/Maximum inner iterations = "
+                << parameters.max_inner_iterations << " with largest jump "
+                << cg.jump << " > " << target;
+            return finish(msg.str());
           }
         result.linear_iterations += inner_iterations;
         mu += delta;
         interface.project(mu);
       }
-  }
-
-
-  SolverResult
-  solve_contact_problem(const SolverParameters   &parameters,
-                        const OutputParameters   &output,
-                        const ConditionalOStream &pcout,
-                        const Subproblems        &subproblems,
-                        const Interface          &interface,
-                        BlockVector<double>      &multipliers,
-                        Solutions                &solutions)
-  {
-    if (parameters.method == SolverMethod::active_set)
-      return ActiveSetSolver(parameters, output, pcout)
-        .solve(subproblems, interface, multipliers, solutions);
-    return UzawaSolver(parameters, output, pcout)
-      .solve(subproblems, interface, multipliers, solutions);
   }
 } // namespace bilayer

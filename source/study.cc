@@ -2,8 +2,8 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <bilayer/active_set_solver.h>
 #include <bilayer/estimator.h>
+#include <bilayer/outer_solver.h>
 #include <bilayer/output.h>
 #include <bilayer/resources.h>
 #include <bilayer/study.h>
@@ -246,8 +246,8 @@ namespace bilayer
     Timer               solve_timer;
     const unsigned long shared_before  = distribution.shared_values();
     const double        seconds_before = distribution.shared_seconds();
-    record.result                      = solve_contact_problem(
-      scene.solver, scene.output, pcout, solvers, coupling, mu, w);
+    record.result = create_outer_solver(scene.solver, scene.output, pcout)
+                      ->solve(solvers, coupling, mu, w);
     record.theta          = record.result.theta;
     record.solve_seconds  = solve_timer.wall_time();
     record.processes      = distribution.n_processes();

@@ -196,7 +196,6 @@ namespace bilayer
   {
     shared_solver = shared_solver_type;
     shared.reset();
-    shared_dirichlet.reset();
     Timer timer;
     dofs.distribute_dofs(*fe_system);
 
@@ -362,108 +361,31 @@ namespace bilayer
   }
 
 
-  void
-  ElasticSubproblem::setup_interface_operators(const bool dirichlet)
+  std::unique_ptr<DistributedSystem>
+  ElasticSubproblem::factorise_in_group(
+    const AffineConstraints<double> &other_constraints) const
   {
-    if (!sigma_dofs.empty() && (dirichlet_ready || !dirichlet))
-      return;
-    Timer timer;
-    if (sigma_dofs.empty())
-      {
-        const IndexSet on_sigma = DoFTools::extract_boundary_dofs(
-          dofs, ComponentMask(), {BoundaryIds::glued, BoundaryIds::crack});
-        for (const auto i : on_sigma)
-          if (!homogeneous_constraints.is_constrained(i))
-            sigma_dofs.push_back(i);
-      }
-    if (dirichlet)
-      {
-        dirichlet_constraints.clear();
-        dirichlet_constraints.merge(homogeneous_constraints);
-        for (const auto i : sigma_dofs)
-          dirichlet_constraints.add_line(i);
-        dirichlet_constraints.close();
-        if (shared)
-          {
-            // Assembled again by the group with the Sigma dofs held.
-            shared_dirichlet = std::make_unique<DistributedSystem>(
-              dofs,
-              dirichlet_constraints,
-              distribution.group_communicator(),
-              shared_solver,
-              shared.get());
-            const PerSide<bool>                no_loads{true, true, true, true};
-            const PerSide<const Function<2> *> none{};
-            CellSystem system(*fe_system, mapping(), material_, no_loads, none);
-            for (const auto &cell : dofs.active_cell_iterators())
-              if (shared_dirichlet->assembles(cell->active_cell_index()))
-                {
-                  system.compute(cell);
-                  dirichlet_constraints.distribute_local_to_global(
-                    system.cell_matrix,
-                    system.local_dofs,
-                    shared_dirichlet->matrix);
-                }
-            shared_dirichlet->finish_assembly();
-          }
-        else
-          {
-            // The sparsity pattern already holds the fill of the
-            // hanging-node condensation; holding more dofs at zero adds
-            // none.
-            dirichlet_matrix.reinit(sparsity);
-            dirichlet_matrix.copy_from(stiffness);
-            dirichlet_constraints.condense(dirichlet_matrix);
-            dirichlet_factorisation.initialize(
-              dirichlet_matrix,
-              "the Dirichlet preconditioner matrix of subproblem " + name());
-          }
-        dirichlet_ready = true;
-      }
-    interface_setup_seconds += timer.wall_time();
-  }
-
-
-  void
-  ElasticSubproblem::apply_schur_complement(const Vector<double> &x,
-                                            Vector<double>       &y) const
-  {
-    Assert(dirichlet_ready, ExcInternalError());
-    // The Sigma values of x, extended by zero ...
-    Vector<double> extension(n_dofs());
-    for (const auto i : sigma_dofs)
-      extension(i) = x(i);
-    // ... then discrete-harmonically into the interior: K_II z = -K_I. x.
-    Vector<double> interior(n_dofs());
-    multiply_stiffness(interior, extension);
-    interior *= -1.;
-    dirichlet_constraints.condense(interior);
-    if (shared_dirichlet)
-      shared_dirichlet->solve(interior, false);
-    else
-      dirichlet_factorisation.solve(interior);
-    dirichlet_constraints.distribute(interior);
-    extension += interior;
-    Vector<double> reaction(n_dofs());
-    multiply_stiffness(reaction, extension);
-    y.reinit(n_dofs());
-    for (const auto i : sigma_dofs)
-      y(i) = reaction(i);
-  }
-
-
-  void
-  ElasticSubproblem::apply_interface_stiffness(const Vector<double> &x,
-                                               Vector<double>       &y) const
-  {
-    Assert(!sigma_dofs.empty(), ExcInternalError());
-    Vector<double> extension(n_dofs()), reaction(n_dofs());
-    for (const auto i : sigma_dofs)
-      extension(i) = x(i);
-    multiply_stiffness(reaction, extension);
-    y.reinit(n_dofs());
-    for (const auto i : sigma_dofs)
-      y(i) = reaction(i);
+    Assert(shared != nullptr, ExcInternalError());
+    auto system =
+      std::make_unique<DistributedSystem>(dofs,
+                                          other_constraints,
+                                          distribution.group_communicator(),
+                                          shared_solver,
+                                          shared.get());
+    const PerSide<bool>                no_loads{{true, true, true, true}};
+    const PerSide<const Function<2> *> none{};
+    CellSystem system_of_cell(*fe_system, mapping(), material_, no_loads, none);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (system->assembles(cell->active_cell_index()))
+        {
+          system_of_cell.compute(cell);
+          other_constraints.distribute_local_to_global(
+            system_of_cell.cell_matrix,
+            system_of_cell.local_dofs,
+            system->matrix);
+        }
+    system->finish_assembly();
+    return system;
   }
 
 

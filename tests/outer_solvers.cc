@@ -13,9 +13,10 @@
 // Example 1 on 8 quadrilaterals along Sigma and on the paper's mesh1 (P1
 // triangles).
 
-#include <bilayer/contact_solver.h>
+#include <bilayer/interface_stiffness.h>
 #include <bilayer/parameters.h>
 #include <bilayer/study.h>
+#include <bilayer/subdomain_solves.h>
 
 #include <cmath>
 #include <iostream>
@@ -141,17 +142,17 @@ main()
               interface.restrict_to_free(mu);
               Solutions loads, w;
               interface.apply(mu, loads);
-              std::array<ElasticSubproblem *, 4> subproblems;
-              for (unsigned int s = 0; s < 4; ++s)
-                subproblems[s] = const_cast<ElasticSubproblem *>(
-                  &study->subproblem(static_cast<Layer>(s / 2),
-                                     static_cast<Subdomain>(s % 2)));
+              Subproblems subproblems;
+              for (const unsigned int s : Layout::subproblems)
+                subproblems[s] =
+                  &study->subproblem(Layout::layer(s), Layout::subdomain(s));
               solve_homogeneous_subproblems(subproblems, interface, mu, w);
               double error = 0, norm = 0;
-              for (unsigned int s = 0; s < 4; ++s)
+              for (const unsigned int s : Layout::subproblems)
                 {
                   Vector<double> reaction;
-                  subproblems[s]->apply_schur_complement(w[s], reaction);
+                  InterfaceStiffness(*subproblems[s], true)
+                    .apply_schur_complement(w[s], reaction);
                   reaction -= loads[s];
                   error = std::max(error, reaction.linfty_norm());
                   norm  = std::max(norm, loads[s].linfty_norm());

@@ -4,8 +4,8 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/lac/block_vector.h>
 
-#include <bilayer/contact_solver.h>
 #include <bilayer/interface.h>
+#include <bilayer/outer_solver.h>
 #include <bilayer/parameters.h>
 
 namespace bilayer
@@ -41,26 +41,20 @@ namespace bilayer
    * together.
    *
    * <h3>Linear solves</h3>
-   * Conjugate gradients on F_II, preconditioned by (Solver/Active set/
-   * Preconditioner)
-   *  - dirichlet: M^{-1} = G^{-1} B S B^T G^{-1}, S the Schur complements of
-   *    the subproblems on Sigma (ElasticSubproblem::apply_schur_complement:
-   *    one Dirichlet solve each) and G = B B^T restricted to I: the FETI
-   *    Dirichlet preconditioner with the scaling (B B^T)^{-1} B, which
-   *    bounds the condition number by C (1 + log(H/h))^2;
-   *  - lumped: the same with K_{Sigma Sigma} for S (no solves);
-   *  - none: D^{-1} (conjugate gradients in the metric of the Uzawa step).
-   * While the active set still changes, the conjugate gradients stop at a
-   * relative reduction Solver/Active set/Inner tolerance of the largest
-   * jump on I (an inexact Newton step); once it stays the same, they run
-   * until the largest jump is below Solver/Tolerance / 10 times the
+   * Conjugate gradients on F_II, preconditioned by the FetiPreconditioner
+   * of Solver/Active set/Preconditioner (dirichlet, lumped or none), which
+   * the solver builds for each solve (the Dirichlet factorisations: its
+   * set-up time). While the active set still changes, the conjugate gradients
+   * stop at a relative reduction Solver/Active set/Inner tolerance of the
+   * largest jump on I (an inexact Newton step); once it stays the same, they
+   * run until the largest jump is below Solver/Tolerance / 10 times the
    * displacement scale.
    *
    * Work: 4 subdomain solves per Newton step (the full solve at the iterate)
    * and per conjugate-gradient iteration; the Dirichlet preconditioner adds
    * 4 Dirichlet solves per application (counted as preconditioner_solves).
    */
-  class ActiveSetSolver
+  class ActiveSetSolver : public OuterSolver
   {
   public:
     ActiveSetSolver(const SolverParameters   &parameters,
@@ -73,7 +67,7 @@ namespace bilayer
     solve(const Subproblems   &subproblems,
           const Interface     &interface,
           BlockVector<double> &multipliers,
-          Solutions           &solutions) const;
+          Solutions           &solutions) const override;
 
   private:
     const SolverParameters    parameters;
@@ -81,15 +75,6 @@ namespace bilayer
     const ConditionalOStream &pcout;
   };
 
-  /// Run the outer solver that @p parameters select.
-  SolverResult
-  solve_contact_problem(const SolverParameters   &parameters,
-                        const OutputParameters   &output,
-                        const ConditionalOStream &pcout,
-                        const Subproblems        &subproblems,
-                        const Interface          &interface,
-                        BlockVector<double>      &multipliers,
-                        Solutions                &solutions);
 } // namespace bilayer
 
 #endif

@@ -3,9 +3,9 @@
 
 #include <deal.II/numerics/data_postprocessor.h>
 
-#include <bilayer/contact_solver.h>
 #include <bilayer/interface.h>
 #include <bilayer/material.h>
+#include <bilayer/outer_solver.h>
 #include <bilayer/output_directory.h>
 #include <bilayer/subproblem.h>
 

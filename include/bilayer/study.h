@@ -5,10 +5,10 @@
 #include <deal.II/base/convergence_table.h>
 #include <deal.II/lac/block_vector.h>
 
-#include <bilayer/contact_solver.h>
 #include <bilayer/distribution.h>
 #include <bilayer/geometry.h>
 #include <bilayer/interface.h>
+#include <bilayer/outer_solver.h>
 #include <bilayer/output.h>
 #include <bilayer/parameters.h>
 #include <bilayer/subproblem.h>

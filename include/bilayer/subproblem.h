@@ -131,32 +131,35 @@ namespace bilayer
     double
     energy(const Vector<double> &w) const;
 
-    /**
-     * Prepare the interface operators of the FETI-type preconditioners of
-     * the dual problem: the dofs on Sigma (not clamped) and, with
-     * @p dirichlet, the Cholesky factorisation of the stiffness matrix with
-     * the Sigma dofs held at zero as well (the "Dirichlet" subproblem, as
-     * large as the subproblem itself). Idempotent.
-     */
+    /// The constraints of solve_homogeneous(): the hanging nodes and zero
+    /// displacement on the clamped sides.
+    const AffineConstraints<double> &
+    zero_displacement_constraints() const
+    {
+      return homogeneous_constraints;
+    }
+
+    /// The unconstrained stiffness matrix K (not with distributed(): the
+    /// group holds it, see distributed_system()).
+    const SparseMatrix<double> &
+    stiffness_matrix() const
+    {
+      return stiffness;
+    }
+
+    /// y = K x, the unconstrained stiffness (collective in the group with
+    /// distributed()).
     void
-    setup_interface_operators(const bool dirichlet);
+    multiply_stiffness(Vector<double> &y, const Vector<double> &x) const;
 
     /**
-     * y = S x: the Schur complement of the stiffness matrix on the Sigma
-     * dofs (Steklov-Poincare operator: the reaction forces on Sigma of the
-     * displacement field that takes the Sigma values of @p x, is zero on
-     * Gamma_D and is discrete-harmonic inside). One Dirichlet solve; needs
-     * setup_interface_operators(true). @p y is zero off Sigma.
+     * With distributed(): the stiffness matrix under other @p constraints
+     * (e.g. more dofs held at zero), assembled by the group on the
+     * partition of distributed_system() and factorised by its parallel
+     * direct solver (collective in the group).
      */
-    void
-    apply_schur_complement(const Vector<double> &x, Vector<double> &y) const;
-
-    /// y = K_{Sigma Sigma} x (no solve); zero off Sigma.
-    void
-    apply_interface_stiffness(const Vector<double> &x, Vector<double> &y) const;
-
-    /// Wall time of setup_interface_operators() [s].
-    double interface_setup_seconds = 0;
+    std::unique_ptr<DistributedSystem>
+    factorise_in_group(const AffineConstraints<double> &constraints) const;
 
     /// "u-", "u+", "v-" or "v+".
     std::string
@@ -199,10 +202,6 @@ namespace bilayer
     double factorisation_seconds = 0;
 
   private:
-    /// y = K x, the unconstrained stiffness.
-    void
-    multiply_stiffness(Vector<double> &y, const Vector<double> &x) const;
-
     void
     assemble(const PerSide<bool>                &clamped,
              const PerSide<const Function<2> *> &traction);
@@ -212,7 +211,7 @@ namespace bilayer
     const LayerMaterial                material_;
     const Distribution                &distribution;
     std::string                        shared_solver;
-    std::unique_ptr<DistributedSystem> shared, shared_dirichlet;
+    std::unique_ptr<DistributedSystem> shared;
     /// The dofs on the faces on Sigma (glued and crack), constrained ones
     /// included: the support of every trace the interface evaluates.
     std::vector<types::global_dof_index> trace_dofs_;
@@ -226,12 +225,6 @@ namespace bilayer
     Vector<double>                       system_rhs;
     Vector<double>                       traction_load;
     SparseCholesky                       factorisation;
-    /// Sigma dofs that are not constrained, and the Dirichlet problem.
-    std::vector<types::global_dof_index> sigma_dofs;
-    AffineConstraints<double>            dirichlet_constraints;
-    SparseMatrix<double>                 dirichlet_matrix;
-    SparseCholesky                       dirichlet_factorisation;
-    bool                                 dirichlet_ready = false;
   };
 } // namespace bilayer
 

@@ -1,0 +1,175 @@
+#ifndef bilayer_first_order_iteration_h
+#define bilayer_first_order_iteration_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/lac/block_vector.h>
+
+#include <bilayer/interface.h>
+#include <bilayer/outer_solver.h>
+#include <bilayer/parameters.h>
+#include <bilayer/subdomain_solves.h>
+
+#include <string>
+
+/**
+ * @file
+ * What the two first-order iterations on the dual problem, the paper's
+ * projected Uzawa iteration (UzawaSolver) and its accelerated variant
+ * (AcceleratedSolver), share: the step of theta = auto, the projected
+ * gradient step, the stopping rules, the progress line, the message at the
+ * iteration limit and the divergence test.
+ */
+namespace bilayer
+{
+  using namespace dealii;
+
+  /**
+   * The stable steps of a first-order iteration: theta below
+   * factor * 2 / lambda_max(S), S = D^{-1} C A^{-1} C^T the dual operator.
+   * The projected gradient step is non-expansive below 2 / lambda_max
+   * (factor 1); the extrapolated steps of FISTA need theta below
+   * 1 / lambda_max (factor 1/2).
+   */
+  struct StepBound
+  {
+    double factor;
+    /// The step of theta = auto in words, after Solver/theta = auto
+    /// fraction: " * 2 / lambda_max" or " / lambda_max".
+    std::string in_words;
+  };
+
+  /// The step of theta = auto: the fraction Solver/theta = auto fraction of
+  /// the bound.
+  double
+  auto_step(const SolverParameters &parameters,
+            const StepBound        &bound,
+            const double            lambda_max);
+
+  /**
+   * theta = auto: lambda_max(S) by the power iteration (estimate_lambda_max),
+   * printed with the predicted threshold 2 / lambda_max and the step, and
+   * recorded in @p result (lambda_max, predicted_threshold, theta). Returns
+   * the subdomain solves spent.
+   */
+  unsigned long
+  choose_auto_step(const SolverParameters   &parameters,
+                   const StepBound          &bound,
+                   const Subproblems        &subproblems,
+                   const Interface          &interface,
+                   const ConditionalOStream &pcout,
+                   SolverResult             &result);
+
+  /**
+   * Step 3 of the iteration: @p next = P(@p mu + theta g), g the jumps at
+   * @p mu, P the projection onto the multiplier sets.
+   */
+  void
+  projected_step(const Interface           &interface,
+                 const double               theta,
+                 const BlockVector<double> &mu,
+                 const BlockVector<double> &g,
+                 BlockVector<double>       &next);
+
+  /// The largest violation of the jumps @p g relative to the displacement
+  /// scale of @p w (absolute where the scale is zero). Needs the traces of
+  /// all solutions.
+  double
+  relative_violation(const Interface           &interface,
+                     const Solutions           &w,
+                     const BlockVector<double> &g);
+
+  /**
+   * The value of Solver/Stopping rule at step k >= 1 of a first-order
+   * iteration at the multipliers @p mu, with solutions @p w and jumps @p g,
+   * @p w_old the solutions of the previous step and @p last_increment the
+   * D-norm of the last multiplier increment:
+   *  - kkt: the relative KKT residual;
+   *  - relative: the larger of the relative multiplier change and the
+   *    relative violation;
+   *  - paper: max_s |w_s - w_s_old|_a / |w_s|_a^2 (energy norms);
+   *  - paper with norm: max_s |w_s - w_s_old|_a / |w_s|_a.
+   */
+  double
+  stopping_value(const SolverParameters    &parameters,
+                 const Subproblems         &subproblems,
+                 const Interface           &interface,
+                 const Solutions           &w,
+                 const Solutions           &w_old,
+                 const BlockVector<double> &g,
+                 const BlockVector<double> &mu,
+                 const double               last_increment);
+
+  /// Every Output/Progress interval steps: the stopping value, the last
+  /// multiplier change and the relative violation, one line.
+  void
+  print_progress(const OutputParameters    &output,
+                 const ConditionalOStream  &pcout,
+                 const unsigned int         k,
+                 const double               value,
+                 const double               last_increment,
+                 const Interface           &interface,
+                 const Solutions           &w,
+                 const BlockVector<double> &g);
+
+  /**
+   * The message of a first-order iteration stopped at Solver/Maximum
+   * iterations with stopping value @p value: under the paper's stopping rule
+   * why that rule may never hold, else @p advice (begins with "; ").
+   */
+  std::string
+  iteration_limit_message(const SolverParameters &parameters,
+                          const double            value,
+                          const std::string      &advice);
+
+  /**
+   * The divergence test of the first-order iterations: stop when the
+   * multipliers or solutions stop being finite, or when the D-norm of the
+   * multiplier increment exceeds its smallest value so far by Solver/
+   * Divergence growth factor: for theta below the threshold
+   * 2 / lambda_max(D^{-1} C A^{-1} C^T) the projected step is
+   * non-expansive, so the increments cannot grow. Its message ends with the
+   * step that theta = auto would take (safe_step_advice()).
+   */
+  class DivergenceTest
+  {
+  public:
+    /// @p lambda_max: the estimate of theta = auto, or 0 if none was made.
+    DivergenceTest(const SolverParameters &parameters,
+                   const StepBound        &bound,
+                   const Subproblems      &subproblems,
+                   const Interface        &interface,
+                   const double            theta,
+                   const double            lambda_max);
+
+    /**
+     * At step k, with stopping value @p value (infinite at k = 0) and the
+     * increment @p increment = |x_k - x_{k+1}|_D to the next iterate
+     * @p next: why the iteration diverged, or an empty string, and then the
+     * increment enters the smallest one so far.
+     */
+    std::string
+    check(const unsigned int         k,
+          const double               value,
+          const double               increment,
+          const BlockVector<double> &next);
+
+  private:
+    /**
+     * "; estimated safe step: theta <= ... (...)", the step of theta = auto
+     * from lambda_max, estimated now by a power iteration unless theta =
+     * auto already did (its solves are not added to
+     * SolverResult::subdomain_solves); empty without a usable estimate.
+     */
+    std::string
+    safe_step_advice() const;
+
+    const SolverParameters &parameters;
+    const StepBound        &bound;
+    const Subproblems      &subproblems;
+    const Interface        &interface;
+    const double            theta, lambda_max;
+    double                  min_increment;
+  };
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,209 @@
+#include <bilayer/first_order_iteration.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace bilayer
+{
+  double
+  auto_step(const SolverParameters &parameters,
+            const StepBound        &bound,
+            const double            lambda_max)
+  {
+    return parameters.auto_theta_fraction * 2. / lambda_max * bound.factor;
+  }
+
+
+  unsigned long
+  choose_auto_step(const SolverParameters   &parameters,
+                   const StepBound          &bound,
+                   const Subproblems        &subproblems,
+                   const Interface          &interface,
+                   const ConditionalOStream &pcout,
+                   SolverResult             &result)
+  {
+    const SpectrumEstimate estimate =
+      estimate_lambda_max(subproblems,
+                          interface,
+                          parameters.spectrum_iterations);
+    result.lambda_max          = estimate.lambda_max;
+    result.predicted_threshold = 2. / estimate.lambda_max;
+    result.theta = auto_step(parameters, bound, estimate.lambda_max);
+    pcout << "    theta = auto: lambda_max(S) = " << std::setprecision(6)
+          << estimate.lambda_max << " after " << estimate.iterations
+          << " power iterations, predicted threshold 2/lambda_max = "
+          << result.predicted_threshold << ", theta = " << result.theta
+          << std::defaultfloat << std::endl;
+    return estimate.subdomain_solves;
+  }
+
+
+  void
+  projected_step(const Interface           &interface,
+                 const double               theta,
+                 const BlockVector<double> &mu,
+                 const BlockVector<double> &g,
+                 BlockVector<double>       &next)
+  {
+    next = mu;
+    next.add(theta, g);
+    interface.project(next);
+  }
+
+
+  double
+  relative_violation(const Interface           &interface,
+                     const Solutions           &w,
+                     const BlockVector<double> &g)
+  {
+    const double scale     = interface.displacement_scale(w);
+    const double violation = interface.discrete_violation(g);
+    return scale > 0 ? violation / scale : violation;
+  }
+
+
+  double
+  stopping_value(const SolverParameters    &parameters,
+                 const Subproblems         &subproblems,
+                 const Interface           &interface,
+                 const Solutions           &w,
+                 const Solutions           &w_old,
+                 const BlockVector<double> &g,
+                 const BlockVector<double> &mu,
+                 const double               last_increment)
+  {
+    if (parameters.stopping_rule == StoppingRule::kkt)
+      return interface.kkt_residual(w, g, mu).value();
+    if (parameters.stopping_rule == StoppingRule::relative)
+      {
+        const double norm   = interface.weighted_norm(mu);
+        const double change = norm > 0 ? last_increment / norm : last_increment;
+        return std::max(change, relative_violation(interface, w, g));
+      }
+    // Energy norms of whole solutions: each owner evaluates its own.
+    Vector<double>              difference;
+    const PerSubproblem<double> ratios =
+      share_values(subproblems, [&](const unsigned int s) {
+        difference = w[s];
+        difference -= w_old[s];
+        const double d =
+          std::sqrt(subproblems[s]->energy_norm_squared(difference));
+        const double n2 = subproblems[s]->energy_norm_squared(w[s]);
+        const double denominator =
+          parameters.stopping_rule == StoppingRule::paper ? n2 : std::sqrt(n2);
+        return d == 0. ? 0. : d / denominator;
+      });
+    double value = 0;
+    for (const double ratio : ratios)
+      value = std::max(value, ratio);
+    return value;
+  }
+
+
+  void
+  print_progress(const OutputParameters    &output,
+                 const ConditionalOStream  &pcout,
+                 const unsigned int         k,
+                 const double               value,
+                 const double               last_increment,
+                 const Interface           &interface,
+                 const Solutions           &w,
+                 const BlockVector<double> &g)
+  {
+    if (output.progress_interval > 0 && k > 0 &&
+        k % output.progress_interval == 0)
+      pcout << "    iteration " << std::setw(6) << k << "  stopping value "
+            << std::scientific << std::setprecision(3) << value
+            << "  multiplier change " << last_increment
+            << "  relative violation " << relative_violation(interface, w, g)
+            << std::defaultfloat << std::endl;
+  }
+
+
+  std::string
+  iteration_limit_message(const SolverParameters &parameters,
+                          const double            value,
+                          const std::string      &advice)
+  {
+    std::ostringstream msg;
+    msg << "iteration limit " << parameters.max_iterations
+        << " reached (Solver/Maximum iterations) with stopping value " << value
+        << " > Solver/Tolerance " << parameters.tolerance
+        << (parameters.stopping_rule == StoppingRule::paper ?
+              "; the paper's rule |w^k - w^k-1| / |w^k|^2 is not "
+              "scale invariant (it grows as the loads shrink): "
+              "Solver/Stopping rule = relative or kkt" :
+              advice);
+    return msg.str();
+  }
+
+
+  DivergenceTest::DivergenceTest(const SolverParameters &parameters,
+                                 const StepBound        &bound,
+                                 const Subproblems      &subproblems,
+                                 const Interface        &interface,
+                                 const double            theta,
+                                 const double            lambda_max)
+    : parameters(parameters)
+    , bound(bound)
+    , subproblems(subproblems)
+    , interface(interface)
+    , theta(theta)
+    , lambda_max(lambda_max)
+    , min_increment(std::numeric_limits<double>::max())
+  {}
+
+
+  std::string
+  DivergenceTest::check(const unsigned int         k,
+                        const double               value,
+                        const double               increment,
+                        const BlockVector<double> &next)
+  {
+    if (!std::isfinite(increment) || (k >= 1 && !std::isfinite(value)))
+      return k == 0 ?
+               "the first subdomain solutions or jumps are not finite: the "
+               "loads and moduli (Loads, Materials) give displacements "
+               "beyond the range of double; state them in other units" :
+               "diverged: the iterates are no longer finite at iteration " +
+                 std::to_string(k) + " (reduce Solver/Uzawa step theta" +
+                 safe_step_advice() + ")";
+    if (increment > parameters.divergence_factor * min_increment &&
+        increment > 1e-12 * interface.weighted_norm(next))
+      {
+        std::ostringstream msg;
+        msg << "diverged at iteration " << k
+            << ": the multiplier increment grew by more than "
+            << parameters.divergence_factor
+            << " (Solver/Divergence growth factor); theta = " << theta
+            << " is above the stability threshold, reduce "
+               "Solver/Uzawa step theta"
+            << safe_step_advice();
+        return msg.str();
+      }
+    min_increment = std::min(min_increment, increment);
+    return std::string();
+  }
+
+
+  std::string
+  DivergenceTest::safe_step_advice() const
+  {
+    double estimate = lambda_max;
+    if (!(estimate > 0))
+      estimate = estimate_lambda_max(subproblems,
+                                     interface,
+                                     parameters.spectrum_iterations)
+                   .lambda_max;
+    const double step = auto_step(parameters, bound, estimate);
+    if (!std::isfinite(step) || !(estimate > 0))
+      return std::string();
+    std::ostringstream text;
+    text << std::setprecision(4) << "; estimated safe step: theta <= " << step
+         << " (" << parameters.auto_theta_fraction << bound.in_words
+         << ", or theta = auto)";
+    return text.str();
+  }
+} // namespace bilayer
