@@ -19,31 +19,6 @@ namespace bilayer
 {
   namespace
   {
-    /// A JSON number (null for NaN and infinities), with the 17
-    /// significant digits that identify the double.
-    std::string
-    json(const double value)
-    {
-      if (!std::isfinite(value))
-        return "null";
-      std::ostringstream s;
-      s << std::setprecision(17) << value;
-      return s.str();
-    }
-
-    std::string
-    json(const std::string &text)
-    {
-      std::string quoted = "\"";
-      for (const char c : text)
-        {
-          if (c == '"' || c == '\\')
-            quoted += '\\';
-          quoted += c;
-        }
-      return quoted + "\"";
-    }
-
     std::string
     two_digits(const unsigned int n)
     {
@@ -52,28 +27,6 @@ namespace bilayer
       return s.str();
     }
   } // namespace
-
-
-  bool
-  CycleRecord::accepted() const
-  {
-    for (const auto &c : checks)
-      if (!c.second)
-        return false;
-    return !checks.empty();
-  }
-
-
-  std::string
-  CycleRecord::failure() const
-  {
-    std::string failed;
-    for (const auto &c : checks)
-      if (!c.second)
-        failed += (failed.empty() ? "" : ", ") + c.first;
-    return failed + " (" + result.message + ")" +
-           (note.empty() ? "" : "; " + note);
-  }
 
 
   Study::Study(const Scene        &scene,
@@ -302,7 +255,7 @@ namespace bilayer
     record.memory_mib = distribution.gather(memory.VmHWM / 1024.);
 
     cycle_records.push_back(record);
-    add_to_table(record);
+    add_to_table(table, record);
     if (distribution.is_root())
       writing([&]() {
         if (scene.output.write_interface)
@@ -310,14 +263,17 @@ namespace bilayer
                            [&](std::ostream &o) {
                              coupling.write_csv(o, w, mu);
                            });
-        write_summary();
+        write_atomically(dir + "/summary.json", [&](std::ostream &o) {
+          write_summary_json(o, scene.name, cycle_records);
+        });
         write_atomically(dir + "/table.txt", [&](std::ostream &o) {
           table.write_text(o, TableHandler::org_mode_table);
         });
         write_atomically(dir + "/table.tex",
                          [&](std::ostream &o) { table.write_tex(o); });
-        write_atomically(dir + "/table.csv",
-                         [&](std::ostream &o) { write_csv_table(o); });
+        write_atomically(dir + "/table.csv", [&](std::ostream &o) {
+          write_csv_table(o, cycle_records);
+        });
       });
     write_error = distribution.first_error(write_error);
     if (!write_error.empty())
@@ -453,136 +409,5 @@ namespace bilayer
     if (!record.accepted())
       rout << "bilayer: cycle " << record.cycle
            << " FAILED: " << record.failure() << std::endl;
-  }
-
-
-  void
-  Study::add_to_table(const CycleRecord &r)
-  {
-    table.add_value("cycle", r.cycle);
-    table.add_value("P", r.P);
-    table.add_value("M", r.M);
-    table.add_value("h-min", r.minus.h_min);
-    table.add_value("h-max", r.minus.h_max);
-    table.add_value("h+min", r.plus.h_min);
-    table.add_value("h+max", r.plus.h_max);
-    table.add_value("Nod-", r.minus.vertices);
-    table.add_value("Cells-", r.minus.cells);
-    table.add_value("Nod+", r.plus.vertices);
-    table.add_value("Cells+", r.plus.cells);
-    table.add_value("dofs", r.dofs);
-    table.add_value("iter", r.result.iterations);
-    table.add_value("solves",
-                    static_cast<unsigned int>(r.result.subdomain_solves));
-    table.add_value("energy", r.energy);
-    table.add_value("violation", r.report.constraint_violation);
-    table.add_value("time [s]", r.total_seconds);
-    for (const auto &key : {"h-min", "h-max", "h+min", "h+max"})
-      table.set_precision(key, 4);
-    table.set_precision("energy", 8);
-    table.set_scientific("energy", true);
-    table.set_precision("violation", 2);
-    table.set_scientific("violation", true);
-    table.set_precision("time [s]", 3);
-  }
-
-
-  void
-  Study::write_csv_table(std::ostream &o) const
-  {
-    o << "cycle,P,M,h_min_minus,h_max_minus,h_min_plus,h_max_plus,"
-         "vertices_minus,cells_minus,vertices_plus,cells_plus,dofs,"
-         "multipliers,theta,iterations,subdomain_solves,converged,energy,"
-         "constraint_violation,max_penetration,setup_seconds,solve_seconds,"
-         "total_seconds\n";
-    for (const auto &r : cycle_records)
-      o << r.cycle << ',' << r.P << ',' << r.M << ',' << json(r.minus.h_min)
-        << ',' << json(r.minus.h_max) << ',' << json(r.plus.h_min) << ','
-        << json(r.plus.h_max) << ',' << r.minus.vertices << ',' << r.minus.cells
-        << ',' << r.plus.vertices << ',' << r.plus.cells << ',' << r.dofs << ','
-        << r.multipliers << ',' << json(r.theta) << ',' << r.result.iterations
-        << ',' << r.result.subdomain_solves << ','
-        << (r.result.converged ? 1 : 0) << ',' << json(r.energy) << ','
-        << json(r.report.constraint_violation) << ','
-        << json(r.report.max_penetration) << ',' << json(r.setup_seconds) << ','
-        << json(r.solve_seconds) << ',' << json(r.total_seconds) << '\n';
-  }
-
-
-  void
-  Study::write_summary() const
-  {
-    write_atomically(
-      scene.output.directory + "/summary.json", [&](std::ostream &o) {
-        o << "{\n  \"scene\": " << json(scene.name) << ",\n  \"cycles\": [";
-        for (unsigned int i = 0; i < cycle_records.size(); ++i)
-          {
-            const auto &r = cycle_records[i];
-            const auto &k = r.report;
-            o << (i ? "," : "") << "\n    {"
-              << "\"cycle\": " << r.cycle
-              << ", \"vertices_minus\": " << r.minus.vertices
-              << ", \"cells_minus\": " << r.minus.cells
-              << ", \"vertices_plus\": " << r.plus.vertices
-              << ", \"cells_plus\": " << r.plus.cells << ", \"P\": " << r.P
-              << ", \"M\": " << r.M
-              << ", \"h_min_minus\": " << json(r.minus.h_min)
-              << ", \"h_max_minus\": " << json(r.minus.h_max)
-              << ", \"h_min_plus\": " << json(r.plus.h_min)
-              << ", \"h_max_plus\": " << json(r.plus.h_max)
-              << ", \"dofs\": " << r.dofs
-              << ", \"multipliers\": " << r.multipliers
-              << ", \"solver\": " << json(r.result.solver)
-              << ", \"theta\": " << json(r.theta)
-              << ", \"lambda_max\": " << json(r.result.lambda_max)
-              << ", \"predicted_threshold\": "
-              << json(r.result.predicted_threshold)
-              << ", \"threshold_at_solution\": "
-              << json(r.result.threshold_at_solution)
-              << ", \"iterations\": " << r.result.iterations
-              << ", \"subdomain_solves\": " << r.result.subdomain_solves
-              << ", \"preconditioner_solves\": "
-              << r.result.preconditioner_solves
-              << ", \"linear_iterations\": " << r.result.linear_iterations
-              << ", \"converged\": " << (r.result.converged ? "true" : "false")
-              << ", \"diverged\": " << (r.result.diverged ? "true" : "false")
-              << ", \"stopping_value\": " << json(r.result.stopping_value)
-              << ", \"message\": " << json(r.result.message)
-              << ", \"energy\": " << json(r.energy)
-              << ", \"constraint_violation\": " << json(k.constraint_violation)
-              << ", \"relative_constraint_violation\": "
-              << json(k.relative_constraint_violation)
-              << ", \"max_penetration\": " << json(k.max_penetration)
-              << ", \"displacement_scale\": " << json(k.displacement_scale)
-              << ", \"relative_discrete_violation\": "
-              << json(k.relative_discrete_violation)
-              << ", \"min_contact_multiplier\": "
-              << json(k.min_contact_multiplier)
-              << ", \"complementarity\": " << json(k.complementarity)
-              << ", \"max_multiplier_over_bound\": "
-              << json(k.max_multiplier_over_bound)
-              << ", \"kkt_residual\": " << json(k.kkt.value())
-              << ", \"kkt\": {\"primal\": " << json(k.kkt.primal)
-              << ", \"dual\": " << json(k.kkt.dual)
-              << ", \"complementarity\": " << json(k.kkt.complementarity) << "}"
-              << ", \"accepted\": " << (r.accepted() ? "true" : "false")
-              << ", \"processes\": " << r.processes
-              << ", \"shared_values\": " << r.shared_values
-              << ", \"shared_seconds\": " << json(r.shared_seconds)
-              << ", \"memory_mib\": [";
-            for (unsigned int p = 0; p < r.memory_mib.size(); ++p)
-              o << (p ? ", " : "") << json(r.memory_mib[p]);
-            o << "]"
-              << ", \"memory_estimate_mib\": " << json(r.memory_estimate_mib)
-              << ", \"wall_seconds\": {\"setup\": " << json(r.setup_seconds)
-              << ", \"assembly\": " << json(r.assembly_seconds)
-              << ", \"factorisation\": " << json(r.factorisation_seconds)
-              << ", \"solve\": " << json(r.solve_seconds)
-              << ", \"solver_setup\": " << json(r.result.setup_seconds)
-              << ", \"iteration\": " << json(r.result.iteration_seconds)
-              << ", \"total\": " << json(r.total_seconds) << "}}";
-          }
-        o << "\n  ]\n}\n";
-      });
   }
 } // namespace bilayer

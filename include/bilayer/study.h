@@ -6,6 +6,7 @@
 #include <deal.II/lac/block_vector.h>
 
 #include <bilayer/contact_solver.h>
+#include <bilayer/cycle_record.h>
 #include <bilayer/distribution.h>
 #include <bilayer/geometry.h>
 #include <bilayer/interface.h>
@@ -15,55 +16,11 @@
 
 #include <memory>
 #include <ostream>
-#include <string>
-#include <utility>
 #include <vector>
 
 namespace bilayer
 {
   using namespace dealii;
-
-  /// Everything reported about one cycle (one mesh) of a study.
-  struct CycleRecord
-  {
-    unsigned int   cycle = 0;
-    MeshStatistics minus, plus;
-    /// Vertices on Sigma and on the outer boundary (P and M of Table 1).
-    unsigned int    P = 0, M = 0;
-    unsigned int    dofs = 0, multipliers = 0;
-    double          theta = 0;
-    SolverResult    result;
-    double          energy = 0;
-    InterfaceReport report;
-    /// Acceptance checks: (description, passed).
-    std::vector<std::pair<std::string, bool>> checks;
-    double setup_seconds = 0, solve_seconds = 0, total_seconds = 0;
-    /// MPI processes, values sent from the subproblems' owners to all
-    /// processes in the iterations (traces on Sigma), and the peak resident
-    /// memory of each process [MiB].
-    unsigned int  processes     = 1;
-    unsigned long shared_values = 0;
-    /// Wall time of that exchange on the first process [s].
-    double              shared_seconds = 0;
-    std::vector<double> memory_mib;
-    /// The memory this cycle was estimated to need before it was built
-    /// (bilayer/resources.h) [MiB].
-    double memory_estimate_mib = 0;
-    /// Parts of setup_seconds: assembly and factorisation of the four
-    /// subproblems, summed.
-    double assembly_seconds = 0, factorisation_seconds = 0;
-
-    /// What the solver or the checks add to a failure (e.g. the bound p).
-    std::string note;
-
-    bool
-    accepted() const;
-
-    /// One line for a cycle that is not accepted: the failed checks, the
-    /// solver's message and the note.
-    std::string
-    failure() const;
-  };
 
   /**
    * The outer loop: for each cycle build the two meshes, the four
@@ -133,12 +90,6 @@ namespace bilayer
     check(CycleRecord &record) const;
     void
     print_report(const CycleRecord &record) const;
-    void
-    write_summary() const;
-    void
-    write_csv_table(std::ostream &out) const;
-    void
-    add_to_table(const CycleRecord &record);
 
     const Scene         scene;
     std::ostream       &out;
@@ -153,7 +104,8 @@ namespace bilayer
     BlockVector<double>                               mu;
     std::vector<CycleRecord>                          cycle_records;
     SolutionRecords                                   outputs;
-    ConvergenceTable                                  table;
+    /// The mesh-size table of the cycles so far.
+    ConvergenceTable table;
     /// Error indicators of the last cycle, per subdomain (adaptive
     /// refinement).
     std::array<Vector<float>, 2> indicators;
