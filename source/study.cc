@@ -19,6 +19,9 @@ namespace bilayer
 {
   namespace
   {
+    /// The sides of Omega (Side), each with its own traction.
+    constexpr unsigned int n_sides = 4;
+
     std::string
     two_digits(const unsigned int n)
     {
@@ -26,6 +29,35 @@ namespace bilayer
       s << std::setw(2) << std::setfill('0') << n;
       return s.str();
     }
+
+    /**
+     * Runs writers until one fails and keeps that failure as one line (a
+     * file that cannot be written, e.g. on a full disk, stops every process
+     * together, with the file and the reason).
+     */
+    class FirstFailure
+    {
+    public:
+      void
+      operator()(const std::function<void()> &write)
+      {
+        if (message.empty())
+          try
+            {
+              write();
+            }
+          catch (const ExceptionBase &e)
+            {
+              message = one_line_message(e);
+            }
+          catch (const std::exception &e)
+            {
+              message = e.what();
+            }
+      }
+
+      std::string message;
+    };
   } // namespace
 
 
@@ -63,7 +95,8 @@ namespace bilayer
 
 
   void
-  Study::set_indicators(const std::array<Vector<float>, 2> &new_indicators)
+  Study::set_indicators(
+    const std::array<Vector<float>, Layout::n_subdomains> &new_indicators)
   {
     for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
       AssertThrow(new_indicators[static_cast<unsigned int>(s)].size() ==
@@ -80,12 +113,53 @@ namespace bilayer
     Timer       total;
     CycleRecord record;
     record.cycle = cycle;
-
-    // The multipliers of the previous cycle, for a warm start.
+    // The multipliers of the previous cycle, for a warm start (read before
+    // the subproblems they live on are replaced).
     const bool warm =
       scene.solver.warm_start && !cycle_records.empty() && mu.size() > 0;
     const Interface::MultiplierFunctions previous =
       warm ? coupling.functions(mu) : Interface::MultiplierFunctions();
+
+    build_meshes(record);
+    check_memory(record);
+    set_up_subproblems();
+    count_subproblems(record);
+    set_up_interface(record, warm ? &previous : nullptr);
+    record.setup_seconds = total.wall_time();
+    solve(record);
+    assess(record);
+    write(record, total);
+    print_report(record);
+    // Every process's files are complete before the run may commit them.
+    distribution.barrier();
+    return cycle_records.back();
+  }
+
+
+  PerSubproblem<const ElasticSubproblem *>
+  Study::subproblem_views() const
+  {
+    PerSubproblem<const ElasticSubproblem *> views;
+    for (const unsigned int s : Layout::subproblems)
+      views[s] = subproblems[s].get();
+    return views;
+  }
+
+
+  Subproblems
+  Study::subproblem_solvers() const
+  {
+    Subproblems solvers;
+    for (const unsigned int s : Layout::subproblems)
+      solvers[s] = subproblems[s].get();
+    return solvers;
+  }
+
+
+  void
+  Study::build_meshes(CycleRecord &record)
+  {
+    const unsigned int cycle = record.cycle;
     for (auto &sub : subproblems)
       sub.reset();
     if (cycle > 0 && scene.mesh.refinement == Refinement::adaptive)
@@ -103,39 +177,51 @@ namespace bilayer
     record.plus  = domain.statistics(Subdomain::plus);
     record.P     = domain.n_sigma_vertices();
     record.M     = domain.n_outer_vertices();
-    {
-      // Adaptive cycles and mesh files: the sizes are known only now.
-      const ResourceEstimate need =
-        estimate_resources(scene, record.minus.cells, record.plus.cells);
-      record.memory_estimate_mib = need.memory / (1 << 20);
-      const double available     = distribution.max(-available_memory());
-      if (need.memory > -available)
-        throw RunFailure(cycle,
-                         "the meshes of this cycle (" +
-                           std::to_string(record.minus.cells +
-                                          record.plus.cells) +
-                           " cells) would need about " +
-                           format_bytes(need.memory) + " of memory, but " +
-                           format_bytes(-available) +
-                           " are available: use fewer cycles "
-                           "(Mesh/Number of cycles) or a smaller "
-                           "Mesh/Refinement fraction");
-    }
+  }
 
-    // The loads of each layer, then the four set-ups (assembly and
+
+  void
+  Study::check_memory(CycleRecord &record) const
+  {
+    // Adaptive cycles and mesh files: the sizes are known only now.
+    const ResourceEstimate need =
+      estimate_resources(scene, record.minus.cells, record.plus.cells);
+    record.memory_estimate_mib = need.memory / (1 << 20);
+    const double available     = distribution.max(-available_memory());
+    if (need.memory > -available)
+      throw RunFailure(record.cycle,
+                       "the meshes of this cycle (" +
+                         std::to_string(record.minus.cells +
+                                        record.plus.cells) +
+                         " cells) would need about " +
+                         format_bytes(need.memory) + " of memory, but " +
+                         format_bytes(-available) +
+                         " are available: use fewer cycles "
+                         "(Mesh/Number of cycles) or a smaller "
+                         "Mesh/Refinement fraction");
+  }
+
+
+  void
+  Study::set_up_subproblems()
+  {
+    // The loads of each layer, then the set-ups (assembly and
     // factorisation) as parallel tasks.
-    std::array<decltype(scene.loads.prescribed_function(Layer::first)), 2>
+    std::array<decltype(scene.loads.prescribed_function(Layer::first)),
+               Layout::n_layers>
       prescribed;
-    std::array<std::array<std::unique_ptr<FunctionParser<2>>, 4>, 2>
-                                                      traction_owners;
-    std::array<std::array<const Function<2> *, 4>, 2> traction;
-    Tasks                                             setups;
+    std::array<std::array<std::unique_ptr<FunctionParser<2>>, n_sides>,
+               Layout::n_layers>
+      traction_owners;
+    std::array<std::array<const Function<2> *, n_sides>, Layout::n_layers>
+          traction;
+    Tasks setups;
     for (const Layer layer : {Layer::first, Layer::second})
       if (scene.materials.has_layer(layer))
         {
           const unsigned int l = static_cast<unsigned int>(layer);
           prescribed[l]        = scene.loads.prescribed_function(layer);
-          for (unsigned int side = 0; side < 4; ++side)
+          for (unsigned int side = 0; side < n_sides; ++side)
             {
               traction_owners[l][side] =
                 scene.loads.traction_function(layer, static_cast<Side>(side));
@@ -143,7 +229,7 @@ namespace bilayer
             }
           for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
             {
-              auto &sub = subproblems[Interface::index(layer, sd)];
+              auto &sub = subproblems[Layout::index(layer, sd)];
               sub =
                 std::make_unique<ElasticSubproblem>(layer,
                                                     sd,
@@ -161,34 +247,44 @@ namespace bilayer
             }
         }
     setups.join_all();
+  }
+
+
+  void
+  Study::count_subproblems(CycleRecord &record) const
+  {
     for (const auto &sub : subproblems)
       if (sub)
         record.dofs += sub->n_dofs();
-    std::array<const ElasticSubproblem *, 4> views;
-    Subproblems                              solvers;
-    for (unsigned int s = 0; s < 4; ++s)
-      {
-        views[s]   = subproblems[s].get();
-        solvers[s] = subproblems[s].get();
-      }
-    for (unsigned int s = 0; s < 4; ++s)
-      if (subproblems[s] != nullptr && subproblems[s]->owned())
+    for (const auto &sub : subproblems)
+      if (sub != nullptr && sub->owned())
         {
-          record.assembly_seconds += subproblems[s]->assembly_seconds;
-          record.factorisation_seconds += subproblems[s]->factorisation_seconds;
+          record.assembly_seconds += sub->assembly_seconds;
+          record.factorisation_seconds += sub->factorisation_seconds;
         }
     // The busiest process's share.
     record.assembly_seconds = distribution.max(record.assembly_seconds);
     record.factorisation_seconds =
       distribution.max(record.factorisation_seconds);
-    coupling.setup(views);
-    coupling.initialize(mu);
-    if (warm)
-      coupling.interpolate(previous, mu);
-    record.multipliers   = coupling.n_multipliers();
-    record.setup_seconds = total.wall_time();
+  }
 
-    pcout << "Cycle " << cycle << ": " << record.minus.cells << " + "
+
+  void
+  Study::set_up_interface(CycleRecord                          &record,
+                          const Interface::MultiplierFunctions *previous)
+  {
+    coupling.setup(subproblem_views());
+    coupling.initialize(mu);
+    if (previous != nullptr)
+      coupling.interpolate(*previous, mu);
+    record.multipliers = coupling.n_multipliers();
+  }
+
+
+  void
+  Study::solve(CycleRecord &record)
+  {
+    pcout << "Cycle " << record.cycle << ": " << record.minus.cells << " + "
           << record.plus.cells << " "
           << (scene.mesh.shape == ElementShape::quadrilateral ?
                 "quadrilaterals" :
@@ -200,55 +296,51 @@ namespace bilayer
     const unsigned long shared_before  = distribution.shared_values();
     const double        seconds_before = distribution.shared_seconds();
     record.result                      = solve_contact_problem(
-      scene.solver, scene.output, pcout, solvers, coupling, mu, w);
+      scene.solver, scene.output, pcout, subproblem_solvers(), coupling, mu, w);
     record.theta          = record.result.theta;
     record.solve_seconds  = solve_timer.wall_time();
     record.processes      = distribution.n_processes();
     record.shared_values  = distribution.shared_values() - shared_before;
     record.shared_seconds = distribution.shared_seconds() - seconds_before;
+  }
 
+
+  void
+  Study::assess(CycleRecord &record)
+  {
     // Energies (whole solutions: evaluated by the owners), summed in the
     // order of the subproblems as in a serial run.
-    for (const double e : share_values(solvers, [&](const unsigned int s) {
+    for (const double e :
+         share_values(subproblem_solvers(), [&](const unsigned int s) {
            return subproblems[s]->energy(w[s]);
          }))
       record.energy += e;
     record.report = coupling.assess(w, mu);
     check(record);
     if (scene.mesh.refinement == Refinement::adaptive)
-      indicators = estimate_error(views,
+      indicators = estimate_error(subproblem_views(),
                                   coupling,
                                   w,
                                   mu,
                                   scene.mesh.interface_terms,
                                   scene.mesh.contact_weight);
+  }
 
-    // A file that cannot be written (a full disk) stops every process
-    // together, with the file and the reason.
+
+  void
+  Study::write(CycleRecord &record, const Timer &total)
+  {
     const std::string &dir = scene.output.directory;
-    std::string        write_error;
-    const auto         writing = [&](const std::function<void()> &write) {
-      if (write_error.empty())
-        try
-          {
-            write();
-          }
-        catch (const ExceptionBase &e)
-          {
-            write_error = one_line_message(e);
-          }
-        catch (const std::exception &e)
-          {
-            write_error = e.what();
-          }
-    };
+    FirstFailure       writing;
     // (Each cycle: drivers may call run_cycle() without run().)
     if (distribution.is_root())
       writing([&]() { std::filesystem::create_directories(dir); });
     distribution.barrier();
     if (scene.output.write_vtu || scene.output.write_hdf5)
-      writing(
-        [&]() { write_solution(dir, cycle, views, w, scene.output, outputs); });
+      writing([&]() {
+        write_solution(
+          dir, record.cycle, subproblem_views(), w, scene.output, outputs);
+      });
     record.total_seconds = distribution.max(total.wall_time());
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
@@ -257,32 +349,32 @@ namespace bilayer
     cycle_records.push_back(record);
     add_to_table(table, record);
     if (distribution.is_root())
-      writing([&]() {
-        if (scene.output.write_interface)
-          write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
-                           [&](std::ostream &o) {
-                             coupling.write_csv(o, w, mu);
-                           });
-        write_atomically(dir + "/summary.json", [&](std::ostream &o) {
-          write_summary_json(o, scene.name, cycle_records);
-        });
-        write_atomically(dir + "/table.txt", [&](std::ostream &o) {
-          table.write_text(o, TableHandler::org_mode_table);
-        });
-        write_atomically(dir + "/table.tex",
-                         [&](std::ostream &o) { table.write_tex(o); });
-        write_atomically(dir + "/table.csv", [&](std::ostream &o) {
-          write_csv_table(o, cycle_records);
-        });
-      });
-    write_error = distribution.first_error(write_error);
-    if (!write_error.empty())
+      writing([&]() { write_records(record.cycle); });
+    const std::string error = distribution.first_error(writing.message);
+    if (!error.empty())
       throw CollectiveError("writing the results of cycle " +
-                            std::to_string(cycle) + " failed: " + write_error);
-    print_report(record);
-    // Every process's files are complete before the run may commit them.
-    distribution.barrier();
-    return cycle_records.back();
+                            std::to_string(record.cycle) + " failed: " + error);
+  }
+
+
+  void
+  Study::write_records(const unsigned int cycle) const
+  {
+    const std::string &dir = scene.output.directory;
+    if (scene.output.write_interface)
+      write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
+                       [&](std::ostream &o) { coupling.write_csv(o, w, mu); });
+    write_atomically(dir + "/summary.json", [&](std::ostream &o) {
+      write_summary_json(o, scene.name, cycle_records);
+    });
+    write_atomically(dir + "/table.txt", [&](std::ostream &o) {
+      table.write_text(o, TableHandler::org_mode_table);
+    });
+    write_atomically(dir + "/table.tex",
+                     [&](std::ostream &o) { table.write_tex(o); });
+    write_atomically(dir + "/table.csv", [&](std::ostream &o) {
+      write_csv_table(o, cycle_records);
+    });
   }
 
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/convergence_table.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/block_vector.h>
 
 #include <bilayer/contact_solver.h>
@@ -10,10 +11,12 @@
 #include <bilayer/distribution.h>
 #include <bilayer/geometry.h>
 #include <bilayer/interface.h>
+#include <bilayer/layout.h>
 #include <bilayer/output.h>
 #include <bilayer/parameters.h>
 #include <bilayer/subproblem.h>
 
+#include <array>
 #include <memory>
 #include <ostream>
 #include <vector>
@@ -73,7 +76,7 @@ namespace bilayer
     const ElasticSubproblem &
     subproblem(const Layer layer, const Subdomain subdomain) const
     {
-      return *subproblems[Interface::index(layer, subdomain)];
+      return *subproblems[Layout::index(layer, subdomain)];
     }
 
     /**
@@ -83,13 +86,58 @@ namespace bilayer
      * driver can refine by a criterion of its own.
      */
     void
-    set_indicators(const std::array<Vector<float>, 2> &new_indicators);
+    set_indicators(
+      const std::array<Vector<float>, Layout::n_subdomains> &new_indicators);
 
   private:
+    // The steps of run_cycle(), in this order.
+
+    /// The meshes of the cycle (created or refined) and their sizes.
+    void
+    build_meshes(CycleRecord &record);
+    /// Refuses a cycle that would not fit into the memory (the estimate
+    /// goes into @p record).
+    void
+    check_memory(CycleRecord &record) const;
+    /// The subproblems of the present layers, assembled and factorised as
+    /// parallel tasks.
+    void
+    set_up_subproblems();
+    /// Their dofs and the set-up times of the busiest process.
+    void
+    count_subproblems(CycleRecord &record) const;
+    /// The interface and the multipliers, started from @p previous (the
+    /// previous cycle's multipliers) if given.
+    void
+    set_up_interface(CycleRecord                          &record,
+                     const Interface::MultiplierFunctions *previous);
+    /// The outer solve, with its times and the MPI exchange.
+    void
+    solve(CycleRecord &record);
+    /// The energy, the residuals, the acceptance checks and (adaptive
+    /// refinement) the error indicators of the next cycle.
+    void
+    assess(CycleRecord &record);
     void
     check(CycleRecord &record) const;
+    /// The outputs of the cycle (solution, interface CSV, summary.json, the
+    /// tables); appends @p record to records(), with the total time and the
+    /// memory.
+    void
+    write(CycleRecord &record, const Timer &total);
+    /// The records of all cycles so far: interface-NN.csv, summary.json,
+    /// table.txt, table.tex, table.csv (first process).
+    void
+    write_records(const unsigned int cycle) const;
     void
     print_report(const CycleRecord &record) const;
+
+    /// The subproblems as the interface reads them and as the solvers use
+    /// them (null where a layer is absent).
+    PerSubproblem<const ElasticSubproblem *>
+    subproblem_views() const;
+    Subproblems
+    subproblem_solvers() const;
 
     const Scene         scene;
     std::ostream       &out;
@@ -98,7 +146,7 @@ namespace bilayer
     /// first process only.
     ConditionalOStream                                pcout, rout;
     Geometry                                          domain;
-    std::array<std::unique_ptr<ElasticSubproblem>, 4> subproblems;
+    PerSubproblem<std::unique_ptr<ElasticSubproblem>> subproblems;
     Interface                                         coupling;
     Solutions                                         w;
     BlockVector<double>                               mu;
@@ -108,7 +156,7 @@ namespace bilayer
     ConvergenceTable table;
     /// Error indicators of the last cycle, per subdomain (adaptive
     /// refinement).
-    std::array<Vector<float>, 2> indicators;
+    std::array<Vector<float>, Layout::n_subdomains> indicators;
   };
 } // namespace bilayer
 
