@@ -79,6 +79,11 @@ namespace bilayer
   bool
   Study::run()
   {
+    if (scene.mesh.marking_spelled_fixed_fraction)
+      pcout << "bilayer: note: Mesh/Marking = fixed fraction is the earlier "
+               "spelling of fixed number (that fraction of the cells, "
+               "deal.II's fixed number); deal.II's fixed fraction is bulk"
+            << std::endl;
     for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
       {
         const CycleRecord &record = run_cycle(cycle);
