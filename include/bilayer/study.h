@@ -125,8 +125,8 @@ namespace bilayer
     /// memory.
     void
     write(CycleRecord &record, const Timer &total);
-    /// The records of all cycles so far: interface-NN.csv, summary.json,
-    /// table.txt, table.tex, table.csv (first process).
+    /// The interface-NN.csv of this cycle, and summary.json, table.txt,
+    /// table.tex and table.csv of all cycles so far (first process).
     void
     write_records(const unsigned int cycle) const;
     void
