@@ -75,7 +75,7 @@ namespace bilayer
       all.insert(all.end(), v.begin(), v.end());
     std::sort(all.begin(), all.end(), std::greater<float>());
     float threshold = all.empty() ? 0.f : all.front();
-    if (mesh.marking == Marking::fixed_fraction)
+    if (mesh.marking == Marking::fixed_number)
       {
         const std::size_t n = std::max<std::size_t>(
           1, std::lround(mesh.refinement_fraction * all.size()));

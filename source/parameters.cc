@@ -329,11 +329,16 @@ namespace bilayer
                       "hanging nodes; quadrilaterals only).");
     prm.declare_entry("Marking",
                       "bulk",
-                      Patterns::Selection("bulk|fixed fraction"),
-                      "Adaptive marking over the cells of both subdomains: "
-                      "bulk (Doerfler: the fewest cells whose squared "
-                      "indicators make up Refinement fraction of the total) "
-                      "or fixed fraction (that fraction of the cells).");
+                      Patterns::Selection("bulk|fixed number|fixed fraction"),
+                      "Adaptive marking over the cells of both subdomains, "
+                      "named as in deal.II's GridRefinement: bulk (Doerfler "
+                      "marking, deal.II's fixed fraction: the fewest cells "
+                      "whose squared indicators make up Refinement fraction "
+                      "of the total) or fixed number (deal.II's fixed "
+                      "number: Refinement fraction of the cells). fixed "
+                      "fraction, the spelling of earlier versions, is still "
+                      "accepted and means fixed number (not deal.II's "
+                      "fixed fraction).");
     prm.declare_entry("Refinement fraction",
                       "0.5",
                       Patterns::Double(0, 1),
@@ -379,7 +384,8 @@ namespace bilayer
     refinement = prm.get("Refinement") == "adaptive" ? Refinement::adaptive :
                                                        Refinement::global;
     marking =
-      prm.get("Marking") == "bulk" ? Marking::bulk : Marking::fixed_fraction;
+      prm.get("Marking") == "bulk" ? Marking::bulk : Marking::fixed_number;
+    marking_spelled_fixed_fraction = prm.get("Marking") == "fixed fraction";
     refinement_fraction = get_double(prm, "Mesh", "Refinement fraction");
     AssertThrow(refinement_fraction > 0 && refinement_fraction <= 1,
                 ExcMessage("Mesh/Refinement fraction must lie in (0, 1], got " +

@@ -19,31 +19,6 @@ namespace bilayer
 {
   namespace
   {
-    /// A JSON number (null for NaN and infinities), with the 17
-    /// significant digits that identify the double.
-    std::string
-    json(const double value)
-    {
-      if (!std::isfinite(value))
-        return "null";
-      std::ostringstream s;
-      s << std::setprecision(17) << value;
-      return s.str();
-    }
-
-    std::string
-    json(const std::string &text)
-    {
-      std::string quoted = "\"";
-      for (const char c : text)
-        {
-          if (c == '"' || c == '\\')
-            quoted += '\\';
-          quoted += c;
-        }
-      return quoted + "\"";
-    }
-
     std::string
     two_digits(const unsigned int n)
     {
@@ -51,29 +26,36 @@ namespace bilayer
       s << std::setw(2) << std::setfill('0') << n;
       return s.str();
     }
+
+    /**
+     * Runs writers until one fails and keeps that failure as one line (a
+     * file that cannot be written, e.g. on a full disk, stops every process
+     * together, with the file and the reason).
+     */
+    class FirstFailure
+    {
+    public:
+      void
+      operator()(const std::function<void()> &write)
+      {
+        if (message.empty())
+          try
+            {
+              write();
+            }
+          catch (const ExceptionBase &e)
+            {
+              message = one_line_message(e);
+            }
+          catch (const std::exception &e)
+            {
+              message = e.what();
+            }
+      }
+
+      std::string message;
+    };
   } // namespace
-
-
-  bool
-  CycleRecord::accepted() const
-  {
-    for (const auto &c : checks)
-      if (!c.second)
-        return false;
-    return !checks.empty();
-  }
-
-
-  std::string
-  CycleRecord::failure() const
-  {
-    std::string failed;
-    for (const auto &c : checks)
-      if (!c.second)
-        failed += (failed.empty() ? "" : ", ") + c.first;
-    return failed + " (" + result.message + ")" +
-           (note.empty() ? "" : "; " + note);
-  }
 
 
   Study::Study(const Scene        &scene,
@@ -94,6 +76,11 @@ namespace bilayer
   bool
   Study::run()
   {
+    if (scene.mesh.marking_spelled_fixed_fraction)
+      pcout << "bilayer: note: Mesh/Marking = fixed fraction is the earlier "
+               "spelling of fixed number (that fraction of the cells, "
+               "deal.II's fixed number); deal.II's fixed fraction is bulk"
+            << std::endl;
     for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
       {
         const CycleRecord &record = run_cycle(cycle);
@@ -110,7 +97,8 @@ namespace bilayer
 
 
   void
-  Study::set_indicators(const std::array<Vector<float>, 2> &new_indicators)
+  Study::set_indicators(
+    const std::array<Vector<float>, Layout::n_subdomains> &new_indicators)
   {
     for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
       AssertThrow(new_indicators[static_cast<unsigned int>(s)].size() ==
@@ -127,12 +115,43 @@ namespace bilayer
     Timer       total;
     CycleRecord record;
     record.cycle = cycle;
-
-    // The multipliers of the previous cycle, for a warm start.
+    // The multipliers of the previous cycle, for a warm start (read before
+    // the subproblems they live on are replaced).
     const bool warm =
       scene.solver.warm_start && !cycle_records.empty() && mu.size() > 0;
     const Interface::MultiplierFunctions previous =
       warm ? coupling.functions(mu) : Interface::MultiplierFunctions();
+
+    build_meshes(record);
+    check_memory(record);
+    set_up_subproblems();
+    count_subproblems(record);
+    set_up_interface(record, warm ? &previous : nullptr);
+    record.setup_seconds = total.wall_time();
+    solve(record);
+    assess(record);
+    write(record, total);
+    print_report(record);
+    // Every process's files are complete before the run may commit them.
+    distribution.barrier();
+    return cycle_records.back();
+  }
+
+
+  PerSubproblem<const ElasticSubproblem *>
+  Study::subproblem_views() const
+  {
+    PerSubproblem<const ElasticSubproblem *> views;
+    for (const unsigned int s : Layout::subproblems)
+      views[s] = subproblems[s].get();
+    return views;
+  }
+
+
+  void
+  Study::build_meshes(CycleRecord &record)
+  {
+    const unsigned int cycle = record.cycle;
     for (auto &sub : subproblems)
       sub.reset();
     if (cycle > 0 && scene.mesh.refinement == Refinement::adaptive)
@@ -150,39 +169,49 @@ namespace bilayer
     record.plus  = domain.statistics(Subdomain::plus);
     record.P     = domain.n_sigma_vertices();
     record.M     = domain.n_outer_vertices();
-    {
-      // Adaptive cycles and mesh files: the sizes are known only now.
-      const ResourceEstimate need =
-        estimate_resources(scene, record.minus.cells, record.plus.cells);
-      record.memory_estimate_mib = need.memory / (1 << 20);
-      const double available     = distribution.max(-available_memory());
-      if (need.memory > -available)
-        throw RunFailure(cycle,
-                         "the meshes of this cycle (" +
-                           std::to_string(record.minus.cells +
-                                          record.plus.cells) +
-                           " cells) would need about " +
-                           format_bytes(need.memory) + " of memory, but " +
-                           format_bytes(-available) +
-                           " are available: use fewer cycles "
-                           "(Mesh/Number of cycles) or a smaller "
-                           "Mesh/Refinement fraction");
-    }
+  }
 
-    // The loads of each layer, then the four set-ups (assembly and
+
+  void
+  Study::check_memory(CycleRecord &record) const
+  {
+    // Adaptive cycles and mesh files: the sizes are known only now.
+    const ResourceEstimate need =
+      estimate_resources(scene, record.minus.cells, record.plus.cells);
+    record.memory_estimate_mib = need.memory / (1 << 20);
+    const double available     = distribution.max(-available_memory());
+    if (need.memory > -available)
+      throw RunFailure(record.cycle,
+                       "the meshes of this cycle (" +
+                         std::to_string(record.minus.cells +
+                                        record.plus.cells) +
+                         " cells) would need about " +
+                         format_bytes(need.memory) + " of memory, but " +
+                         format_bytes(-available) +
+                         " are available: use fewer cycles "
+                         "(Mesh/Number of cycles) or a smaller "
+                         "Mesh/Refinement fraction");
+  }
+
+
+  void
+  Study::set_up_subproblems()
+  {
+    // The loads of each layer, then the set-ups (assembly and
     // factorisation) as parallel tasks.
-    std::array<decltype(scene.loads.prescribed_function(Layer::first)), 2>
+    std::array<decltype(scene.loads.prescribed_function(Layer::first)),
+               Layout::n_layers>
       prescribed;
-    std::array<std::array<std::unique_ptr<FunctionParser<2>>, 4>, 2>
-                                                      traction_owners;
-    std::array<std::array<const Function<2> *, 4>, 2> traction;
-    Tasks                                             setups;
+    std::array<PerSide<std::unique_ptr<FunctionParser<2>>>, Layout::n_layers>
+                                                               traction_owners;
+    std::array<PerSide<const Function<2> *>, Layout::n_layers> traction;
+    Tasks                                                      setups;
     for (const Layer layer : {Layer::first, Layer::second})
       if (scene.materials.has_layer(layer))
         {
           const unsigned int l = static_cast<unsigned int>(layer);
           prescribed[l]        = scene.loads.prescribed_function(layer);
-          for (unsigned int side = 0; side < 4; ++side)
+          for (unsigned int side = 0; side < n_sides; ++side)
             {
               traction_owners[l][side] =
                 scene.loads.traction_function(layer, static_cast<Side>(side));
@@ -190,7 +219,7 @@ namespace bilayer
             }
           for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
             {
-              auto &sub = subproblems[Interface::index(layer, sd)];
+              auto &sub = subproblems[Layout::index(layer, sd)];
               sub =
                 std::make_unique<ElasticSubproblem>(layer,
                                                     sd,
@@ -208,34 +237,44 @@ namespace bilayer
             }
         }
     setups.join_all();
+  }
+
+
+  void
+  Study::count_subproblems(CycleRecord &record) const
+  {
     for (const auto &sub : subproblems)
       if (sub)
         record.dofs += sub->n_dofs();
-    std::array<const ElasticSubproblem *, 4> views;
-    Subproblems                              solvers;
-    for (unsigned int s = 0; s < 4; ++s)
-      {
-        views[s]   = subproblems[s].get();
-        solvers[s] = subproblems[s].get();
-      }
-    for (unsigned int s = 0; s < 4; ++s)
-      if (subproblems[s] != nullptr && subproblems[s]->owned())
+    for (const auto &sub : subproblems)
+      if (sub != nullptr && sub->owned())
         {
-          record.assembly_seconds += subproblems[s]->assembly_seconds;
-          record.factorisation_seconds += subproblems[s]->factorisation_seconds;
+          record.assembly_seconds += sub->assembly_seconds;
+          record.factorisation_seconds += sub->factorisation_seconds;
         }
     // The busiest process's share.
     record.assembly_seconds = distribution.max(record.assembly_seconds);
     record.factorisation_seconds =
       distribution.max(record.factorisation_seconds);
-    coupling.setup(views);
-    coupling.initialize(mu);
-    if (warm)
-      coupling.interpolate(previous, mu);
-    record.multipliers   = coupling.n_multipliers();
-    record.setup_seconds = total.wall_time();
+  }
 
-    pcout << "Cycle " << cycle << ": " << record.minus.cells << " + "
+
+  void
+  Study::set_up_interface(CycleRecord                          &record,
+                          const Interface::MultiplierFunctions *previous)
+  {
+    coupling.setup(subproblem_views());
+    coupling.initialize(mu);
+    if (previous != nullptr)
+      coupling.interpolate(*previous, mu);
+    record.multipliers = coupling.n_multipliers();
+  }
+
+
+  void
+  Study::solve(CycleRecord &record)
+  {
+    pcout << "Cycle " << record.cycle << ": " << record.minus.cells << " + "
           << record.plus.cells << " "
           << (scene.mesh.shape == ElementShape::quadrilateral ?
                 "quadrilaterals" :
@@ -247,86 +286,85 @@ namespace bilayer
     const unsigned long shared_before  = distribution.shared_values();
     const double        seconds_before = distribution.shared_seconds();
     record.result = create_outer_solver(scene.solver, scene.output, pcout)
-                      ->solve(solvers, coupling, mu, w);
+                      ->solve(subproblem_views(), coupling, mu, w);
     record.theta          = record.result.theta;
     record.solve_seconds  = solve_timer.wall_time();
     record.processes      = distribution.n_processes();
     record.shared_values  = distribution.shared_values() - shared_before;
     record.shared_seconds = distribution.shared_seconds() - seconds_before;
+  }
 
+
+  void
+  Study::assess(CycleRecord &record)
+  {
     // Energies (whole solutions: evaluated by the owners), summed in the
     // order of the subproblems as in a serial run.
-    for (const double e : share_values(solvers, [&](const unsigned int s) {
+    for (const double e :
+         share_values(subproblem_views(), [&](const unsigned int s) {
            return subproblems[s]->energy(w[s]);
          }))
       record.energy += e;
     record.report = coupling.assess(w, mu);
     check(record);
     if (scene.mesh.refinement == Refinement::adaptive)
-      indicators = estimate_error(views,
+      indicators = estimate_error(subproblem_views(),
                                   coupling,
                                   w,
                                   mu,
                                   scene.mesh.interface_terms,
                                   scene.mesh.contact_weight);
+  }
 
-    // A file that cannot be written (a full disk) stops every process
-    // together, with the file and the reason.
+
+  void
+  Study::write(CycleRecord &record, const Timer &total)
+  {
     const std::string &dir = scene.output.directory;
-    std::string        write_error;
-    const auto         writing = [&](const std::function<void()> &write) {
-      if (write_error.empty())
-        try
-          {
-            write();
-          }
-        catch (const ExceptionBase &e)
-          {
-            write_error = one_line_message(e);
-          }
-        catch (const std::exception &e)
-          {
-            write_error = e.what();
-          }
-    };
+    FirstFailure       writing;
     // (Each cycle: drivers may call run_cycle() without run().)
     if (distribution.is_root())
       writing([&]() { std::filesystem::create_directories(dir); });
     distribution.barrier();
     if (scene.output.write_vtu || scene.output.write_hdf5)
-      writing(
-        [&]() { write_solution(dir, cycle, views, w, scene.output, outputs); });
+      writing([&]() {
+        write_solution(
+          dir, record.cycle, subproblem_views(), w, scene.output, outputs);
+      });
     record.total_seconds = distribution.max(total.wall_time());
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
     record.memory_mib = distribution.gather(memory.VmHWM / 1024.);
 
     cycle_records.push_back(record);
-    add_to_table(record);
+    add_to_table(table, record);
     if (distribution.is_root())
-      writing([&]() {
-        if (scene.output.write_interface)
-          write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
-                           [&](std::ostream &o) {
-                             coupling.write_csv(o, w, mu);
-                           });
-        write_summary();
-        write_atomically(dir + "/table.txt", [&](std::ostream &o) {
-          table.write_text(o, TableHandler::org_mode_table);
-        });
-        write_atomically(dir + "/table.tex",
-                         [&](std::ostream &o) { table.write_tex(o); });
-        write_atomically(dir + "/table.csv",
-                         [&](std::ostream &o) { write_csv_table(o); });
-      });
-    write_error = distribution.first_error(write_error);
-    if (!write_error.empty())
+      writing([&]() { write_records(record.cycle); });
+    const std::string error = distribution.first_error(writing.message);
+    if (!error.empty())
       throw CollectiveError("writing the results of cycle " +
-                            std::to_string(cycle) + " failed: " + write_error);
-    print_report(record);
-    // Every process's files are complete before the run may commit them.
-    distribution.barrier();
-    return cycle_records.back();
+                            std::to_string(record.cycle) + " failed: " + error);
+  }
+
+
+  void
+  Study::write_records(const unsigned int cycle) const
+  {
+    const std::string &dir = scene.output.directory;
+    if (scene.output.write_interface)
+      write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
+                       [&](std::ostream &o) { coupling.write_csv(o, w, mu); });
+    write_atomically(dir + "/summary.json", [&](std::ostream &o) {
+      write_summary_json(o, scene.name, cycle_records);
+    });
+    write_atomically(dir + "/table.txt", [&](std::ostream &o) {
+      table.write_text(o, TableHandler::org_mode_table);
+    });
+    write_atomically(dir + "/table.tex",
+                     [&](std::ostream &o) { table.write_tex(o); });
+    write_atomically(dir + "/table.csv", [&](std::ostream &o) {
+      write_csv_table(o, cycle_records);
+    });
   }
 
 
@@ -453,136 +491,5 @@ namespace bilayer
     if (!record.accepted())
       rout << "bilayer: cycle " << record.cycle
            << " FAILED: " << record.failure() << std::endl;
-  }
-
-
-  void
-  Study::add_to_table(const CycleRecord &r)
-  {
-    table.add_value("cycle", r.cycle);
-    table.add_value("P", r.P);
-    table.add_value("M", r.M);
-    table.add_value("h-min", r.minus.h_min);
-    table.add_value("h-max", r.minus.h_max);
-    table.add_value("h+min", r.plus.h_min);
-    table.add_value("h+max", r.plus.h_max);
-    table.add_value("Nod-", r.minus.vertices);
-    table.add_value("Cells-", r.minus.cells);
-    table.add_value("Nod+", r.plus.vertices);
-    table.add_value("Cells+", r.plus.cells);
-    table.add_value("dofs", r.dofs);
-    table.add_value("iter", r.result.iterations);
-    table.add_value("solves",
-                    static_cast<unsigned int>(r.result.subdomain_solves));
-    table.add_value("energy", r.energy);
-    table.add_value("violation", r.report.constraint_violation);
-    table.add_value("time [s]", r.total_seconds);
-    for (const auto &key : {"h-min", "h-max", "h+min", "h+max"})
-      table.set_precision(key, 4);
-    table.set_precision("energy", 8);
-    table.set_scientific("energy", true);
-    table.set_precision("violation", 2);
-    table.set_scientific("violation", true);
-    table.set_precision("time [s]", 3);
-  }
-
-
-  void
-  Study::write_csv_table(std::ostream &o) const
-  {
-    o << "cycle,P,M,h_min_minus,h_max_minus,h_min_plus,h_max_plus,"
-         "vertices_minus,cells_minus,vertices_plus,cells_plus,dofs,"
-         "multipliers,theta,iterations,subdomain_solves,converged,energy,"
-         "constraint_violation,max_penetration,setup_seconds,solve_seconds,"
-         "total_seconds\n";
-    for (const auto &r : cycle_records)
-      o << r.cycle << ',' << r.P << ',' << r.M << ',' << json(r.minus.h_min)
-        << ',' << json(r.minus.h_max) << ',' << json(r.plus.h_min) << ','
-        << json(r.plus.h_max) << ',' << r.minus.vertices << ',' << r.minus.cells
-        << ',' << r.plus.vertices << ',' << r.plus.cells << ',' << r.dofs << ','
-        << r.multipliers << ',' << json(r.theta) << ',' << r.result.iterations
-        << ',' << r.result.subdomain_solves << ','
-        << (r.result.converged ? 1 : 0) << ',' << json(r.energy) << ','
-        << json(r.report.constraint_violation) << ','
-        << json(r.report.max_penetration) << ',' << json(r.setup_seconds) << ','
-        << json(r.solve_seconds) << ',' << json(r.total_seconds) << '\n';
-  }
-
-
-  void
-  Study::write_summary() const
-  {
-    write_atomically(
-      scene.output.directory + "/summary.json", [&](std::ostream &o) {
-        o << "{\n  \"scene\": " << json(scene.name) << ",\n  \"cycles\": [";
-        for (unsigned int i = 0; i < cycle_records.size(); ++i)
-          {
-            const auto &r = cycle_records[i];
-            const auto &k = r.report;
-            o << (i ? "," : "") << "\n    {"
-              << "\"cycle\": " << r.cycle
-              << ", \"vertices_minus\": " << r.minus.vertices
-              << ", \"cells_minus\": " << r.minus.cells
-              << ", \"vertices_plus\": " << r.plus.vertices
-              << ", \"cells_plus\": " << r.plus.cells << ", \"P\": " << r.P
-              << ", \"M\": " << r.M
-              << ", \"h_min_minus\": " << json(r.minus.h_min)
-              << ", \"h_max_minus\": " << json(r.minus.h_max)
-              << ", \"h_min_plus\": " << json(r.plus.h_min)
-              << ", \"h_max_plus\": " << json(r.plus.h_max)
-              << ", \"dofs\": " << r.dofs
-              << ", \"multipliers\": " << r.multipliers
-              << ", \"solver\": " << json(r.result.solver)
-              << ", \"theta\": " << json(r.theta)
-              << ", \"lambda_max\": " << json(r.result.lambda_max)
-              << ", \"predicted_threshold\": "
-              << json(r.result.predicted_threshold)
-              << ", \"threshold_at_solution\": "
-              << json(r.result.threshold_at_solution)
-              << ", \"iterations\": " << r.result.iterations
-              << ", \"subdomain_solves\": " << r.result.subdomain_solves
-              << ", \"preconditioner_solves\": "
-              << r.result.preconditioner_solves
-              << ", \"linear_iterations\": " << r.result.linear_iterations
-              << ", \"converged\": " << (r.result.converged ? "true" : "false")
-              << ", \"diverged\": " << (r.result.diverged ? "true" : "false")
-              << ", \"stopping_value\": " << json(r.result.stopping_value)
-              << ", \"message\": " << json(r.result.message)
-              << ", \"energy\": " << json(r.energy)
-              << ", \"constraint_violation\": " << json(k.constraint_violation)
-              << ", \"relative_constraint_violation\": "
-              << json(k.relative_constraint_violation)
-              << ", \"max_penetration\": " << json(k.max_penetration)
-              << ", \"displacement_scale\": " << json(k.displacement_scale)
-              << ", \"relative_discrete_violation\": "
-              << json(k.relative_discrete_violation)
-              << ", \"min_contact_multiplier\": "
-              << json(k.min_contact_multiplier)
-              << ", \"complementarity\": " << json(k.complementarity)
-              << ", \"max_multiplier_over_bound\": "
-              << json(k.max_multiplier_over_bound)
-              << ", \"kkt_residual\": " << json(k.kkt.value())
-              << ", \"kkt\": {\"primal\": " << json(k.kkt.primal)
-              << ", \"dual\": " << json(k.kkt.dual)
-              << ", \"complementarity\": " << json(k.kkt.complementarity) << "}"
-              << ", \"accepted\": " << (r.accepted() ? "true" : "false")
-              << ", \"processes\": " << r.processes
-              << ", \"shared_values\": " << r.shared_values
-              << ", \"shared_seconds\": " << json(r.shared_seconds)
-              << ", \"memory_mib\": [";
-            for (unsigned int p = 0; p < r.memory_mib.size(); ++p)
-              o << (p ? ", " : "") << json(r.memory_mib[p]);
-            o << "]"
-              << ", \"memory_estimate_mib\": " << json(r.memory_estimate_mib)
-              << ", \"wall_seconds\": {\"setup\": " << json(r.setup_seconds)
-              << ", \"assembly\": " << json(r.assembly_seconds)
-              << ", \"factorisation\": " << json(r.factorisation_seconds)
-              << ", \"solve\": " << json(r.solve_seconds)
-              << ", \"solver_setup\": " << json(r.result.setup_seconds)
-              << ", \"iteration\": " << json(r.result.iteration_seconds)
-              << ", \"total\": " << json(r.total_seconds) << "}}";
-          }
-        o << "\n  ]\n}\n";
-      });
   }
 } // namespace bilayer

@@ -12,6 +12,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <bilayer/cycle_record.h>
 #include <bilayer/geometry.h>
 #include <bilayer/parameters.h>
 #include <bilayer/study.h>
@@ -20,6 +21,8 @@
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "reference.h"
 
@@ -104,45 +107,36 @@ main()
   std::ifstream      json("results/summary.json");
   std::ostringstream text;
   text << json.rdbuf();
-  bool all_keys = true;
-  for (const std::string key : {"scene",
-                                "cycles",
-                                "cycle",
-                                "vertices_minus",
-                                "cells_minus",
-                                "vertices_plus",
-                                "cells_plus",
-                                "P",
-                                "M",
-                                "h_min_minus",
-                                "h_max_minus",
-                                "h_min_plus",
-                                "h_max_plus",
-                                "dofs",
-                                "multipliers",
-                                "solver",
-                                "theta",
-                                "iterations",
-                                "subdomain_solves",
-                                "converged",
-                                "energy",
-                                "constraint_violation",
-                                "max_penetration",
-                                "wall_seconds",
-                                "setup",
-                                "solve",
-                                "total"})
-    if (text.str().find("\"" + key + "\":") == std::string::npos)
-      {
-        std::cout << "missing key " << key << std::endl;
-        all_keys = false;
-      }
+  // The keys of the file and those of every field of a cycle's record, in
+  // this order.
+  std::vector<std::string> keys = {"scene", "cycles"};
+  for (const std::string &key : CycleRecord::json_keys())
+    keys.push_back(key);
+  bool        all_keys = true;
+  std::size_t position = 0;
+  for (const std::string &key : keys)
+    {
+      const std::size_t found = text.str().find("\"" + key + "\":", position);
+      if (found == std::string::npos)
+        {
+          std::cout << "missing key " << key << std::endl;
+          all_keys = false;
+        }
+      else
+        position = found;
+    }
   std::cout << "summary.json has every key of the contract: " << yes(all_keys)
             << std::endl;
   std::ifstream csv("results/table.csv");
   std::string   header;
   std::getline(csv, header);
   std::cout << "table.csv header: " << header << std::endl;
+  std::string keys_csv;
+  for (const std::string &key : CycleRecord::csv_keys())
+    keys_csv += (keys_csv.empty() ? "" : ",") + key;
+  if (header != keys_csv)
+    std::cout << "table.csv header is not CycleRecord::csv_keys(): " << keys_csv
+              << std::endl;
   std::ifstream interface_csv("results/interface-00.csv");
   std::getline(interface_csv, header);
   std::cout << "interface-00.csv header: " << header << std::endl;

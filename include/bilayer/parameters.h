@@ -158,22 +158,30 @@ namespace bilayer
     adaptive
   };
 
-  /// Marking of cells for adaptive refinement.
+  /// Marking of cells for adaptive refinement (one threshold over the
+  /// cells of both subdomains), named as in deal.II's GridRefinement.
   enum class Marking
   {
-    /// The fraction of all cells (both subdomains) with the largest
-    /// indicators.
-    fixed_fraction,
-    /// Doerfler: the fewest cells whose squared indicators make up the
+    /// deal.II's refine_and_coarsen_fixed_number: the fraction of all cells
+    /// with the largest indicators. Parameter files of earlier versions
+    /// spell it "fixed fraction"
+    /// (MeshParameters::marking_spelled_fixed_fraction).
+    fixed_number,
+    /// Doerfler marking, deal.II's refine_and_coarsen_fixed_fraction with
+    /// the L2 norm: the fewest cells whose squared indicators make up the
     /// fraction of the total.
     bulk
   };
 
   struct MeshParameters
   {
-    Refinement refinement          = Refinement::global;
-    Marking    marking             = Marking::bulk;
-    double     refinement_fraction = 0.5;
+    Refinement refinement = Refinement::global;
+    Marking    marking    = Marking::bulk;
+    /// Mesh/Marking was given as "fixed fraction", the spelling of
+    /// Marking::fixed_number in earlier versions (not deal.II's fixed
+    /// fraction, which is bulk).
+    bool   marking_spelled_fixed_fraction = false;
+    double refinement_fraction            = 0.5;
     /// Add the interface residuals on Sigma to Kelly's indicators.
     bool interface_terms = true;
     /// Factor on the complementarity term of the estimator.

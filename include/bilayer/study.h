@@ -3,67 +3,27 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/convergence_table.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/block_vector.h>
 
+#include <bilayer/cycle_record.h>
 #include <bilayer/distribution.h>
 #include <bilayer/geometry.h>
 #include <bilayer/interface.h>
+#include <bilayer/layout.h>
 #include <bilayer/outer_solver.h>
 #include <bilayer/output.h>
 #include <bilayer/parameters.h>
 #include <bilayer/subproblem.h>
 
+#include <array>
 #include <memory>
 #include <ostream>
-#include <string>
-#include <utility>
 #include <vector>
 
 namespace bilayer
 {
   using namespace dealii;
-
-  /// Everything reported about one cycle (one mesh) of a study.
-  struct CycleRecord
-  {
-    unsigned int   cycle = 0;
-    MeshStatistics minus, plus;
-    /// Vertices on Sigma and on the outer boundary (P and M of Table 1).
-    unsigned int    P = 0, M = 0;
-    unsigned int    dofs = 0, multipliers = 0;
-    double          theta = 0;
-    SolverResult    result;
-    double          energy = 0;
-    InterfaceReport report;
-    /// Acceptance checks: (description, passed).
-    std::vector<std::pair<std::string, bool>> checks;
-    double setup_seconds = 0, solve_seconds = 0, total_seconds = 0;
-    /// MPI processes, values sent from the subproblems' owners to all
-    /// processes in the iterations (traces on Sigma), and the peak resident
-    /// memory of each process [MiB].
-    unsigned int  processes     = 1;
-    unsigned long shared_values = 0;
-    /// Wall time of that exchange on the first process [s].
-    double              shared_seconds = 0;
-    std::vector<double> memory_mib;
-    /// The memory this cycle was estimated to need before it was built
-    /// (bilayer/resources.h) [MiB].
-    double memory_estimate_mib = 0;
-    /// Parts of setup_seconds: assembly and factorisation of the four
-    /// subproblems, summed.
-    double assembly_seconds = 0, factorisation_seconds = 0;
-
-    /// What the solver or the checks add to a failure (e.g. the bound p).
-    std::string note;
-
-    bool
-    accepted() const;
-
-    /// One line for a cycle that is not accepted: the failed checks, the
-    /// solver's message and the note.
-    std::string
-    failure() const;
-  };
 
   /**
    * The outer loop: for each cycle build the two meshes, the four
@@ -116,7 +76,7 @@ namespace bilayer
     const ElasticSubproblem &
     subproblem(const Layer layer, const Subdomain subdomain) const
     {
-      return *subproblems[Interface::index(layer, subdomain)];
+      return *subproblems[Layout::index(layer, subdomain)];
     }
 
     /**
@@ -126,19 +86,56 @@ namespace bilayer
      * driver can refine by a criterion of its own.
      */
     void
-    set_indicators(const std::array<Vector<float>, 2> &new_indicators);
+    set_indicators(
+      const std::array<Vector<float>, Layout::n_subdomains> &new_indicators);
 
   private:
+    // The steps of run_cycle(), in this order.
+
+    /// The meshes of the cycle (created or refined) and their sizes.
+    void
+    build_meshes(CycleRecord &record);
+    /// Refuses a cycle that would not fit into the memory (the estimate
+    /// goes into @p record).
+    void
+    check_memory(CycleRecord &record) const;
+    /// The subproblems of the present layers, assembled and factorised as
+    /// parallel tasks.
+    void
+    set_up_subproblems();
+    /// Their dofs and the set-up times of the busiest process.
+    void
+    count_subproblems(CycleRecord &record) const;
+    /// The interface and the multipliers, started from @p previous (the
+    /// previous cycle's multipliers) if given.
+    void
+    set_up_interface(CycleRecord                          &record,
+                     const Interface::MultiplierFunctions *previous);
+    /// The outer solve, with its times and the MPI exchange.
+    void
+    solve(CycleRecord &record);
+    /// The energy, the residuals, the acceptance checks and (adaptive
+    /// refinement) the error indicators of the next cycle.
+    void
+    assess(CycleRecord &record);
     void
     check(CycleRecord &record) const;
+    /// The outputs of the cycle (solution, interface CSV, summary.json, the
+    /// tables); appends @p record to records(), with the total time and the
+    /// memory.
+    void
+    write(CycleRecord &record, const Timer &total);
+    /// The interface-NN.csv of this cycle, and summary.json, table.txt,
+    /// table.tex and table.csv of all cycles so far (first process).
+    void
+    write_records(const unsigned int cycle) const;
     void
     print_report(const CycleRecord &record) const;
-    void
-    write_summary() const;
-    void
-    write_csv_table(std::ostream &out) const;
-    void
-    add_to_table(const CycleRecord &record);
+
+    /// The subproblems as the interface reads them and as the solvers use
+    /// them (null where a layer is absent).
+    PerSubproblem<const ElasticSubproblem *>
+    subproblem_views() const;
 
     const Scene         scene;
     std::ostream       &out;
@@ -147,16 +144,17 @@ namespace bilayer
     /// first process only.
     ConditionalOStream                                pcout, rout;
     Geometry                                          domain;
-    std::array<std::unique_ptr<ElasticSubproblem>, 4> subproblems;
+    PerSubproblem<std::unique_ptr<ElasticSubproblem>> subproblems;
     Interface                                         coupling;
     Solutions                                         w;
     BlockVector<double>                               mu;
     std::vector<CycleRecord>                          cycle_records;
     SolutionRecords                                   outputs;
-    ConvergenceTable                                  table;
+    /// The mesh-size table of the cycles so far.
+    ConvergenceTable table;
     /// Error indicators of the last cycle, per subdomain (adaptive
     /// refinement).
-    std::array<Vector<float>, 2> indicators;
+    std::array<Vector<float>, Layout::n_subdomains> indicators;
   };
 } // namespace bilayer
 
