@@ -8,6 +8,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   const StepBound AcceleratedSolver::step_bound = {0.5, " / lambda_max"};
 
 

@@ -9,6 +9,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   namespace
   {
     /// Largest |x_i| / D_i (the largest jump of a Euclidean residual).

@@ -9,6 +9,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   namespace
   {
     /// A JSON number (null for NaN and infinities), with the 17

@@ -3,6 +3,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   FetiPreconditioner::FetiPreconditioner(const DualPreconditioner type,
                                          const Subproblems       &subproblems,
                                          const Interface         &interface)

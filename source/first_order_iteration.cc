@@ -7,6 +7,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   double
   auto_step(const SolverParameters &parameters,
             const StepBound        &bound,

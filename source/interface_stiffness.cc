@@ -6,6 +6,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   InterfaceStiffness::InterfaceStiffness(const ElasticSubproblem &subproblem,
                                          const bool               dirichlet)
     : subproblem(subproblem)

@@ -8,6 +8,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   std::unique_ptr<OuterSolver>
   create_outer_solver(const SolverParameters   &parameters,
                       const OutputParameters   &output,

@@ -17,6 +17,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   namespace
   {
     std::string

@@ -3,6 +3,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   namespace
   {
     /// The solves with the multiplier loads of @p multipliers, as parallel

@@ -9,6 +9,8 @@
 
 namespace bilayer
 {
+  using namespace dealii;
+
   const StepBound UzawaSolver::step_bound = {1., " * 2 / lambda_max"};
 
 

@@ -11,8 +11,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * The projected gradient step of the Uzawa iteration with Nesterov/FISTA
    * momentum and adaptive restart (Beck and Teboulle; O'Donoghue and
@@ -35,15 +33,15 @@ namespace bilayer
   class AcceleratedSolver : public OuterSolver
   {
   public:
-    AcceleratedSolver(const SolverParameters   &parameters,
-                      const OutputParameters   &output,
-                      const ConditionalOStream &pcout);
+    AcceleratedSolver(const SolverParameters           &parameters,
+                      const OutputParameters           &output,
+                      const dealii::ConditionalOStream &pcout);
 
     SolverResult
-    solve(const Subproblems   &subproblems,
-          const Interface     &interface,
-          BlockVector<double> &multipliers,
-          Solutions           &solutions) const override;
+    solve(const Subproblems           &subproblems,
+          const Interface             &interface,
+          dealii::BlockVector<double> &multipliers,
+          Solutions                   &solutions) const override;
 
     /// The extrapolated steps are stable for theta < 1 / lambda_max.
     static const StepBound step_bound;
@@ -52,11 +50,11 @@ namespace bilayer
     /// The iteration from @p mu with the step and the set-up work recorded
     /// in @p result.
     void
-    iterate(const Subproblems   &subproblems,
-            const Interface     &interface,
-            BlockVector<double> &mu,
-            Solutions           &w,
-            SolverResult        &result) const;
+    iterate(const Subproblems           &subproblems,
+            const Interface             &interface,
+            dealii::BlockVector<double> &mu,
+            Solutions                   &w,
+            SolverResult                &result) const;
 
     /**
      * Whether the projected iterate @p x meets the stopping rule: its
@@ -65,16 +63,16 @@ namespace bilayer
      * solutions.
      */
     bool
-    accept_projected(const Subproblems         &subproblems,
-                     const Interface           &interface,
-                     const BlockVector<double> &x,
-                     BlockVector<double>       &mu,
-                     Solutions                 &w,
-                     SolverResult              &result) const;
+    accept_projected(const Subproblems                 &subproblems,
+                     const Interface                   &interface,
+                     const dealii::BlockVector<double> &x,
+                     dealii::BlockVector<double>       &mu,
+                     Solutions                         &w,
+                     SolverResult                      &result) const;
 
-    const SolverParameters    parameters;
-    const OutputParameters    output;
-    const ConditionalOStream &pcout;
+    const SolverParameters            parameters;
+    const OutputParameters            output;
+    const dealii::ConditionalOStream &pcout;
   };
 } // namespace bilayer
 

@@ -10,8 +10,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * Primal-dual active set method (a semismooth Newton method) on the dual
    * problem of paper.md §3, with FETI-type preconditioned conjugate
@@ -57,22 +55,22 @@ namespace bilayer
   class ActiveSetSolver : public OuterSolver
   {
   public:
-    ActiveSetSolver(const SolverParameters   &parameters,
-                    const OutputParameters   &output,
-                    const ConditionalOStream &pcout);
+    ActiveSetSolver(const SolverParameters           &parameters,
+                    const OutputParameters           &output,
+                    const dealii::ConditionalOStream &pcout);
 
     /// Run from @p multipliers (projected onto the box first); on return
     /// they and @p solutions hold the last iterate.
     SolverResult
-    solve(const Subproblems   &subproblems,
-          const Interface     &interface,
-          BlockVector<double> &multipliers,
-          Solutions           &solutions) const override;
+    solve(const Subproblems           &subproblems,
+          const Interface             &interface,
+          dealii::BlockVector<double> &multipliers,
+          Solutions                   &solutions) const override;
 
   private:
-    const SolverParameters    parameters;
-    const OutputParameters    output;
-    const ConditionalOStream &pcout;
+    const SolverParameters            parameters;
+    const OutputParameters            output;
+    const dealii::ConditionalOStream &pcout;
   };
 
 } // namespace bilayer

@@ -26,8 +26,6 @@
  */
 namespace bilayer
 {
-  using namespace dealii;
-
   struct RecordField;
 
   /// Everything reported about one cycle (one mesh) of a study.
@@ -183,7 +181,7 @@ namespace bilayer
 
   /// Append @p record as a row of the mesh-size table.
   void
-  add_to_table(ConvergenceTable &table, const CycleRecord &record);
+  add_to_table(dealii::ConvergenceTable &table, const CycleRecord &record);
 } // namespace bilayer
 
 #endif

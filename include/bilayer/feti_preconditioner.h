@@ -16,8 +16,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * The preconditioner of the conjugate gradients on F_II, the dual
    * operator restricted to the free multipliers I (ActiveSetSolver),
@@ -47,7 +45,7 @@ namespace bilayer
 
     /// Restrict to the components with mask != 0 (factorises G again).
     void
-    reinit(const BlockVector<double> &mask);
+    reinit(const dealii::BlockVector<double> &mask);
 
     /// Newton steps whose Gram matrix could not be factorised.
     unsigned int
@@ -58,12 +56,13 @@ namespace bilayer
 
     /// z = M^{-1} r; returns the Dirichlet solves spent.
     unsigned int
-    vmult(BlockVector<double> &z, const BlockVector<double> &r) const;
+    vmult(dealii::BlockVector<double>       &z,
+          const dealii::BlockVector<double> &r) const;
 
   private:
     /// x <- G^{-1} x.
     void
-    solve_gram(BlockVector<double> &x) const;
+    solve_gram(dealii::BlockVector<double> &x) const;
 
     const DualPreconditioner type;
     const Subproblems       &subproblems;
@@ -71,9 +70,9 @@ namespace bilayer
     /// The Sigma operators of the subproblems this process owns (nullptr
     /// elsewhere, and for none).
     PerSubproblem<std::unique_ptr<InterfaceStiffness>> stiffness;
-    BlockVector<double>                                mask;
-    SparsityPattern                                    pattern;
-    SparseMatrix<double>                               gram;
+    dealii::BlockVector<double>                        mask;
+    dealii::SparsityPattern                            pattern;
+    dealii::SparseMatrix<double>                       gram;
     SparseCholesky                                     gram_factorisation;
     bool                                               degraded       = false;
     unsigned int                                       degraded_steps = 0;

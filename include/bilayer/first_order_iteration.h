@@ -21,8 +21,6 @@
  */
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * The stable steps of a first-order iteration: theta below
    * factor * 2 / lambda_max(S), S = D^{-1} C A^{-1} C^T the dual operator.
@@ -52,31 +50,31 @@ namespace bilayer
    * the subdomain solves spent.
    */
   unsigned long
-  choose_auto_step(const SolverParameters   &parameters,
-                   const StepBound          &bound,
-                   const Subproblems        &subproblems,
-                   const Interface          &interface,
-                   const ConditionalOStream &pcout,
-                   SolverResult             &result);
+  choose_auto_step(const SolverParameters           &parameters,
+                   const StepBound                  &bound,
+                   const Subproblems                &subproblems,
+                   const Interface                  &interface,
+                   const dealii::ConditionalOStream &pcout,
+                   SolverResult                     &result);
 
   /**
    * Step 3 of the iteration: @p next = P(@p mu + theta g), g the jumps at
    * @p mu, P the projection onto the multiplier sets.
    */
   void
-  projected_step(const Interface           &interface,
-                 const double               theta,
-                 const BlockVector<double> &mu,
-                 const BlockVector<double> &g,
-                 BlockVector<double>       &next);
+  projected_step(const Interface                   &interface,
+                 const double                       theta,
+                 const dealii::BlockVector<double> &mu,
+                 const dealii::BlockVector<double> &g,
+                 dealii::BlockVector<double>       &next);
 
   /// The largest violation of the jumps @p g relative to the displacement
   /// scale of @p w (absolute where the scale is zero). Needs the traces of
   /// all solutions.
   double
-  relative_violation(const Interface           &interface,
-                     const Solutions           &w,
-                     const BlockVector<double> &g);
+  relative_violation(const Interface                   &interface,
+                     const Solutions                   &w,
+                     const dealii::BlockVector<double> &g);
 
   /**
    * The value of Solver/Stopping rule at step k >= 1 of a first-order
@@ -90,26 +88,26 @@ namespace bilayer
    *  - paper with norm: max_s |w_s - w_s_old|_a / |w_s|_a.
    */
   double
-  stopping_value(const SolverParameters    &parameters,
-                 const Subproblems         &subproblems,
-                 const Interface           &interface,
-                 const Solutions           &w,
-                 const Solutions           &w_old,
-                 const BlockVector<double> &g,
-                 const BlockVector<double> &mu,
-                 const double               last_increment);
+  stopping_value(const SolverParameters            &parameters,
+                 const Subproblems                 &subproblems,
+                 const Interface                   &interface,
+                 const Solutions                   &w,
+                 const Solutions                   &w_old,
+                 const dealii::BlockVector<double> &g,
+                 const dealii::BlockVector<double> &mu,
+                 const double                       last_increment);
 
   /// Every Output/Progress interval steps: the stopping value, the last
   /// multiplier change and the relative violation, one line.
   void
-  print_progress(const OutputParameters    &output,
-                 const ConditionalOStream  &pcout,
-                 const unsigned int         k,
-                 const double               value,
-                 const double               last_increment,
-                 const Interface           &interface,
-                 const Solutions           &w,
-                 const BlockVector<double> &g);
+  print_progress(const OutputParameters            &output,
+                 const dealii::ConditionalOStream  &pcout,
+                 const unsigned int                 k,
+                 const double                       value,
+                 const double                       last_increment,
+                 const Interface                   &interface,
+                 const Solutions                   &w,
+                 const dealii::BlockVector<double> &g);
 
   /**
    * The message of a first-order iteration stopped at Solver/Maximum
@@ -148,10 +146,10 @@ namespace bilayer
      * increment enters the smallest one so far.
      */
     std::string
-    check(const unsigned int         k,
-          const double               value,
-          const double               increment,
-          const BlockVector<double> &next);
+    check(const unsigned int                 k,
+          const double                       value,
+          const double                       increment,
+          const dealii::BlockVector<double> &next);
 
   private:
     /**

@@ -14,8 +14,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * The stiffness of one subproblem seen from Sigma, the operators of the
    * FETI-type preconditioners of the dual problem (FetiPreconditioner):
@@ -50,18 +48,20 @@ namespace bilayer
      * Sigma.
      */
     void
-    apply_schur_complement(const Vector<double> &x, Vector<double> &y) const;
+    apply_schur_complement(const dealii::Vector<double> &x,
+                           dealii::Vector<double>       &y) const;
 
     /// y = K_SS x (no solve); zero off Sigma.
     void
-    apply_interface_stiffness(const Vector<double> &x, Vector<double> &y) const;
+    apply_interface_stiffness(const dealii::Vector<double> &x,
+                              dealii::Vector<double>       &y) const;
 
   private:
-    const ElasticSubproblem             &subproblem;
-    std::vector<types::global_dof_index> sigma_dofs;
+    const ElasticSubproblem                     &subproblem;
+    std::vector<dealii::types::global_dof_index> sigma_dofs;
     /// The constraints of the Dirichlet subproblem and its factorisation
     /// (dirichlet_factorisation, or dirichlet_system for a shared one).
-    AffineConstraints<double>          dirichlet_constraints;
+    dealii::AffineConstraints<double>  dirichlet_constraints;
     std::unique_ptr<SparseCholesky>    dirichlet_factorisation;
     std::unique_ptr<DistributedSystem> dirichlet_system;
   };

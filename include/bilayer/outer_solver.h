@@ -22,8 +22,6 @@
  */
 namespace bilayer
 {
-  using namespace dealii;
-
   /// How an outer solve ended.
   struct SolverResult
   {
@@ -70,18 +68,18 @@ namespace bilayer
     /// Interface::initialize(): zero, or a warm start); on return they and
     /// @p solutions hold the last iterate.
     virtual SolverResult
-    solve(const Subproblems   &subproblems,
-          const Interface     &interface,
-          BlockVector<double> &multipliers,
-          Solutions           &solutions) const = 0;
+    solve(const Subproblems           &subproblems,
+          const Interface             &interface,
+          dealii::BlockVector<double> &multipliers,
+          Solutions                   &solutions) const = 0;
   };
 
   /// The outer solver that Solver/Method selects. It prints its progress to
   /// @p pcout, which has to outlive it.
   std::unique_ptr<OuterSolver>
-  create_outer_solver(const SolverParameters   &parameters,
-                      const OutputParameters   &output,
-                      const ConditionalOStream &pcout);
+  create_outer_solver(const SolverParameters           &parameters,
+                      const OutputParameters           &output,
+                      const dealii::ConditionalOStream &pcout);
 
   /// Largest eigenvalue of the dual operator and the work spent on it.
   struct SpectrumEstimate
@@ -104,10 +102,10 @@ namespace bilayer
    * bound at a solution.
    */
   SpectrumEstimate
-  estimate_lambda_max(const Subproblems         &subproblems,
-                      const Interface           &interface,
-                      const unsigned int         max_iterations,
-                      const BlockVector<double> *mask = nullptr);
+  estimate_lambda_max(const Subproblems                 &subproblems,
+                      const Interface                   &interface,
+                      const unsigned int                 max_iterations,
+                      const dealii::BlockVector<double> *mask = nullptr);
 } // namespace bilayer
 
 #endif

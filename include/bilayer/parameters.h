@@ -25,8 +25,6 @@
  */
 namespace bilayer
 {
-  using namespace dealii;
-
   /// The four sides of the rectangle Omega.
   enum class Side
   {
@@ -127,9 +125,9 @@ namespace bilayer
     PerSide<bool> clamped = {{true, true, false, false}};
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm);
 
     bool
     has_crack() const
@@ -204,9 +202,9 @@ namespace bilayer
     std::vector<std::string> mesh_files;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm);
 
     unsigned int
     degree(const Layer layer) const
@@ -246,9 +244,9 @@ namespace bilayer
     }
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm);
   };
 
   /**
@@ -270,14 +268,14 @@ namespace bilayer
     LoadParameters();
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler         &prm,
+    parse_parameters(dealii::ParameterHandler &prm,
                      const MaterialParameters &materials);
 
-    std::unique_ptr<FunctionParser<2>>
+    std::unique_ptr<dealii::FunctionParser<2>>
     traction_function(const Layer layer, const Side side) const;
-    std::unique_ptr<FunctionParser<2>>
+    std::unique_ptr<dealii::FunctionParser<2>>
     prescribed_function(const Layer layer) const;
     /// Whether the traction expression of a side is identically "0; 0".
     bool
@@ -292,9 +290,9 @@ namespace bilayer
     JumpSampling       sampling         = JumpSampling::weighted;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm);
   };
 
   /// Outer solvers on the multipliers.
@@ -339,9 +337,9 @@ namespace bilayer
     unsigned int       max_inner_iterations  = 1000;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm);
   };
 
   struct OutputParameters
@@ -354,9 +352,9 @@ namespace bilayer
     TerminalOutput terminal          = TerminalOutput::full;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm);
   };
 
   /**
@@ -377,9 +375,9 @@ namespace bilayer
     std::vector<std::string> input_files;
 
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm);
   };
 
   /**
@@ -387,7 +385,7 @@ namespace bilayer
    * name is the file name without directory and extension.
    */
   Scene
-  read_scene(ParameterHandler               &prm,
+  read_scene(dealii::ParameterHandler       &prm,
              const std::string              &filename,
              const std::vector<std::string> &overrides = {});
 
@@ -398,7 +396,7 @@ namespace bilayer
 
   /// The message of a deal.II exception (a user error) on one line.
   std::string
-  one_line_message(const ExceptionBase &exception);
+  one_line_message(const dealii::ExceptionBase &exception);
 } // namespace bilayer
 
 #endif

@@ -23,8 +23,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * The outer loop: for each cycle build the two meshes, the four
    * subproblems (assembled and factorised once) and the interface, run the
@@ -68,7 +66,7 @@ namespace bilayer
     {
       return w;
     }
-    const BlockVector<double> &
+    const dealii::BlockVector<double> &
     multipliers() const
     {
       return mu;
@@ -86,8 +84,8 @@ namespace bilayer
      * driver can refine by a criterion of its own.
      */
     void
-    set_indicators(
-      const std::array<Vector<float>, Layout::n_subdomains> &new_indicators);
+    set_indicators(const std::array<dealii::Vector<float>, Layout::n_subdomains>
+                     &new_indicators);
 
   private:
     // The steps of run_cycle(), in this order.
@@ -124,7 +122,7 @@ namespace bilayer
     /// tables); appends @p record to records(), with the total time and the
     /// memory.
     void
-    write(CycleRecord &record, const Timer &total);
+    write(CycleRecord &record, const dealii::Timer &total);
     /// The interface-NN.csv of this cycle, and summary.json, table.txt,
     /// table.tex and table.csv of all cycles so far (first process).
     void
@@ -142,19 +140,19 @@ namespace bilayer
     const Distribution &distribution;
     /// Progress (Output/Terminal output = full) and the checks, both on the
     /// first process only.
-    ConditionalOStream                                pcout, rout;
+    dealii::ConditionalOStream                        pcout, rout;
     Geometry                                          domain;
     PerSubproblem<std::unique_ptr<ElasticSubproblem>> subproblems;
     Interface                                         coupling;
     Solutions                                         w;
-    BlockVector<double>                               mu;
+    dealii::BlockVector<double>                       mu;
     std::vector<CycleRecord>                          cycle_records;
     SolutionRecords                                   outputs;
     /// The mesh-size table of the cycles so far.
-    ConvergenceTable table;
+    dealii::ConvergenceTable table;
     /// Error indicators of the last cycle, per subdomain (adaptive
     /// refinement).
-    std::array<Vector<float>, Layout::n_subdomains> indicators;
+    std::array<dealii::Vector<float>, Layout::n_subdomains> indicators;
   };
 } // namespace bilayer
 

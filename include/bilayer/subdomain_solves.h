@@ -16,8 +16,6 @@
  */
 namespace bilayer
 {
-  using namespace dealii;
-
   /// The subproblems, indexed by Layout::index() (nullptr where a layer is
   /// absent). Solving reads them only: the factorisations are made by
   /// ElasticSubproblem::setup().
@@ -45,19 +43,19 @@ namespace bilayer
    * subproblems (run as parallel tasks; the factorisations are reused).
    */
   void
-  solve_subproblems(const Subproblems         &subproblems,
-                    const Interface           &interface,
-                    const BlockVector<double> &multipliers,
-                    Solutions                 &solutions);
+  solve_subproblems(const Subproblems                 &subproblems,
+                    const Interface                   &interface,
+                    const dealii::BlockVector<double> &multipliers,
+                    Solutions                         &solutions);
 
   /// The solves with the multiplier loads of @p multipliers only (no
   /// tractions, zero prescribed displacement): the linear part of the map
   /// from multipliers to solutions.
   void
-  solve_homogeneous_subproblems(const Subproblems         &subproblems,
-                                const Interface           &interface,
-                                const BlockVector<double> &multipliers,
-                                Solutions                 &solutions);
+  solve_homogeneous_subproblems(const Subproblems                 &subproblems,
+                                const Interface                   &interface,
+                                const dealii::BlockVector<double> &multipliers,
+                                Solutions                         &solutions);
 } // namespace bilayer
 
 #endif

@@ -21,8 +21,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * One of the four linear elasticity subproblems of paper.md §2: one layer
    * (u or v) on one subdomain (Omega- or Omega+), plane strain,
@@ -52,11 +50,11 @@ namespace bilayer
   class ElasticSubproblem
   {
   public:
-    ElasticSubproblem(const Layer             layer,
-                      const Subdomain         subdomain,
-                      const Triangulation<2> &triangulation,
-                      const unsigned int      degree,
-                      const LayerMaterial    &material,
+    ElasticSubproblem(const Layer                     layer,
+                      const Subdomain                 subdomain,
+                      const dealii::Triangulation<2> &triangulation,
+                      const unsigned int              degree,
+                      const LayerMaterial            &material,
                       const Distribution &distribution = Distribution::world());
 
     /**
@@ -65,10 +63,10 @@ namespace bilayer
      * that are not clamped; @p prescribed on the clamped ones.
      */
     void
-    setup(const PerSide<bool>                &clamped,
-          const Function<2>                  &prescribed,
-          const PerSide<const Function<2> *> &traction,
-          const std::string                  &shared_solver = "Amesos_Mumps");
+    setup(const PerSide<bool>                        &clamped,
+          const dealii::Function<2>                  &prescribed,
+          const PerSide<const dealii::Function<2> *> &traction,
+          const std::string &shared_solver = "Amesos_Mumps");
 
     /// Whether a group of processes shares it (DistributedSystem).
     bool
@@ -111,29 +109,30 @@ namespace bilayer
      * stay as they are: the interface reads only these.
      */
     void
-    share_trace(Vector<double> &w) const;
+    share_trace(dealii::Vector<double> &w) const;
 
     /// Solve with the extra load vector @p coupling (may be empty = zero).
     void
-    solve(const Vector<double> &coupling, Vector<double> &solution) const;
+    solve(const dealii::Vector<double> &coupling,
+          dealii::Vector<double>       &solution) const;
 
     /// Solve with the load @p coupling only: no tractions, zero prescribed
     /// displacement (the linear part of the solution map).
     void
-    solve_homogeneous(const Vector<double> &coupling,
-                      Vector<double>       &solution) const;
+    solve_homogeneous(const dealii::Vector<double> &coupling,
+                      dealii::Vector<double>       &solution) const;
 
     /// a(w, w) = int sigma(w) : eps(w) dx [energy].
     double
-    energy_norm_squared(const Vector<double> &w) const;
+    energy_norm_squared(const dealii::Vector<double> &w) const;
 
     /// Pi(w) = a(w, w) / 2 - (F, w) [energy].
     double
-    energy(const Vector<double> &w) const;
+    energy(const dealii::Vector<double> &w) const;
 
     /// The constraints of solve_homogeneous(): the hanging nodes and zero
     /// displacement on the clamped sides.
-    const AffineConstraints<double> &
+    const dealii::AffineConstraints<double> &
     zero_displacement_constraints() const
     {
       return homogeneous_constraints;
@@ -141,7 +140,7 @@ namespace bilayer
 
     /// The unconstrained stiffness matrix K (not with distributed(): the
     /// group holds it, see distributed_system()).
-    const SparseMatrix<double> &
+    const dealii::SparseMatrix<double> &
     stiffness_matrix() const
     {
       return stiffness;
@@ -150,7 +149,8 @@ namespace bilayer
     /// y = K x, the unconstrained stiffness (collective in the group with
     /// distributed()).
     void
-    multiply_stiffness(Vector<double> &y, const Vector<double> &x) const;
+    multiply_stiffness(dealii::Vector<double>       &y,
+                       const dealii::Vector<double> &x) const;
 
     /**
      * With distributed(): the stiffness matrix under other @p constraints
@@ -159,7 +159,8 @@ namespace bilayer
      * direct solver (collective in the group).
      */
     std::unique_ptr<DistributedSystem>
-    factorise_in_group(const AffineConstraints<double> &constraints) const;
+    factorise_in_group(
+      const dealii::AffineConstraints<double> &constraints) const;
 
     /// "u-", "u+", "v-" or "v+".
     std::string
@@ -175,17 +176,17 @@ namespace bilayer
     {
       return subdomain_;
     }
-    const DoFHandler<2> &
+    const dealii::DoFHandler<2> &
     dof_handler() const
     {
       return dofs;
     }
-    const FiniteElement<2> &
+    const dealii::FiniteElement<2> &
     fe() const
     {
       return *fe_system;
     }
-    const Mapping<2> &
+    const dealii::Mapping<2> &
     mapping() const;
     const LayerMaterial &
     material() const
@@ -203,8 +204,8 @@ namespace bilayer
 
   private:
     void
-    assemble(const PerSide<bool>                &clamped,
-             const PerSide<const Function<2> *> &traction);
+    assemble(const PerSide<bool>                        &clamped,
+             const PerSide<const dealii::Function<2> *> &traction);
 
     const Layer                        layer_;
     const Subdomain                    subdomain_;
@@ -214,17 +215,17 @@ namespace bilayer
     std::unique_ptr<DistributedSystem> shared;
     /// The dofs on the faces on Sigma (glued and crack), constrained ones
     /// included: the support of every trace the interface evaluates.
-    std::vector<types::global_dof_index> trace_dofs_;
-    std::unique_ptr<FESystem<2>>         fe_system;
-    DoFHandler<2>                        dofs;
-    AffineConstraints<double>            constraints;
-    AffineConstraints<double>            homogeneous_constraints;
-    SparsityPattern                      sparsity;
-    SparseMatrix<double>                 system_matrix;
-    SparseMatrix<double>                 stiffness;
-    Vector<double>                       system_rhs;
-    Vector<double>                       traction_load;
-    SparseCholesky                       factorisation;
+    std::vector<dealii::types::global_dof_index> trace_dofs_;
+    std::unique_ptr<dealii::FESystem<2>>         fe_system;
+    dealii::DoFHandler<2>                        dofs;
+    dealii::AffineConstraints<double>            constraints;
+    dealii::AffineConstraints<double>            homogeneous_constraints;
+    dealii::SparsityPattern                      sparsity;
+    dealii::SparseMatrix<double>                 system_matrix;
+    dealii::SparseMatrix<double>                 stiffness;
+    dealii::Vector<double>                       system_rhs;
+    dealii::Vector<double>                       traction_load;
+    SparseCholesky                               factorisation;
   };
 } // namespace bilayer
 

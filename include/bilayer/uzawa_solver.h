@@ -11,8 +11,6 @@
 
 namespace bilayer
 {
-  using namespace dealii;
-
   /**
    * The Uzawa algorithm of paper.md §4:
    *   1. mu^0 given (zero, or a warm start);
@@ -31,15 +29,15 @@ namespace bilayer
   class UzawaSolver : public OuterSolver
   {
   public:
-    UzawaSolver(const SolverParameters   &parameters,
-                const OutputParameters   &output,
-                const ConditionalOStream &pcout);
+    UzawaSolver(const SolverParameters           &parameters,
+                const OutputParameters           &output,
+                const dealii::ConditionalOStream &pcout);
 
     SolverResult
-    solve(const Subproblems   &subproblems,
-          const Interface     &interface,
-          BlockVector<double> &multipliers,
-          Solutions           &solutions) const override;
+    solve(const Subproblems           &subproblems,
+          const Interface             &interface,
+          dealii::BlockVector<double> &multipliers,
+          Solutions                   &solutions) const override;
 
     /// The projected gradient step is stable for theta < 2 / lambda_max.
     static const StepBound step_bound;
@@ -48,24 +46,24 @@ namespace bilayer
     /// Steps 2 to 4 from @p mu with the step and the set-up work recorded
     /// in @p result.
     void
-    iterate(const Subproblems   &subproblems,
-            const Interface     &interface,
-            BlockVector<double> &mu,
-            Solutions           &w,
-            SolverResult        &result) const;
+    iterate(const Subproblems           &subproblems,
+            const Interface             &interface,
+            dealii::BlockVector<double> &mu,
+            Solutions                   &w,
+            SolverResult                &result) const;
 
     /// 2 / lambda_max of S restricted to the multipliers that the projected
     /// step from the solution @p mu with jumps @p g does not hold at a bound.
     void
-    threshold_at_solution(const Subproblems         &subproblems,
-                          const Interface           &interface,
-                          const BlockVector<double> &mu,
-                          const BlockVector<double> &g,
-                          SolverResult              &result) const;
+    threshold_at_solution(const Subproblems                 &subproblems,
+                          const Interface                   &interface,
+                          const dealii::BlockVector<double> &mu,
+                          const dealii::BlockVector<double> &g,
+                          SolverResult                      &result) const;
 
-    const SolverParameters    parameters;
-    const OutputParameters    output;
-    const ConditionalOStream &pcout;
+    const SolverParameters            parameters;
+    const OutputParameters            output;
+    const dealii::ConditionalOStream &pcout;
   };
 } // namespace bilayer
 
