@@ -127,12 +127,12 @@ main(int argc, char **argv)
                   d2 += sub.energy_norm_squared(d);
                   n2 += sub.energy_norm_squared(reference->solutions()[i]);
                 }
-              const auto open = s.interface().normal_opening(s.solutions());
+              const auto open = normal_opening(s.interface(), s.solutions());
               const auto open_ref =
-                reference->interface().normal_opening(reference->solutions());
+                normal_opening(reference->interface(), reference->solutions());
               double od = 0, on = 0;
               for (unsigned int a = 0; a < open.size(); ++a)
-                if (s.interface().node_on_crack(a))
+                if (s.interface().space().on_crack(a))
                   {
                     od = std::max(od, std::abs(open[a] - open_ref[a]));
                     on = std::max(on, std::abs(open_ref[a]));

@@ -10,37 +10,15 @@ namespace bilayer
 {
   using namespace dealii;
 
-  const StepBound AcceleratedSolver::step_bound = {0.5, " / lambda_max"};
-
-
   AcceleratedSolver::AcceleratedSolver(const SolverParameters   &parameters,
                                        const OutputParameters   &output,
                                        const ConditionalOStream &pcout)
-    : parameters(parameters)
-    , output(output)
-    , pcout(pcout)
+    : FirstOrderSolver(parameters,
+                       output,
+                       pcout,
+                       "accelerated",
+                       {0.5, " / lambda_max"})
   {}
-
-
-  SolverResult
-  AcceleratedSolver::solve(const Subproblems   &subproblems,
-                           const Interface     &interface,
-                           BlockVector<double> &mu,
-                           Solutions           &w) const
-  {
-    SolverResult result;
-    result.solver = "accelerated";
-    result.theta  = parameters.theta;
-    Timer timer;
-    if (parameters.auto_theta)
-      result.subdomain_solves = choose_auto_step(
-        parameters, step_bound, subproblems, interface, pcout, result);
-    result.setup_seconds = timer.wall_time();
-    timer.restart();
-    iterate(subproblems, interface, mu, w, result);
-    result.iteration_seconds = timer.wall_time();
-    return result;
-  }
 
 
   void
@@ -112,7 +90,7 @@ namespace bilayer
         projected_step(interface, theta, mu, g, next);
         increment = projected;
         increment -= next;
-        last_increment = interface.weighted_norm(increment);
+        last_increment = interface.space().weighted_norm(increment);
         result.message = divergence.check(k, value, last_increment, next);
         if (!result.message.empty())
           {
@@ -124,7 +102,7 @@ namespace bilayer
         // FISTA momentum; restart when the step goes against the gradient at
         // the extrapolated point (O'Donoghue and Candes' gradient restart):
         // <g(y_k), x_{k+1} - x_k>_D < 0.
-        if (-interface.weighted_dot(g, increment) < 0)
+        if (-interface.space().weighted_dot(g, increment) < 0)
           t = 1;
         const double t_new = 0.5 * (1. + std::sqrt(1. + 4. * t * t));
         // y_{k+1} = x_{k+1} + (t - 1) / t_new (x_{k+1} - x_k)
@@ -152,7 +130,7 @@ namespace bilayer
       {
         BlockVector<double> g_projected;
         interface.jumps(w_projected, g_projected);
-        accept = interface.kkt_residual(w_projected, g_projected, x).value() <
+        accept = kkt_residual(interface, w_projected, g_projected, x).value() <
                  parameters.tolerance;
       }
     if (accept)

@@ -18,7 +18,7 @@ namespace bilayer
     largest_jump(const Interface &interface, const BlockVector<double> &x)
     {
       BlockVector<double> jump(x);
-      interface.scale_by_weights(jump, true);
+      interface.space().scale_by_weights(jump, true);
       return jump.linfty_norm();
     }
 
@@ -96,7 +96,7 @@ namespace bilayer
           solve_homogeneous_subproblems(subproblems, interface, p, homogeneous);
           outcome.subdomain_solves += Layout::n_subproblems;
           interface.jumps(homogeneous, q);
-          interface.scale_by_weights(q);
+          interface.space().scale_by_weights(q);
           q *= -1.; // F p
           q.scale(mask);
           const double pq = p * q;
@@ -122,9 +122,7 @@ namespace bilayer
   ActiveSetSolver::ActiveSetSolver(const SolverParameters   &parameters,
                                    const OutputParameters   &output,
                                    const ConditionalOStream &pcout)
-    : parameters(parameters)
-    , output(output)
-    , pcout(pcout)
+    : OuterSolver(parameters, output, pcout)
   {}
 
 
@@ -142,8 +140,8 @@ namespace bilayer
                                       interface);
     result.setup_seconds = timer.wall_time();
     timer.restart();
-    const BlockVector<double> &lower  = interface.lower_bounds();
-    const BlockVector<double> &upper  = interface.upper_bounds();
+    const BlockVector<double> &lower  = interface.space().lower_bounds();
+    const BlockVector<double> &upper  = interface.space().upper_bounds();
     const auto                 finish = [&](const std::string &message) {
       result.message = message;
       if (preconditioner.n_degraded_steps() > 0)
@@ -157,7 +155,7 @@ namespace bilayer
     };
     BlockVector<double> g, mask(lower), previous_mask(lower), r, delta;
     unsigned int        inner_iterations = 0;
-    interface.project(mu);
+    interface.space().project(mu);
 
     for (unsigned int k = 0;; ++k)
       {
@@ -165,7 +163,7 @@ namespace bilayer
         result.subdomain_solves += Layout::n_subproblems;
         result.iterations = k;
         interface.jumps(w, g);
-        const KKTResidual kkt = interface.kkt_residual(w, g, mu);
+        const KKTResidual kkt = kkt_residual(interface, w, g, mu);
         result.stopping_value = kkt.value();
 
         // The active set at mu: components held at a bound.
@@ -230,9 +228,9 @@ namespace bilayer
         if (k == 0 || n_changed > 0)
           preconditioner.reinit(mask);
         r = g;
-        interface.scale_by_weights(r);
+        interface.space().scale_by_weights(r);
         r.scale(mask);
-        const double scale = interface.displacement_scale(w);
+        const double scale = displacement_scale(interface, w);
         const double start = largest_jump(interface, r);
         const double target =
           std::max(settled ? 0. : parameters.inner_tolerance * start,
@@ -261,7 +259,7 @@ namespace bilayer
           }
         result.linear_iterations += inner_iterations;
         mu += delta;
-        interface.project(mu);
+        interface.space().project(mu);
       }
   }
 } // namespace bilayer

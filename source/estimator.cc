@@ -25,7 +25,7 @@ namespace bilayer
     // summed per subdomain in the order of the subproblems.
     PerSubproblem<Vector<double>>     squared;
     const std::vector<ContactSegment> contact =
-      interface_terms ? interface.contact_residual(w, mu) :
+      interface_terms ? contact_residual(interface, w, mu) :
                         std::vector<ContactSegment>();
     for (const unsigned int s : Layout::subproblems)
       if (subproblems[s] != nullptr && subproblems[s]->owned())

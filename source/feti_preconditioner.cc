@@ -45,7 +45,7 @@ namespace bilayer
     z = r;
     if (type == DualPreconditioner::none || degraded)
       {
-        interface.scale_by_weights(z, true);
+        interface.space().scale_by_weights(z, true);
         z.scale(mask);
         return 0;
       }
@@ -64,7 +64,7 @@ namespace bilayer
     tasks.join_all();
     share_traces(subproblems, reactions);
     interface.jumps(reactions, z);
-    interface.scale_by_weights(z); // B S (-B^T G^{-1} r)
+    interface.space().scale_by_weights(z); // B S (-B^T G^{-1} r)
     z *= -1.;
     z.scale(mask);
     solve_gram(z);

@@ -1,3 +1,5 @@
+#include <deal.II/base/timer.h>
+
 #include <bilayer/first_order_iteration.h>
 
 #include <cmath>
@@ -51,7 +53,7 @@ namespace bilayer
   {
     next = mu;
     next.add(theta, g);
-    interface.project(next);
+    interface.space().project(next);
   }
 
 
@@ -60,8 +62,8 @@ namespace bilayer
                      const Solutions           &w,
                      const BlockVector<double> &g)
   {
-    const double scale     = interface.displacement_scale(w);
-    const double violation = interface.discrete_violation(g);
+    const double scale     = displacement_scale(interface, w);
+    const double violation = interface.space().discrete_violation(g);
     return scale > 0 ? violation / scale : violation;
   }
 
@@ -77,10 +79,10 @@ namespace bilayer
                  const double               last_increment)
   {
     if (parameters.stopping_rule == StoppingRule::kkt)
-      return interface.kkt_residual(w, g, mu).value();
+      return kkt_residual(interface, w, g, mu).value();
     if (parameters.stopping_rule == StoppingRule::relative)
       {
-        const double norm   = interface.weighted_norm(mu);
+        const double norm   = interface.space().weighted_norm(mu);
         const double change = norm > 0 ? last_increment / norm : last_increment;
         return std::max(change, relative_violation(interface, w, g));
       }
@@ -173,7 +175,7 @@ namespace bilayer
                  std::to_string(k) + " (reduce Solver/Uzawa step theta" +
                  safe_step_advice() + ")";
     if (increment > parameters.divergence_factor * min_increment &&
-        increment > 1e-12 * interface.weighted_norm(next))
+        increment > 1e-12 * interface.space().weighted_norm(next))
       {
         std::ostringstream msg;
         msg << "diverged at iteration " << k
@@ -207,5 +209,26 @@ namespace bilayer
          << " (" << parameters.auto_theta_fraction << bound.in_words
          << ", or theta = auto)";
     return text.str();
+  }
+
+
+  SolverResult
+  FirstOrderSolver::solve(const Subproblems   &subproblems,
+                          const Interface     &interface,
+                          BlockVector<double> &mu,
+                          Solutions           &w) const
+  {
+    SolverResult result;
+    result.solver = name;
+    result.theta  = parameters.theta;
+    Timer timer;
+    if (parameters.auto_theta)
+      result.subdomain_solves = choose_auto_step(
+        parameters, step_bound, subproblems, interface, pcout, result);
+    result.setup_seconds = timer.wall_time();
+    timer.restart();
+    iterate(subproblems, interface, mu, w, result);
+    result.iteration_seconds = timer.wall_time();
+    return result;
   }
 } // namespace bilayer

@@ -88,8 +88,8 @@ namespace bilayer
                                         w[Layout::u_minus],
                                         tm);
     interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
-    std::vector<double> result(interface.n_nodes());
-    for (unsigned int a = 0; a < interface.n_nodes(); ++a)
+    std::vector<double> result(interface.space().n_nodes());
+    for (unsigned int a = 0; a < interface.space().n_nodes(); ++a)
       result[a] = tp(Layout::entry(a, Layout::normal)) -
                   tm(Layout::entry(a, Layout::normal));
     return result;

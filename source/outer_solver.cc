@@ -36,17 +36,17 @@ namespace bilayer
   {
     SpectrumEstimate    estimate;
     BlockVector<double> x, g;
-    interface.initialize(x);
+    interface.space().initialize(x);
     // A fixed pseudo-random start, so that runs are reproducible and the
     // start is not orthogonal to the top eigenvector.
     std::mt19937                           random(42);
     std::uniform_real_distribution<double> uniform(-1., 1.);
     for (unsigned int i = 0; i < x.size(); ++i)
       x(i) = uniform(random);
-    interface.restrict_to_free(x);
+    interface.space().restrict_to_free(x);
     if (mask)
       x.scale(*mask);
-    x /= interface.weighted_norm(x);
+    x /= interface.space().weighted_norm(x);
 
     Solutions w;
     for (unsigned int k = 0; k < max_iterations; ++k)
@@ -60,11 +60,11 @@ namespace bilayer
           g.scale(*mask);
 
         // Rayleigh quotient <x, S x>_D with ||x||_D = 1.
-        const double lambda = interface.weighted_dot(x, g);
+        const double lambda = interface.space().weighted_dot(x, g);
         const bool   settled =
           k > 0 && std::abs(lambda - estimate.lambda_max) < 1e-4 * lambda;
         estimate.lambda_max = lambda;
-        const double norm   = interface.weighted_norm(g);
+        const double norm   = interface.space().weighted_norm(g);
         if (settled || norm == 0.)
           break;
         x = g;

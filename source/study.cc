@@ -121,8 +121,8 @@ namespace bilayer
     // the subproblems they live on are replaced).
     const bool warm =
       scene.solver.warm_start && !cycle_records.empty() && mu.size() > 0;
-    const Interface::MultiplierFunctions previous =
-      warm ? coupling.functions(mu) : Interface::MultiplierFunctions();
+    const MultiplierSpace::Functions previous =
+      warm ? coupling.space().functions(mu) : MultiplierSpace::Functions();
 
     build_meshes(record);
     check_memory(record);
@@ -262,14 +262,14 @@ namespace bilayer
 
 
   void
-  Study::set_up_interface(CycleRecord                          &record,
-                          const Interface::MultiplierFunctions *previous)
+  Study::set_up_interface(CycleRecord                      &record,
+                          const MultiplierSpace::Functions *previous)
   {
     coupling.setup(subproblem_views());
-    coupling.initialize(mu);
+    coupling.space().initialize(mu);
     if (previous != nullptr)
-      coupling.interpolate(*previous, mu);
-    record.multipliers = coupling.n_multipliers();
+      coupling.space().interpolate(*previous, mu);
+    record.multipliers = coupling.space().n_free();
   }
 
 
@@ -307,7 +307,7 @@ namespace bilayer
            return subproblems[s]->energy(w[s]);
          }))
       record.energy += e;
-    record.report = coupling.assess(w, mu);
+    record.report = bilayer::assess(coupling, w, mu);
     check(record);
     if (scene.mesh.refinement == Refinement::adaptive)
       indicators = estimate_error(subproblem_views(),
@@ -355,7 +355,9 @@ namespace bilayer
     const std::string &dir = scene.output.directory;
     if (scene.output.write_interface)
       write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
-                       [&](std::ostream &o) { coupling.write_csv(o, w, mu); });
+                       [&](std::ostream &o) {
+                         write_interface_csv(o, coupling, w, mu);
+                       });
     write_atomically(dir + "/summary.json", [&](std::ostream &o) {
       write_summary_json(o, scene.name, cycle_records);
     });
@@ -475,16 +477,16 @@ namespace bilayer
          << std::endl;
     if (distribution.is_root())
       {
-        const std::vector<double> opening = coupling.normal_opening(w);
+        const std::vector<double> opening = normal_opening(coupling, w);
         int                       a_max   = -1;
-        for (unsigned int a = 0; a < coupling.n_nodes(); ++a)
-          if (coupling.node_on_crack(a) &&
+        for (unsigned int a = 0; a < coupling.space().n_nodes(); ++a)
+          if (coupling.space().on_crack(a) &&
               (a_max < 0 || opening[a] > opening[a_max]))
             a_max = a;
         if (a_max >= 0)
           {
             std::ostringstream x;
-            x << std::setprecision(6) << coupling.node_position(a_max);
+            x << std::setprecision(6) << coupling.space().node_position(a_max);
             rout << "cycle " << record.cycle << ": largest crack opening "
                  << scaled(opening[a_max]) << " at x = " << x.str()
                  << std::endl;

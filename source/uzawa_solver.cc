@@ -11,37 +11,15 @@ namespace bilayer
 {
   using namespace dealii;
 
-  const StepBound UzawaSolver::step_bound = {1., " * 2 / lambda_max"};
-
-
   UzawaSolver::UzawaSolver(const SolverParameters   &parameters,
                            const OutputParameters   &output,
                            const ConditionalOStream &pcout)
-    : parameters(parameters)
-    , output(output)
-    , pcout(pcout)
+    : FirstOrderSolver(parameters,
+                       output,
+                       pcout,
+                       "uzawa",
+                       {1., " * 2 / lambda_max"})
   {}
-
-
-  SolverResult
-  UzawaSolver::solve(const Subproblems   &subproblems,
-                     const Interface     &interface,
-                     BlockVector<double> &mu,
-                     Solutions           &w) const
-  {
-    SolverResult result;
-    result.solver = "uzawa";
-    result.theta  = parameters.theta;
-    Timer timer;
-    if (parameters.auto_theta)
-      result.subdomain_solves = choose_auto_step(
-        parameters, step_bound, subproblems, interface, pcout, result);
-    result.setup_seconds = timer.wall_time();
-    timer.restart();
-    iterate(subproblems, interface, mu, w, result);
-    result.iteration_seconds = timer.wall_time();
-    return result;
-  }
 
 
   void
@@ -106,7 +84,7 @@ namespace bilayer
         projected_step(interface, theta, mu, g, mu_new);
         increment = mu;
         increment -= mu_new;
-        last_increment = interface.weighted_norm(increment);
+        last_increment = interface.space().weighted_norm(increment);
         result.message = divergence.check(k, value, last_increment, mu_new);
         if (!result.message.empty())
           {
@@ -132,7 +110,7 @@ namespace bilayer
     const double        theta = result.theta;
     BlockVector<double> free_set(mu), trial(mu);
     trial.add(theta, g);
-    interface.project(trial);
+    interface.space().project(trial);
     for (unsigned int i = 0; i < mu.size(); ++i)
       free_set(i) = trial(i) == mu(i) + theta * g(i) ? 1. : 0.;
     const SpectrumEstimate estimate = estimate_lambda_max(

@@ -51,10 +51,10 @@ main()
                             contact + "\nend\n",
                           "contact-estimator"),
         quiet);
-      const CycleRecord &r = study.run_cycle(0);
-      const auto         segments =
-        study.interface().contact_residual(study.solutions(),
-                                           study.multipliers());
+      const CycleRecord &r        = study.run_cycle(0);
+      const auto         segments = contact_residual(study.interface(),
+                                             study.solutions(),
+                                             study.multipliers());
       if (contact == "false")
         {
           std::cout << "without non-penetration: no complementarity term: "
@@ -103,17 +103,17 @@ main()
       study.run_cycle(0);
       const Interface &sigma = study.interface();
       const auto       segments =
-        sigma.contact_residual(study.solutions(), study.multipliers());
-      const std::vector<double> open = sigma.normal_opening(study.solutions());
+        contact_residual(sigma, study.solutions(), study.multipliers());
+      const std::vector<double> open = normal_opening(sigma, study.solutions());
       const QGauss<1>           gauss(12);
       double                    largest = 0, error = 0;
       unsigned int              wrong_nodes = 0;
       for (const auto &c : segments)
         {
           std::vector<unsigned int> nodes;
-          for (unsigned int a = 0; a < sigma.n_nodes(); ++a)
-            if (sigma.node_position(a) >= c.a - 1e-12 &&
-                sigma.node_position(a) <= c.b + 1e-12)
+          for (unsigned int a = 0; a < sigma.space().n_nodes(); ++a)
+            if (sigma.space().node_position(a) >= c.a - 1e-12 &&
+                sigma.space().node_position(a) <= c.b + 1e-12)
               nodes.push_back(a);
           wrong_nodes += nodes.size() != degree + 1;
           double exact = 0;
@@ -126,8 +126,9 @@ main()
                   double l = 1;
                   for (const unsigned int j : nodes)
                     if (j != i)
-                      l *= (x - sigma.node_position(j)) /
-                           (sigma.node_position(i) - sigma.node_position(j));
+                      l *= (x - sigma.space().node_position(j)) /
+                           (sigma.space().node_position(i) -
+                            sigma.space().node_position(j));
                   mu +=
                     l *
                     sigma.space().contact_multiplier(study.multipliers(), i);

@@ -70,7 +70,7 @@ namespace
   std::vector<double>
   opening(const Study &study)
   {
-    return study.interface().normal_opening(study.solutions());
+    return normal_opening(study.interface(), study.solutions());
   }
 
   /// K w for subproblem s of @p study (Q1, plane strain, the moduli of
@@ -147,36 +147,36 @@ main()
   contact.run_cycle(0);
   const Interface          &sigma = contact.interface();
   const std::vector<double> open  = opening(contact);
-  const double scale = sigma.displacement_scale(contact.solutions());
+  const double scale = displacement_scale(sigma, contact.solutions());
 
   bool   nonpenetration = true;
   double max_open = 0, complementarity = 0;
   // The contact force at each crack node from the residual of u+ and v+.
   const Vector<double> Ku = stiffness_times(contact, 1),
                        Kv = stiffness_times(contact, 3);
-  std::vector<double> force(sigma.n_nodes(), 0.);
+  std::vector<double> force(sigma.space().n_nodes(), 0.);
   double              max_force = 0;
-  for (unsigned int a = 0; a < sigma.n_nodes(); ++a)
-    if (sigma.node_on_crack(a))
+  for (unsigned int a = 0; a < sigma.space().n_nodes(); ++a)
+    if (sigma.space().on_crack(a))
       {
-        const double x = sigma.node_position(a);
+        const double x = sigma.space().node_position(a);
         force[a] =
           Ku(sigma_y_dof(contact, 1, x)) + Kv(sigma_y_dof(contact, 3, x));
         max_force = std::max(max_force, std::abs(force[a]));
       }
   bool              compressive = max_force > 0, force_is_multiplier = true;
   bool              left_open = true, right_closed_somewhere = false;
-  std::vector<bool> closed(sigma.n_nodes(), false);
-  for (unsigned int a = 0; a < sigma.n_nodes(); ++a)
-    if (sigma.node_on_crack(a))
+  std::vector<bool> closed(sigma.space().n_nodes(), false);
+  for (unsigned int a = 0; a < sigma.space().n_nodes(); ++a)
+    if (sigma.space().on_crack(a))
       {
         const double mu_c =
           sigma.space().contact_multiplier(contact.multipliers(), a);
         // D_a: half the adjacent segments (lumped, Q1: all nodes are
         // vertices).
-        const double D_a =
-          0.5 * (sigma.node_position(a + 1) - sigma.node_position(a - 1));
-        compressive = compressive && force[a] >= -1e-8 * max_force;
+        const double D_a = 0.5 * (sigma.space().node_position(a + 1) -
+                                  sigma.space().node_position(a - 1));
+        compressive      = compressive && force[a] >= -1e-8 * max_force;
         force_is_multiplier =
           force_is_multiplier &&
           std::abs(force[a] - D_a * mu_c) <= 1e-6 * max_force;
@@ -184,9 +184,9 @@ main()
         max_open        = std::max(max_open, open[a]);
         complementarity = std::max(complementarity, mu_c * std::abs(open[a]));
         closed[a]       = mu_c > 0;
-        if (sigma.node_position(a) < 0)
+        if (sigma.space().node_position(a) < 0)
           left_open = left_open && open[a] > 0.1 * scale;
-        if (sigma.node_position(a) > 0 && closed[a])
+        if (sigma.space().node_position(a) > 0 && closed[a])
           right_closed_somewhere = true;
       }
   double max_mu =
@@ -210,7 +210,7 @@ main()
   linear.run_cycle(0);
   const std::vector<double> open_linear = opening(linear);
   bool                      penetrates  = true;
-  for (unsigned int a = 0; a < sigma.n_nodes(); ++a)
+  for (unsigned int a = 0; a < sigma.space().n_nodes(); ++a)
     if (closed[a])
       penetrates = penetrates && open_linear[a] < -1e-3 * scale;
   std::cout << "linear problem interpenetrates where the contact problem "
@@ -244,7 +244,7 @@ main()
   Study full(scene_from_string(text, "e2"), std::cout);
   full.run_cycle(0);
   const std::vector<double> open_full = opening(full);
-  const unsigned int        n         = sigma.n_nodes();
+  const unsigned int        n         = sigma.space().n_nodes();
   double                    asymmetry = 0, max_full = 0;
   for (unsigned int a = 0; a < n; ++a)
     {
@@ -256,7 +256,7 @@ main()
             << yes(asymmetry <= 1e-8 * max_full) << std::endl;
   bool all_open = true;
   for (unsigned int a = 0; a < n; ++a)
-    if (sigma.node_on_crack(a))
+    if (sigma.space().on_crack(a))
       all_open =
         all_open && open_full[a] > 0 &&
         full.interface().space().contact_multiplier(full.multipliers(), a) == 0;

@@ -505,10 +505,10 @@ compare(const unsigned int n_layers)
          force_difference = 0;
   bool      left_open = true, right_end_closed = false;
   long long right_end = reference.crack_nodes.back();
-  for (unsigned int a = 0; a < interface.n_nodes(); ++a)
-    if (interface.node_on_crack(a))
+  for (unsigned int a = 0; a < interface.space().n_nodes(); ++a)
+    if (interface.space().on_crack(a))
       {
-        const long long x = key_of(interface.node_position(a));
+        const long long x = key_of(interface.space().node_position(a));
         uzawa_crack.push_back(x);
         const double opening =
           w[1](uzawa_plus.at(x)[1]) - w[0](uzawa_minus.at(x)[1]);
@@ -622,10 +622,10 @@ compare(const unsigned int n_layers)
                 << ", force difference / max " << force_difference / max_force
                 << ", nodal difference / max "
                 << max_difference / max_displacement << std::endl;
-      for (unsigned int a = 0; a < interface.n_nodes(); ++a)
-        if (interface.node_on_crack(a))
+      for (unsigned int a = 0; a < interface.space().n_nodes(); ++a)
+        if (interface.space().on_crack(a))
           {
-            const long long x = key_of(interface.node_position(a));
+            const long long x = key_of(interface.space().node_position(a));
             std::cerr
               << "  x " << x * 1e-6 << " opening ref " << reference.opening(x)
               << " uzawa "

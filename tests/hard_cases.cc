@@ -102,11 +102,11 @@ main()
                                    "linear"),
                  quiet);
     linear.run_cycle(0);
-    const auto   open = linear.interface().normal_opening(linear.solutions());
+    const auto   open = normal_opening(linear.interface(), linear.solutions());
     bool         pressed = true, penetrates = true;
     unsigned int n = 0;
-    for (unsigned int a = 0; a < closed.interface().n_nodes(); ++a)
-      if (closed.interface().node_on_crack(a))
+    for (unsigned int a = 0; a < closed.interface().space().n_nodes(); ++a)
+      if (closed.interface().space().on_crack(a))
         {
           ++n;
           pressed =
@@ -114,8 +114,8 @@ main()
             closed.interface().space().contact_multiplier(closed.multipliers(),
                                                           a) > 0;
         }
-    for (unsigned int a = 0; a < linear.interface().n_nodes(); ++a)
-      if (linear.interface().node_on_crack(a))
+    for (unsigned int a = 0; a < linear.interface().space().n_nodes(); ++a)
+      if (linear.interface().space().on_crack(a))
         penetrates = penetrates && open[a] < 0;
     std::cout << "full closure: accepted: " << yes(accepted)
               << ", mu_c > 0 at all " << n << " crack nodes: " << yes(pressed)

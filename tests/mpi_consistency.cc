@@ -144,9 +144,9 @@ namespace
       mu_difference = std::max(mu_difference, std::abs(mu_a(i) - mu_b(i)));
     mu_difference /= std::max(mu_a.linfty_norm(), 1e-300);
     const std::vector<double> open_a =
-      reference->interface().normal_opening(reference->solutions());
+      normal_opening(reference->interface(), reference->solutions());
     const std::vector<double> open_b =
-      study.interface().normal_opening(study.solutions());
+      normal_opening(study.interface(), study.solutions());
     double open_difference =
       open_a.size() == open_b.size() ? 0 : std::numeric_limits<double>::max();
     for (unsigned int i = 0; i < std::min(open_a.size(), open_b.size()); ++i)

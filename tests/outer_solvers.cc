@@ -134,12 +134,12 @@ main()
               // S (w on Sigma) = load for w = K^-1 load, load on Sigma only.
               const Interface    &interface = study->interface();
               BlockVector<double> mu;
-              interface.initialize(mu);
+              interface.space().initialize(mu);
               std::mt19937                           random(7);
               std::uniform_real_distribution<double> uniform(-1., 1.);
               for (unsigned int i = 0; i < mu.size(); ++i)
                 mu(i) = uniform(random);
-              interface.restrict_to_free(mu);
+              interface.space().restrict_to_free(mu);
               Solutions loads, w;
               interface.apply(mu, loads);
               Subproblems subproblems;

@@ -30,21 +30,12 @@ namespace bilayer
    * 1 / lambda_max(S) (choose_auto_step()). The iteration is stopped as
    * divergent by the DivergenceTest.
    */
-  class AcceleratedSolver : public OuterSolver
+  class AcceleratedSolver : public FirstOrderSolver
   {
   public:
     AcceleratedSolver(const SolverParameters           &parameters,
                       const OutputParameters           &output,
                       const dealii::ConditionalOStream &pcout);
-
-    SolverResult
-    solve(const Subproblems           &subproblems,
-          const Interface             &interface,
-          dealii::BlockVector<double> &multipliers,
-          Solutions                   &solutions) const override;
-
-    /// The extrapolated steps are stable for theta < 1 / lambda_max.
-    static const StepBound step_bound;
 
   private:
     /// The iteration from @p mu with the step and the set-up work recorded
@@ -54,7 +45,7 @@ namespace bilayer
             const Interface             &interface,
             dealii::BlockVector<double> &mu,
             Solutions                   &w,
-            SolverResult                &result) const;
+            SolverResult                &result) const override;
 
     /**
      * Whether the projected iterate @p x meets the stopping rule: its
@@ -69,10 +60,6 @@ namespace bilayer
                      dealii::BlockVector<double>       &mu,
                      Solutions                         &w,
                      SolverResult                      &result) const;
-
-    const SolverParameters            parameters;
-    const OutputParameters            output;
-    const dealii::ConditionalOStream &pcout;
   };
 } // namespace bilayer
 

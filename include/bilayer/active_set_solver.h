@@ -68,9 +68,6 @@ namespace bilayer
           Solutions                   &solutions) const override;
 
   private:
-    const SolverParameters            parameters;
-    const OutputParameters            output;
-    const dealii::ConditionalOStream &pcout;
   };
 
 } // namespace bilayer

@@ -168,6 +168,43 @@ namespace bilayer
     const double            theta, lambda_max;
     double                  min_increment;
   };
+  /**
+   * The frame of the two first-order iterations: theta = auto (the power
+   * iteration, with the iteration's own StepBound) as the solver's set-up,
+   * then iterate(), both timed.
+   */
+  class FirstOrderSolver : public OuterSolver
+  {
+  public:
+    SolverResult
+    solve(const Subproblems           &subproblems,
+          const Interface             &interface,
+          dealii::BlockVector<double> &multipliers,
+          Solutions                   &solutions) const override;
+
+  protected:
+    FirstOrderSolver(const SolverParameters           &parameters,
+                     const OutputParameters           &output,
+                     const dealii::ConditionalOStream &pcout,
+                     const std::string                &name,
+                     const StepBound                  &step_bound)
+      : OuterSolver(parameters, output, pcout)
+      , name(name)
+      , step_bound(step_bound)
+    {}
+
+    /// Iterate from @p mu with the step result.theta.
+    virtual void
+    iterate(const Subproblems           &subproblems,
+            const Interface             &interface,
+            dealii::BlockVector<double> &mu,
+            Solutions                   &w,
+            SolverResult                &result) const = 0;
+
+    /// SolverResult::solver.
+    const std::string name;
+    const StepBound   step_bound;
+  };
 } // namespace bilayer
 
 #endif

@@ -13,7 +13,6 @@
 #include <bilayer/subproblem.h>
 #include <bilayer/trace_coupling.h>
 
-#include <ostream>
 #include <vector>
 
 namespace bilayer
@@ -22,8 +21,9 @@ namespace bilayer
    * The interface Sigma as the outer solvers see it: the multiplier spaces
    * (MultiplierSpace: meshes, bounds, projection, the D inner product), the
    * coupling to the subproblems' traces (TraceCoupling) and the two
-   * operators of the dual problem that need both, apply() and jumps().
-   * The residuals of a solution are in interface_diagnostics.h.
+   * operators of the dual problem that need both, apply() and jumps(), and
+   * the traction of the multipliers on a subproblem. The residuals of a
+   * solution and the CSV writer are in interface_diagnostics.h.
    *
    * <h3>Discrete problem and update</h3>
    * The multiplier terms of the four subproblems (paper.md §4, step 2) are
@@ -44,13 +44,6 @@ namespace bilayer
   public:
     Interface(const GeometryParameters &geometry,
               const ContactParameters  &contact);
-
-    /// Index of subproblem (layer, subdomain) in Solutions: Layout::index().
-    static constexpr unsigned int
-    index(const Layer layer, const Subdomain subdomain)
-    {
-      return Layout::index(layer, subdomain);
-    }
 
     /// Build the multiplier spaces and all operators for the given
     /// subproblems (indexed by Layout::index()); without layer 2 its entries
@@ -116,132 +109,6 @@ namespace bilayer
     {
       coupling_.gram(mask, pattern, gram);
     }
-
-    /// @name The multiplier space (MultiplierSpace)
-    /// @{
-    void
-    initialize(dealii::BlockVector<double> &multipliers) const
-    {
-      space_.initialize(multipliers);
-    }
-    void
-    project(dealii::BlockVector<double> &multipliers) const
-    {
-      space_.project(multipliers);
-    }
-    void
-    restrict_to_free(dealii::BlockVector<double> &x) const
-    {
-      space_.restrict_to_free(x);
-    }
-    double
-    weighted_dot(const dealii::BlockVector<double> &x,
-                 const dealii::BlockVector<double> &y) const
-    {
-      return space_.weighted_dot(x, y);
-    }
-    /// sqrt(sum_i D_i x_i^2) over all blocks.
-    double
-    weighted_norm(const dealii::BlockVector<double> &x) const
-    {
-      return std::sqrt(space_.weighted_dot(x, x));
-    }
-    double
-    discrete_violation(const dealii::BlockVector<double> &g) const
-    {
-      return space_.discrete_violation(g);
-    }
-    void
-    scale_by_weights(dealii::BlockVector<double> &x,
-                     const bool                   inverse = false) const
-    {
-      space_.scale_by_weights(x, inverse);
-    }
-    const dealii::BlockVector<double> &
-    lower_bounds() const
-    {
-      return space_.lower_bounds();
-    }
-    const dealii::BlockVector<double> &
-    upper_bounds() const
-    {
-      return space_.upper_bounds();
-    }
-    /// Nodes of mu_1.
-    unsigned int
-    n_nodes() const
-    {
-      return space_.n_nodes(Layout::across_sigma);
-    }
-    unsigned int
-    n_multipliers() const
-    {
-      return space_.n_free();
-    }
-    /// Position x of node a of mu_1.
-    double
-    node_position(const unsigned int a) const
-    {
-      return space_.node_position(a, Layout::across_sigma);
-    }
-    /// Whether node a of mu_1 lies strictly inside the crack.
-    bool
-    node_on_crack(const unsigned int a) const
-    {
-      return space_.on_crack(a);
-    }
-    using MultiplierFunctions = MultiplierSpace::Functions;
-    MultiplierFunctions
-    functions(const dealii::BlockVector<double> &mu) const
-    {
-      return space_.functions(mu);
-    }
-    void
-    interpolate(const MultiplierFunctions   &old,
-                dealii::BlockVector<double> &mu) const
-    {
-      space_.interpolate(old, mu);
-    }
-    /// @}
-
-    /// @name Residuals of a solution (interface_diagnostics.h)
-    /// @{
-    double
-    displacement_scale(const Solutions &w) const
-    {
-      return bilayer::displacement_scale(*this, w);
-    }
-    KKTResidual
-    kkt_residual(const Solutions                   &w,
-                 const dealii::BlockVector<double> &g,
-                 const dealii::BlockVector<double> &mu) const
-    {
-      return bilayer::kkt_residual(*this, w, g, mu);
-    }
-    std::vector<double>
-    normal_opening(const Solutions &w) const
-    {
-      return bilayer::normal_opening(*this, w);
-    }
-    InterfaceReport
-    assess(const Solutions &w, const dealii::BlockVector<double> &mu) const
-    {
-      return bilayer::assess(*this, w, mu);
-    }
-    std::vector<ContactSegment>
-    contact_residual(const Solutions                   &w,
-                     const dealii::BlockVector<double> &mu) const
-    {
-      return bilayer::contact_residual(*this, w, mu);
-    }
-    void
-    write_csv(std::ostream                      &out,
-              const Solutions                   &w,
-              const dealii::BlockVector<double> &mu) const
-    {
-      write_interface_csv(out, *this, w, mu);
-    }
-    /// @}
 
     /// Whether subproblem @p s exists (layer 2 may be absent).
     bool

@@ -7,6 +7,7 @@
 #include <bilayer/layout.h>
 #include <bilayer/parameters.h>
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -112,6 +113,13 @@ namespace bilayer
     double
     weighted_dot(const dealii::BlockVector<double> &x,
                  const dealii::BlockVector<double> &y) const;
+
+    /// sqrt(sum_i D_i x_i^2) over all blocks.
+    double
+    weighted_norm(const dealii::BlockVector<double> &x) const
+    {
+      return std::sqrt(weighted_dot(x, x));
+    }
 
     /// x_i <- D_i x_i, or x_i / D_i with @p inverse.
     void

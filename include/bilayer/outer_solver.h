@@ -72,6 +72,19 @@ namespace bilayer
           const Interface             &interface,
           dealii::BlockVector<double> &multipliers,
           Solutions                   &solutions) const = 0;
+
+  protected:
+    OuterSolver(const SolverParameters           &parameters,
+                const OutputParameters           &output,
+                const dealii::ConditionalOStream &pcout)
+      : parameters(parameters)
+      , output(output)
+      , pcout(pcout)
+    {}
+
+    const SolverParameters            parameters;
+    const OutputParameters            output;
+    const dealii::ConditionalOStream &pcout;
   };
 
   /// The outer solver that Solver/Method selects. It prints its progress to

@@ -107,8 +107,8 @@ namespace bilayer
     /// The interface and the multipliers, started from @p previous (the
     /// previous cycle's multipliers) if given.
     void
-    set_up_interface(CycleRecord                          &record,
-                     const Interface::MultiplierFunctions *previous);
+    set_up_interface(CycleRecord                      &record,
+                     const MultiplierSpace::Functions *previous);
     /// The outer solve, with its times and the MPI exchange.
     void
     solve(CycleRecord &record);

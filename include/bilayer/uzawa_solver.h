@@ -26,21 +26,12 @@ namespace bilayer
    * multipliers that the projection does not hold at a bound. The iteration
    * is stopped as divergent by the DivergenceTest.
    */
-  class UzawaSolver : public OuterSolver
+  class UzawaSolver : public FirstOrderSolver
   {
   public:
     UzawaSolver(const SolverParameters           &parameters,
                 const OutputParameters           &output,
                 const dealii::ConditionalOStream &pcout);
-
-    SolverResult
-    solve(const Subproblems           &subproblems,
-          const Interface             &interface,
-          dealii::BlockVector<double> &multipliers,
-          Solutions                   &solutions) const override;
-
-    /// The projected gradient step is stable for theta < 2 / lambda_max.
-    static const StepBound step_bound;
 
   private:
     /// Steps 2 to 4 from @p mu with the step and the set-up work recorded
@@ -50,7 +41,7 @@ namespace bilayer
             const Interface             &interface,
             dealii::BlockVector<double> &mu,
             Solutions                   &w,
-            SolverResult                &result) const;
+            SolverResult                &result) const override;
 
     /// 2 / lambda_max of S restricted to the multipliers that the projected
     /// step from the solution @p mu with jumps @p g does not hold at a bound.
@@ -60,10 +51,6 @@ namespace bilayer
                           const dealii::BlockVector<double> &mu,
                           const dealii::BlockVector<double> &g,
                           SolverResult                      &result) const;
-
-    const SolverParameters            parameters;
-    const OutputParameters            output;
-    const dealii::ConditionalOStream &pcout;
   };
 } // namespace bilayer
 
