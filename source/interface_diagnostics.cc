@@ -216,7 +216,7 @@ namespace bilayer
     // element at its points.
     const QGauss<1>                  gauss(degree + 1);
     std::vector<std::vector<double>> shape(gauss.size());
-    if (degree >= 3)
+    if (degree >= 3 && bp.size() >= 2)
       for (unsigned int q = 0; q < gauss.size(); ++q)
         space.shape_values(Layout::across_sigma,
                            bp[0] + gauss.point(q)[0] * (bp[1] - bp[0]),

@@ -1,4 +1,5 @@
-// The complementarity term of the estimator (Interface::contact_residual).
+// The complementarity term of the estimator (contact_residual() of
+// interface_diagnostics.h).
 //
 // Example 1 on 32 cells along Sigma, solved to a KKT residual of 1e-12: the
 // discrete constraints hold at the nodes, so mu_c [u].nu vanishes at every

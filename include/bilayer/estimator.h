@@ -27,10 +27,10 @@ namespace bilayer
    * the weight h/24 is Kelly's. On the crack faces of layer 1 the
    * indicator also carries @p contact_weight times
    * |int_F mu_c [u].nu ds| / (2 mu) (the
-   * complementarity of Interface::contact_residual(), split among the
-   * faces by overlap; an energy over 2 mu, so again a squared length):
-   * the discrete constraints hold at the nodes only, and the product is
-   * non-zero on the segment where the contact zone ends.
+   * complementarity of contact_residual() (interface_diagnostics.h), split
+   * among the faces by overlap; an energy over 2 mu, so again a squared
+   * length): the discrete constraints hold at the nodes only, and the product
+   * is non-zero on the segment where the contact zone ends.
    */
   std::array<dealii::Vector<float>, Layout::n_subdomains>
   estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
