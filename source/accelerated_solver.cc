@@ -43,24 +43,16 @@ namespace bilayer
 
     for (unsigned int k = 0;; ++k)
       {
-        solve_subproblems(subproblems, interface, mu, w);
-        result.iterations = k;
-        result.subdomain_solves =
-          extra_solves + Layout::n_subproblems * (k + 1ul);
-        interface.jumps(w, g);
-
-        const double value    = k >= 1 ? stopping_value(parameters,
-                                                     subproblems,
-                                                     interface,
-                                                     w,
-                                                     w_old,
-                                                     g,
-                                                     mu,
-                                                     last_increment) :
-                                         std::numeric_limits<double>::infinity();
-        result.stopping_value = value;
-        print_progress(
-          output, pcout, k, value, last_increment, interface, w, g);
+        const double value = evaluate(subproblems,
+                                      interface,
+                                      k,
+                                      extra_solves,
+                                      mu,
+                                      w,
+                                      w_old,
+                                      g,
+                                      last_increment,
+                                      result);
 
         if (value < parameters.tolerance)
           {

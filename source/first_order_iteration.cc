@@ -231,4 +231,31 @@ namespace bilayer
     result.iteration_seconds = timer.wall_time();
     return result;
   }
+
+
+  double
+  FirstOrderSolver::evaluate(const Subproblems         &subproblems,
+                             const Interface           &interface,
+                             const unsigned int         k,
+                             const unsigned long        extra_solves,
+                             const BlockVector<double> &mu,
+                             Solutions                 &w,
+                             const Solutions           &w_old,
+                             BlockVector<double>       &g,
+                             const double               last_increment,
+                             SolverResult              &result) const
+  {
+    solve_subproblems(subproblems, interface, mu, w);
+    result.iterations       = k;
+    result.subdomain_solves = extra_solves + Layout::n_subproblems * (k + 1ul);
+    interface.jumps(w, g);
+    const double value =
+      k >= 1 ?
+        stopping_value(
+          parameters, subproblems, interface, w, w_old, g, mu, last_increment) :
+        std::numeric_limits<double>::infinity();
+    result.stopping_value = value;
+    print_progress(output, pcout, k, value, last_increment, interface, w, g);
+    return value;
+  }
 } // namespace bilayer

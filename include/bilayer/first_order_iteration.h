@@ -201,6 +201,26 @@ namespace bilayer
             Solutions                   &w,
             SolverResult                &result) const = 0;
 
+    /**
+     * The part of iteration @p k that both iterations share: the four
+     * solves with the loads of @p mu, the work so far (@p extra_solves
+     * besides 4 per iteration), the jumps @p g, the stopping value
+     * (infinite at k = 0; @p w_old and @p last_increment are the previous
+     * iterate and the D-norm of the last multiplier increment) and the
+     * progress line. Returns the stopping value.
+     */
+    double
+    evaluate(const Subproblems                 &subproblems,
+             const Interface                   &interface,
+             const unsigned int                 k,
+             const unsigned long                extra_solves,
+             const dealii::BlockVector<double> &mu,
+             Solutions                         &w,
+             const Solutions                   &w_old,
+             dealii::BlockVector<double>       &g,
+             const double                       last_increment,
+             SolverResult                      &result) const;
+
     /// SolverResult::solver.
     const std::string name;
     const StepBound   step_bound;
