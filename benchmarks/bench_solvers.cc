@@ -57,10 +57,11 @@ namespace
       std::ostream                   &sink)
   {
     std::vector<std::string> overrides = settings;
-    for (const std::string s :
-         {"Solver/Stopping rule=kkt", "Output/Write VTU=false",
-          "Output/Write interface CSV=false", "Output/Terminal output=checks",
-          "Output/Progress interval=0"})
+    for (const std::string s : {"Solver/Stopping rule=kkt",
+                                "Output/Write VTU=false",
+                                "Output/Write interface CSV=false",
+                                "Output/Terminal output=checks",
+                                "Output/Progress interval=0"})
       overrides.push_back(s);
     overrides.push_back("Solver/Tolerance=" + tolerance);
     overrides.push_back("Output/Output directory=" + directory);
@@ -119,10 +120,9 @@ main(int argc, char **argv)
               double d2 = 0, n2 = 0;
               for (unsigned int i = 0; i < 4; ++i)
                 {
-                  const auto &sub =
-                    s.subproblem(static_cast<Layer>(i / 2),
-                                 static_cast<Subdomain>(i % 2));
-                  Vector<double> d = s.solutions()[i];
+                  const auto    &sub = s.subproblem(static_cast<Layer>(i / 2),
+                                                 static_cast<Subdomain>(i % 2));
+                  Vector<double> d   = s.solutions()[i];
                   d -= reference->solutions()[i];
                   d2 += sub.energy_norm_squared(d);
                   n2 += sub.energy_norm_squared(reference->solutions()[i]);
@@ -139,16 +139,16 @@ main(int argc, char **argv)
                   }
 
               std::ostringstream row;
-              row << std::setprecision(6) << scene << ',' << cycle << ','
-                  << r.P << ',' << r.dofs << ',' << r.multipliers << ','
-                  << solver.name << ',' << r.result.iterations << ','
+              row << std::setprecision(6) << scene << ',' << cycle << ',' << r.P
+                  << ',' << r.dofs << ',' << r.multipliers << ',' << solver.name
+                  << ',' << r.result.iterations << ','
                   << r.result.linear_iterations << ','
                   << r.result.subdomain_solves << ','
                   << r.result.preconditioner_solves << ','
                   << r.assembly_seconds + r.factorisation_seconds << ','
-                  << r.result.setup_seconds << ','
-                  << r.result.iteration_seconds << ',' << r.report.kkt.value()
-                  << ',' << (n2 > 0 ? std::sqrt(d2 / n2) : 0.) << ','
+                  << r.result.setup_seconds << ',' << r.result.iteration_seconds
+                  << ',' << r.report.kkt.value() << ','
+                  << (n2 > 0 ? std::sqrt(d2 / n2) : 0.) << ','
                   << (on > 0 ? od / on : 0.) << ','
                   << (r.result.converged && r.accepted() ? 1 : 0) << '\n';
               out << row.str() << std::flush;
@@ -158,8 +158,7 @@ main(int argc, char **argv)
     }
   catch (const ExceptionBase &e)
     {
-      std::cerr << "bench_solvers: error: " << one_line_message(e)
-                << std::endl;
+      std::cerr << "bench_solvers: error: " << one_line_message(e) << std::endl;
       return 1;
     }
   return 0;
