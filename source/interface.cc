@@ -14,17 +14,14 @@ namespace bilayer
   void
   Interface::setup(const PerSubproblem<const ElasticSubproblem *> &subs)
   {
-    const double   tol = 1e-10 * (geometry.x_max - geometry.x_min);
+    const double   tol    = 1e-10 * (geometry.x_max - geometry.x_min);
+    const auto    &traces = coupling_.locate_traces(subs);
     PerBlock<bool> active;
     for (const unsigned int b : Layout::blocks)
-      active[b] = subs[Layout::coupled(b).first] != nullptr &&
-                  subs[Layout::coupled(b).second] != nullptr;
-    space_.reinit(geometry,
-                  contact,
-                  TraceCoupling::trace_breakpoints(subs),
-                  subs[Layout::u_minus]->fe().degree,
-                  active);
-    coupling_.reinit(subs, space_, contact.coupling, tol);
+      active[b] = coupling_.active(b);
+    space_.reinit(
+      geometry, contact, traces, subs[Layout::u_minus]->fe().degree, active);
+    coupling_.reinit(space_, contact.coupling, tol);
   }
 
 

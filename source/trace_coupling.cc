@@ -47,38 +47,32 @@ namespace bilayer
   }
 
 
-  std::array<std::vector<double>, 2>
-  TraceCoupling::trace_breakpoints(
+  const std::array<std::vector<double>, 2> &
+  TraceCoupling::locate_traces(
     const PerSubproblem<const ElasticSubproblem *> &subs)
   {
-    std::array<std::vector<double>, 2> result;
+    subproblems = subs;
     for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
       {
-        const auto faces = sigma_faces(subs[Layout::index(Layer::first, sd)]
-                                         ->dof_handler()
-                                         .get_triangulation());
-        auto      &b     = result[static_cast<unsigned int>(sd)];
-        for (const auto &face : faces)
-          b.push_back(face.x0);
-        b.push_back(faces.back().x1);
+        const unsigned int i = static_cast<unsigned int>(sd);
+        faces[i]             = sigma_faces(subs[Layout::index(Layer::first, sd)]
+                                 ->dof_handler()
+                                 .get_triangulation());
+        traces[i].clear();
+        for (const auto &face : faces[i])
+          traces[i].push_back(face.x0);
+        traces[i].push_back(faces[i].back().x1);
       }
-    return result;
+    return traces;
   }
 
 
   void
-  TraceCoupling::reinit(const PerSubproblem<const ElasticSubproblem *> &subs,
-                        const MultiplierSpace                          &space,
+  TraceCoupling::reinit(const MultiplierSpace   &space,
                         const MultiplierCoupling coupling_kind,
                         const double             tol)
   {
-    subproblems = subs;
-    for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
-      faces[static_cast<unsigned int>(sd)] =
-        sigma_faces(subs[Layout::index(Layer::first, sd)]
-                      ->dof_handler()
-                      .get_triangulation());
-    const auto traces = trace_breakpoints(subs);
+    const auto &subs = subproblems;
 
     // Coupling (lumped or consistent) and evaluation at the nodes of each
     // block, traces at the nodes of mu_1, and the Gauss points of the

@@ -43,17 +43,18 @@ namespace bilayer
   class TraceCoupling
   {
   public:
-    /// The break points of the trace of each subdomain's mesh on Sigma.
-    static std::array<std::vector<double>, 2>
-    trace_breakpoints(const PerSubproblem<const ElasticSubproblem *> &subs);
+    /// Take the subproblems @p subs (null where absent), find the faces of
+    /// each subdomain's mesh on Sigma and return the break points of the two
+    /// traces, from which the multiplier spaces are built.
+    const std::array<std::vector<double>, 2> &
+    locate_traces(const PerSubproblem<const ElasticSubproblem *> &subs);
 
-    /// Build every matrix for the subproblems @p subs (null where absent)
-    /// and the multiplier spaces @p space.
+    /// Build every matrix for the multiplier spaces @p space (after
+    /// locate_traces()).
     void
-    reinit(const PerSubproblem<const ElasticSubproblem *> &subs,
-           const MultiplierSpace                          &space,
-           const MultiplierCoupling                        coupling,
-           const double                                    tolerance);
+    reinit(const MultiplierSpace   &space,
+           const MultiplierCoupling coupling,
+           const double             tolerance);
 
     /// Whether subproblem @p s exists (layer 2 may be absent).
     bool
@@ -155,6 +156,8 @@ namespace bilayer
 
     PerSubproblem<const ElasticSubproblem *> subproblems;
     std::array<std::vector<SigmaFace>, 2>    faces;
+    /// The break points of the two traces (the ends of faces).
+    std::array<std::vector<double>, 2> traces;
 
     /// C and E (evaluation at the nodes) of the two subproblems that each
     /// block couples (Layout::coupled(b): first, second).
