@@ -156,6 +156,17 @@ namespace bilayer
         record_field("complementarity",
                      [](const R &r) { return r.report.kkt.complementarity; })
           .in("kkt"),
+        record_field("lambda_min", [](const R &r) { return r.spectrum.lambda_min; })
+          .in("dual_spectrum"),
+        record_field("lambda_max", [](const R &r) { return r.spectrum.lambda_max; })
+          .in("dual_spectrum"),
+        record_field("condition_number", [](const R &r) {
+            return r.spectrum.lambda_min > 0 ? r.spectrum.condition_number() : 0.; })
+          .in("dual_spectrum"),
+        record_field("h", [](const R &r) { return r.spectrum.h; })
+          .in("dual_spectrum"),
+        record_field("lanczos_steps", [](const R &r) { return r.spectrum.iterations; })
+          .in("dual_spectrum"),
         record_field("accepted", [](const R &r) { return r.accepted(); }),
         record_field("processes", [](const R &r) { return r.processes; }),
         record_field("shared_values", [](const R &r) { return r.shared_values; }),

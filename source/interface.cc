@@ -19,8 +19,12 @@ namespace bilayer
     PerBlock<bool> active;
     for (const unsigned int b : Layout::blocks)
       active[b] = coupling_.active(b);
+    // Layer 2's degree only matters where layer 2 exists.
+    const unsigned int degree_first = subs[Layout::u_minus]->fe().degree;
+    const unsigned int degree_second =
+      subs[Layout::v_minus] ? subs[Layout::v_minus]->fe().degree : degree_first;
     space_.reinit(
-      geometry, contact, traces, subs[Layout::u_minus]->fe().degree, active);
+      geometry, contact, traces, degree_first, degree_second, active);
     coupling_.reinit(space_, contact.coupling, tol);
   }
 
@@ -58,10 +62,12 @@ namespace bilayer
             active(b))
           {
             const unsigned int e = space_.shape_values(b, x, values);
-            for (unsigned int i = 0; i <= space_.degree(); ++i)
+            for (unsigned int i = 0; i <= space_.degree(b); ++i)
               for (unsigned int c = 0; c < Layout::n_components; ++c)
-                t[c] += (j == 0 ? -1. : 1.) * values[i] *
-                        mu.block(b)(Layout::entry(space_.node(e, i), c));
+                t[c] +=
+                  (j == 0 ? -1. : 1.) * values[i] *
+                  mu.block(b)(
+                    Layout::entry(space_.row(space_.node(e, i, b), b), c));
           }
     return t;
   }

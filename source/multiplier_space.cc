@@ -1,4 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/vector.h>
 
 #include <bilayer/multiplier_space.h>
 
@@ -25,54 +26,159 @@ namespace bilayer
   }
 
 
+  PerBlock<MultiplierSpace::BlockChoice>
+  MultiplierSpace::choose(const std::array<std::vector<double>, 2> &traces,
+                          const unsigned int   degree_first,
+                          const unsigned int   degree_second,
+                          const MultiplierMesh rule,
+                          const double         tol)
+  {
+    PerBlock<BlockChoice> choice;
+    // mu_1, degree p1: per macro segment between shared points, the trace
+    // with more (coarser trace: fewer) segments, Omega- on a tie.
+    const auto         &t0 = traces[0], &t1 = traces[1];
+    std::vector<double> mesh;
+    if (!t0.empty() && !t1.empty())
+      {
+        mesh.push_back(t0.front());
+        std::size_t i = 0, j = 0;
+        while (i + 1 < t0.size() && j + 1 < t1.size())
+          {
+            // The next shared point: t0[i1] = t1[j1].
+            std::size_t i1 = i + 1, j1 = j + 1;
+            while (std::abs(t0[i1] - t1[j1]) > tol &&
+                   !(i1 + 1 == t0.size() && j1 + 1 == t1.size()))
+              if ((t0[i1] < t1[j1] && i1 + 1 < t0.size()) ||
+                  j1 + 1 == t1.size())
+                ++i1;
+              else
+                ++j1;
+            const std::size_t n0 = i1 - i, n1 = j1 - j;
+            const bool        plus =
+              rule == MultiplierMesh::finer_trace ? n1 > n0 : n1 < n0;
+            if (plus)
+              mesh.insert(mesh.end(), t1.begin() + j + 1, t1.begin() + j1 + 1);
+            else
+              mesh.insert(mesh.end(), t0.begin() + i + 1, t0.begin() + i1 + 1);
+            i = i1;
+            j = j1;
+          }
+      }
+    choice[Layout::across_sigma] = {mesh, degree_first};
+    // lambda-+: each side's trace, slave layer 2, the smaller degree.
+    for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+      choice[Layout::gluing_block(sd)] = {traces[static_cast<unsigned int>(sd)],
+                                          std::min(degree_first,
+                                                   degree_second)};
+    return choice;
+  }
+
+
   void
   MultiplierSpace::reinit(const GeometryParameters                 &geometry,
                           const ContactParameters                  &contact,
                           const std::array<std::vector<double>, 2> &traces,
-                          const unsigned int                        degree,
-                          const PerBlock<bool>                     &active)
+                          const unsigned int    degree_first,
+                          const unsigned int    degree_second,
+                          const PerBlock<bool> &active)
   {
     const double tol = 1e-10 * (geometry.x_max - geometry.x_min);
 
-    // The meshes: the union of the traces for mu_1, each side's trace for
-    // lambda- and lambda+.
-    degree_ = degree;
-    fe      = std::make_unique<FE_Q<1>>(QGaussLobatto<1>(degree_ + 1));
-    meshes[Layout::across_sigma].breakpoints =
-      merge_breakpoints(traces[0], traces[1], tol);
-    for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
-      meshes[Layout::gluing_block(sd)].breakpoints =
-        traces[static_cast<unsigned int>(sd)];
-    // Without layer 2 the blocks that glue the layers have no nodes.
+    // The meshes: the slave's trace of each block, Gauss-Lobatto nodes of
+    // the block's degree on each segment.
+    const PerBlock<BlockChoice> choice =
+      choose(traces, degree_first, degree_second, contact.mesh, tol);
     for (const unsigned int b : Layout::blocks)
-      if (!active[b])
-        meshes[b].breakpoints.clear();
-    const QGaussLobatto<1> lobatto(degree_ + 1);
-    for (auto &mesh : meshes)
       {
-        const unsigned int n_segments =
+        Mesh &mesh  = meshes[b];
+        mesh.degree = choice[b].degree;
+        if (!mesh.fe || mesh.fe->degree != mesh.degree)
+          mesh.fe =
+            std::make_shared<FE_Q<1>>(QGaussLobatto<1>(mesh.degree + 1));
+        // Without layer 2 the blocks that glue the layers have no nodes.
+        if (active[b])
+          mesh.breakpoints = choice[b].breakpoints;
+        else
+          mesh.breakpoints.clear();
+        const QGaussLobatto<1> lobatto(mesh.degree + 1);
+        const unsigned int     n_segments =
           mesh.breakpoints.empty() ? 0 : mesh.breakpoints.size() - 1;
-        const unsigned int n = n_segments > 0 ? n_segments * degree_ + 1 : 0;
+        const unsigned int n =
+          n_segments > 0 ? n_segments * mesh.degree + 1 : 0;
         mesh.node_x.assign(n, 0.);
         mesh.node_weight.assign(n, 0.);
         for (unsigned int e = 0; e < n_segments; ++e)
           {
             const double h = mesh.breakpoints[e + 1] - mesh.breakpoints[e];
-            for (unsigned int i = 0; i <= degree_; ++i)
+            for (unsigned int i = 0; i <= mesh.degree; ++i)
               {
-                const unsigned int a = node(e, i);
-                mesh.node_x[a] =
-                  mesh.breakpoints[e] + fe->get_unit_support_points()[i][0] * h;
+                const unsigned int a = node(e, i, b);
+                mesh.node_x[a]       = mesh.breakpoints[e] +
+                                 mesh.fe->get_unit_support_points()[i][0] * h;
                 for (unsigned int q = 0; q < lobatto.size(); ++q)
-                  mesh.node_weight[a] += fe->shape_value(i, lobatto.point(q)) *
-                                         lobatto.weight(q) * h;
+                  mesh.node_weight[a] +=
+                    mesh.fe->shape_value(i, lobatto.point(q)) *
+                    lobatto.weight(q) * h;
               }
           }
+        mesh.node_mass = mesh.node_weight;
+        mesh.row.resize(n);
+        for (unsigned int a = 0; a < n; ++a)
+          mesh.row[a] = a;
+
+        // Which coupled traces lie in the multiplier space.
+        const auto [first, second] = Layout::coupled(b);
+        for (unsigned int j = 0; j < 2; ++j)
+          {
+            const unsigned int s = j == 0 ? first : second;
+            const auto        &trace =
+              traces[static_cast<unsigned int>(Layout::subdomain(s))];
+            const unsigned int degree_s =
+              Layout::layer(s) == Layer::first ? degree_first : degree_second;
+            bool        inside = degree_s <= mesh.degree;
+            std::size_t k      = 0;
+            for (const double x : trace)
+              {
+                while (k < mesh.breakpoints.size() &&
+                       mesh.breakpoints[k] < x - tol)
+                  ++k;
+                inside = inside && k < mesh.breakpoints.size() &&
+                         std::abs(mesh.breakpoints[k] - x) <= tol;
+              }
+            mesh.nodal[j] = inside || n == 0;
+          }
+
+        // The dual basis on the unit segment: diag(int phi_i) M^{-1}.
+        const unsigned int q1 = mesh.degree + 1;
+        const QGauss<1>    gauss(q1);
+        FullMatrix<double> mass(q1, q1), inverse(q1, q1);
+        Vector<double>     integral(q1);
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+          for (unsigned int i = 0; i < q1; ++i)
+            {
+              const double phi_i = mesh.fe->shape_value(i, gauss.point(q));
+              integral(i) += phi_i * gauss.weight(q);
+              for (unsigned int k = 0; k < q1; ++k)
+                mass(i, k) += phi_i * mesh.fe->shape_value(k, gauss.point(q)) *
+                              gauss.weight(q);
+            }
+        inverse.invert(mass);
+        mesh.dual.reinit(q1, q1);
+        for (unsigned int i = 0; i < q1; ++i)
+          for (unsigned int k = 0; k < q1; ++k)
+            mesh.dual(i, k) = integral(i) * inverse(i, k);
       }
 
     // Multiplier sets (paper.md §3) as bounds per component.
-    const double                         p     = contact.multiplier_bound;
-    const CrackSet                       crack = geometry.crack();
+    const double   p     = contact.multiplier_bound;
+    const CrackSet crack = geometry.crack();
+    // The ends of Sigma on a clamped side belong to Gamma_D.
+    const auto on_gamma_d = [&](const double x) {
+      return (std::abs(x - geometry.x_min) < tol &&
+              geometry.clamped[static_cast<unsigned int>(Side::left)]) ||
+             (std::abs(x - geometry.x_max) < tol &&
+              geometry.clamped[static_cast<unsigned int>(Side::right)]);
+    };
     std::vector<types::global_dof_index> sizes;
     for (const auto &mesh : meshes)
       sizes.push_back(Layout::n_components * mesh.node_x.size());
@@ -86,13 +192,7 @@ namespace bilayer
           const bool   on_crack = crack.contains(x);
           if (b == Layout::across_sigma)
             crack_nodes[a] = on_crack;
-          // The ends of Sigma on a clamped side belong to Gamma_D.
-          const bool on_gamma_d =
-            (std::abs(x - geometry.x_min) < tol &&
-             geometry.clamped[static_cast<unsigned int>(Side::left)]) ||
-            (std::abs(x - geometry.x_max) < tol &&
-             geometry.clamped[static_cast<unsigned int>(Side::right)]);
-          if (on_gamma_d)
+          if (on_gamma_d(x))
             continue;
           for (unsigned int c = 0; c < Layout::n_components; ++c)
             {
@@ -109,6 +209,25 @@ namespace bilayer
               upper.block(b)(n)    = contact.non_penetration ? p : 0;
             }
         }
+
+    // The mortar modification at the ends on Gamma_D of blocks with a side
+    // that is not nodal: the end's basis function joins the other vertex of
+    // its segment.
+    for (const unsigned int b : Layout::blocks)
+      {
+        Mesh              &mesh = meshes[b];
+        const unsigned int n    = mesh.node_x.size();
+        if (n == 0 || (mesh.nodal[0] && mesh.nodal[1]))
+          continue;
+        for (const auto &[end, neighbour] :
+             {std::make_pair(0u, mesh.degree),
+              std::make_pair(n - 1, n - 1 - mesh.degree)})
+          if (on_gamma_d(mesh.node_x[end]))
+            {
+              mesh.row[end] = neighbour;
+              mesh.node_weight[neighbour] += mesh.node_mass[end];
+            }
+      }
   }
 
 
@@ -187,9 +306,24 @@ namespace bilayer
     const auto         it = std::upper_bound(bp.begin() + 1, bp.end() - 1, x);
     const unsigned int e  = (it - bp.begin()) - 1;
     const double       t  = (x - bp[e]) / (bp[e + 1] - bp[e]);
-    values.resize(degree_ + 1);
-    for (unsigned int i = 0; i <= degree_; ++i)
-      values[i] = fe->shape_value(i, Point<1>(t));
+    values.resize(meshes[b].degree + 1);
+    for (unsigned int i = 0; i <= meshes[b].degree; ++i)
+      values[i] = meshes[b].fe->shape_value(i, Point<1>(t));
+    return e;
+  }
+
+
+  unsigned int
+  MultiplierSpace::dual_shape_values(const unsigned int   b,
+                                     const double         x,
+                                     std::vector<double> &values) const
+  {
+    std::vector<double> phi;
+    const unsigned int  e = shape_values(b, x, phi);
+    values.assign(phi.size(), 0.);
+    for (unsigned int i = 0; i < phi.size(); ++i)
+      for (unsigned int k = 0; k < phi.size(); ++k)
+        values[i] += meshes[b].dual(i, k) * phi[k];
     return e;
   }
 
@@ -205,8 +339,9 @@ namespace bilayer
     std::vector<double> values;
     const unsigned int  e      = shape_values(b, x, values);
     double              result = 0;
-    for (unsigned int i = 0; i <= degree_; ++i)
-      result += values[i] * mu.block(b)(Layout::entry(node(e, i), c));
+    for (unsigned int i = 0; i <= degree(b); ++i)
+      result +=
+        values[i] * mu.block(b)(Layout::entry(row(node(e, i, b), b), c));
     return result;
   }
 
@@ -215,9 +350,11 @@ namespace bilayer
   MultiplierSpace::functions(const BlockVector<double> &mu) const
   {
     Functions f;
-    f.degree = degree_;
     for (const unsigned int b : Layout::blocks)
-      f.breakpoints[b] = meshes[b].breakpoints;
+      {
+        f.degree[b]      = meshes[b].degree;
+        f.breakpoints[b] = meshes[b].breakpoints;
+      }
     f.values = mu;
     return f;
   }
@@ -228,25 +365,26 @@ namespace bilayer
                                BlockVector<double> &mu) const
   {
     initialize(mu);
-    if (old.degree != degree_ || old.values.n_blocks() != Layout::n_blocks)
+    if (old.values.n_blocks() != Layout::n_blocks)
       return;
-    const FE_Q<1> fe_old(QGaussLobatto<1>(old.degree + 1));
     for (const unsigned int b : Layout::blocks)
       if (!meshes[b].node_x.empty() && old.breakpoints[b].size() >= 2)
         {
-          const auto &bp = old.breakpoints[b];
+          const FE_Q<1> fe_old(QGaussLobatto<1>(old.degree[b] + 1));
+          const auto   &bp = old.breakpoints[b];
           for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
             {
               const double x = meshes[b].node_x[a];
               const auto it = std::upper_bound(bp.begin() + 1, bp.end() - 1, x);
               const unsigned int e = (it - bp.begin()) - 1;
               const double       t = (x - bp[e]) / (bp[e + 1] - bp[e]);
-              for (unsigned int i = 0; i <= degree_; ++i)
+              for (unsigned int i = 0; i <= old.degree[b]; ++i)
                 {
                   const double v = fe_old.shape_value(i, Point<1>(t));
                   for (unsigned int c = 0; c < Layout::n_components; ++c)
                     mu.block(b)(Layout::entry(a, c)) +=
-                      v * old.values.block(b)(Layout::entry(node(e, i), c));
+                      v * old.values.block(b)(
+                            Layout::entry(node_of(old.degree[b], e, i), c));
                 }
             }
         }

@@ -1,3 +1,7 @@
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
 #include <bilayer/accelerated_solver.h>
 #include <bilayer/active_set_solver.h>
 #include <bilayer/outer_solver.h>
@@ -71,5 +75,114 @@ namespace bilayer
         x /= norm;
       }
     return estimate;
+  }
+
+
+  namespace
+  {
+    /**
+     * D^{-1/2} C A^{-1} C^T D^{-1/2} on the free multiplier components, as
+     * a matrix for SolverCG: one homogeneous solve per subproblem per
+     * product.
+     */
+    class SymmetricDualOperator
+    {
+    public:
+      SymmetricDualOperator(const Subproblems &subproblems,
+                            const Interface   &interface)
+        : subproblems(subproblems)
+        , interface(interface)
+      {
+        interface.space().initialize(mu);
+        BlockVector<double> weights(mu);
+        weights = 1.;
+        interface.space().scale_by_weights(weights);
+        for (unsigned int i = 0; i < mu.size(); ++i)
+          if (interface.space().free(i))
+            {
+              free_index.push_back(i);
+              sqrt_weight.push_back(std::sqrt(weights(i)));
+            }
+      }
+
+      unsigned int
+      size() const
+      {
+        return free_index.size();
+      }
+
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        mu = 0.;
+        for (unsigned int k = 0; k < size(); ++k)
+          mu(free_index[k]) = src(k) / sqrt_weight[k];
+        solve_homogeneous_subproblems(subproblems, interface, mu, w);
+        ++products;
+        // C w = -C A^{-1} C^T mu (Layout's signs).
+        g.reinit(mu);
+        interface.coupling().differences(w, true, g);
+        for (unsigned int k = 0; k < size(); ++k)
+          dst(k) = -g(free_index[k]) / sqrt_weight[k];
+      }
+
+      mutable unsigned long products = 0;
+
+    private:
+      const Subproblems          &subproblems;
+      const Interface            &interface;
+      std::vector<unsigned int>   free_index;
+      std::vector<double>         sqrt_weight;
+      mutable BlockVector<double> mu, g;
+      mutable Solutions           w;
+    };
+  } // namespace
+
+
+  DualSpectrum
+  estimate_dual_spectrum(const Subproblems &subproblems,
+                         const Interface   &interface,
+                         const unsigned int max_iterations)
+  {
+    DualSpectrum result;
+    for (const unsigned int b : Layout::blocks)
+      {
+        const auto &bp = interface.space().breakpoints(b);
+        for (unsigned int e = 0; e + 1 < bp.size(); ++e)
+          result.h = result.h == 0 ? bp[e + 1] - bp[e] :
+                                     std::min(result.h, bp[e + 1] - bp[e]);
+      }
+    const SymmetricDualOperator op(subproblems, interface);
+    if (op.size() == 0)
+      return result;
+
+    Vector<double>                         x(op.size()), b(op.size());
+    std::mt19937                           random(42);
+    std::uniform_real_distribution<double> uniform(-1., 1.);
+    for (unsigned int k = 0; k < b.size(); ++k)
+      b(k) = uniform(random);
+    SolverControl            control(max_iterations, 1e-10 * b.l2_norm());
+    SolverCG<Vector<double>> cg(control);
+    std::vector<double>      eigenvalues;
+    cg.connect_eigenvalues_slot(
+      [&eigenvalues](const std::vector<double> &values) {
+        eigenvalues = values;
+      });
+    try
+      {
+        cg.solve(op, x, b, PreconditionIdentity());
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        // The Ritz values of the steps taken are estimates all the same.
+      }
+    if (!eigenvalues.empty())
+      {
+        result.lambda_min = eigenvalues.front();
+        result.lambda_max = eigenvalues.back();
+      }
+    result.iterations       = control.last_step();
+    result.subdomain_solves = op.products * Layout::n_subproblems;
+    return result;
   }
 } // namespace bilayer

@@ -665,6 +665,16 @@ namespace bilayer
                       "jump D^-1 C w, D the lumped multiplier mass) or nodal "
                       "(the traces evaluated at the multiplier nodes). Both "
                       "agree for lumped coupling on matching meshes.");
+    prm.declare_entry(
+      "Multiplier mesh",
+      "finer trace",
+      Patterns::Selection("finer trace|coarser trace"),
+      "Which trace of layer 1 on Sigma carries the mesh of the multipliers "
+      "across Sigma (mu_c, mu_g) where the Omega- and Omega+ meshes do not "
+      "match: finer trace (the side with more segments; contact tested at "
+      "more points) or coarser trace (fewer constraints, a better "
+      "conditioned dual problem). The layer-gluing multipliers always live "
+      "on their own side's trace (docs/multipliers.md).");
     prm.leave_subsection();
   }
 
@@ -683,6 +693,9 @@ namespace bilayer
                  MultiplierCoupling::lumped;
     sampling = prm.get("Jump sampling") == "nodal" ? JumpSampling::nodal :
                                                      JumpSampling::weighted;
+    mesh     = prm.get("Multiplier mesh") == "coarser trace" ?
+                 MultiplierMesh::coarser_trace :
+                 MultiplierMesh::finer_trace;
     prm.leave_subsection();
   }
 
@@ -723,6 +736,15 @@ namespace bilayer
                       "Most power iterations for lambda_max of S (each is "
                       "four subdomain solves); it stops earlier when the "
                       "estimate changes by less than 1e-4 [-].");
+    prm.declare_entry("Dual spectrum steps",
+                      "0",
+                      Patterns::Integer(0, 100000),
+                      "Most Lanczos steps (each four subdomain solves) for "
+                      "the smallest and largest eigenvalues of the dual "
+                      "operator S on the free multipliers, printed and "
+                      "written to summary.json per cycle with the condition "
+                      "number and lambda_min / h (a diagnostic of the "
+                      "multiplier spaces; 0: not estimated) [-].");
     prm.declare_entry("Maximum iterations",
                       "100000",
                       Patterns::Integer(1),
@@ -832,6 +854,7 @@ namespace bilayer
                            "got " +
                            prm.get("Auto theta fraction")));
     spectrum_iterations = prm.get_integer("Spectrum estimate iterations");
+    dual_spectrum_steps = prm.get_integer("Dual spectrum steps");
     max_iterations      = prm.get_integer("Maximum iterations");
     const auto rule     = prm.get("Stopping rule");
     stopping_rule       = rule == "paper"           ? StoppingRule::paper :

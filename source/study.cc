@@ -289,8 +289,20 @@ namespace bilayer
     const double        seconds_before = distribution.shared_seconds();
     record.result = create_outer_solver(scene.solver, scene.output, pcout)
                       ->solve(subproblem_views(), coupling, mu, w);
-    record.theta          = record.result.theta;
-    record.solve_seconds  = solve_timer.wall_time();
+    record.theta         = record.result.theta;
+    record.solve_seconds = solve_timer.wall_time();
+    if (scene.solver.dual_spectrum_steps > 0)
+      {
+        const DualSpectrum &s = record.spectrum =
+          estimate_dual_spectrum(subproblem_views(),
+                                 coupling,
+                                 scene.solver.dual_spectrum_steps);
+        pcout << "    dual operator S: lambda_min = " << s.lambda_min
+              << ", lambda_max = " << s.lambda_max
+              << ", condition number = " << s.condition_number()
+              << ", lambda_min / h = " << (s.h > 0 ? s.lambda_min / s.h : 0.)
+              << " (" << s.iterations << " Lanczos steps)" << std::endl;
+      }
     record.processes      = distribution.n_processes();
     record.shared_values  = distribution.shared_values() - shared_before;
     record.shared_seconds = distribution.shared_seconds() - seconds_before;

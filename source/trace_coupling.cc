@@ -77,8 +77,9 @@ namespace bilayer
     // Coupling (lumped or consistent) and evaluation at the nodes of each
     // block, traces at the nodes of mu_1, and the Gauss points of the
     // common refinement of all traces (= the mesh of mu_1).
-    const unsigned int degree     = space.degree();
-    unsigned int       max_degree = degree;
+    unsigned int max_degree = 0;
+    for (const unsigned int b : Layout::blocks)
+      max_degree = std::max(max_degree, space.degree(b));
     for (const auto *sub : subs)
       if (sub != nullptr)
         max_degree = std::max(max_degree, sub->fe().degree);
@@ -106,12 +107,18 @@ namespace bilayer
           for (unsigned int j = 0; j < 2; ++j)
             {
               const unsigned int s = j == 0 ? first : second;
+              // Lumped: the dual basis psi_a, exact at the nodes where the
+              // trace lies in the multiplier space (C_s = D E_s), else
+              // integrated on the common refinement; consistent: the
+              // Lagrange basis phi_a on the common refinement. Rows follow
+              // MultiplierSpace::row (ends on Gamma_D).
+              const bool lumped = coupling_kind == MultiplierCoupling::lumped;
               std::vector<std::tuple<unsigned int, double, double>> points;
-              if (coupling_kind == MultiplierCoupling::lumped)
+              if (lumped && space.nodal(b, j))
                 for (unsigned int a = 0; a < n; ++a)
-                  points.emplace_back(a,
+                  points.emplace_back(space.row(a, b),
                                       space.node_position(a, b),
-                                      space.node_weight(a, b));
+                                      space.node_mass(a, b));
               else
                 for_gauss_points(
                   merge_breakpoints(
@@ -119,9 +126,13 @@ namespace bilayer
                     traces[static_cast<unsigned int>(Layout::subdomain(s))],
                     tol),
                   [&](const double x, const double w) {
-                    const unsigned int e = space.shape_values(b, x, values);
-                    for (unsigned int i = 0; i <= degree; ++i)
-                      points.emplace_back(space.node(e, i), x, w * values[i]);
+                    const unsigned int e =
+                      lumped ? space.dual_shape_values(b, x, values) :
+                               space.shape_values(b, x, values);
+                    for (unsigned int i = 0; i <= space.degree(b); ++i)
+                      points.emplace_back(space.row(space.node(e, i, b), b),
+                                          x,
+                                          w * values[i]);
                   });
               build_point_matrix(s, points, n, coupling[b][j]);
               build_point_matrix(s, nodal(b), n, evaluation[b][j]);
@@ -136,7 +147,7 @@ namespace bilayer
 
     gauss_x.clear();
     gauss_weight.clear();
-    for_gauss_points(space.breakpoints(Layout::across_sigma),
+    for_gauss_points(merge_breakpoints(traces[0], traces[1], tol),
                      [&](const double x, const double w) {
                        gauss_x.push_back(x);
                        gauss_weight.push_back(w);

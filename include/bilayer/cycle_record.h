@@ -34,10 +34,13 @@ namespace bilayer
     unsigned int   cycle = 0;
     MeshStatistics minus, plus;
     /// Vertices on Sigma and on the outer boundary (P and M of Table 1).
-    unsigned int    P = 0, M = 0;
-    unsigned int    dofs = 0, multipliers = 0;
-    double          theta = 0;
-    SolverResult    result;
+    unsigned int P = 0, M = 0;
+    unsigned int dofs = 0, multipliers = 0;
+    double       theta = 0;
+    SolverResult result;
+    /// Extreme eigenvalues of the dual operator (Solver/Dual spectrum
+    /// steps; zero when not estimated).
+    DualSpectrum    spectrum;
     double          energy = 0;
     InterfaceReport report;
     /// Acceptance checks: (description, passed).

@@ -3,6 +3,7 @@
 
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/block_vector.h>
+#include <deal.II/lac/full_matrix.h>
 
 #include <bilayer/layout.h>
 #include <bilayer/parameters.h>
@@ -21,26 +22,45 @@ namespace bilayer
                     const double               tol);
 
   /**
-   * The multiplier spaces on Sigma (paper.md §3): for each of the three
-   * blocks (Layout::blocks) a mesh of Sigma, continuous Lagrange elements on
-   * it whose nodes are the Gauss-Lobatto points of each segment, the lumped
-   * mass D (one weight per node), and the multiplier set as bounds per
-   * component. A vector of multipliers is a BlockVector with one block per
-   * multiplier block and entries Layout::entry(node, component).
+   * The multiplier spaces on Sigma (paper.md §3, docs/multipliers.md): for
+   * each of the three blocks (Layout::blocks) a mesh of Sigma, continuous
+   * Lagrange elements of a degree of its own on it whose nodes are the
+   * Gauss-Lobatto points of each segment, the lumped mass D (one weight per
+   * node), and the multiplier set as bounds per component. A vector of
+   * multipliers is a BlockVector with one block per multiplier block and
+   * entries Layout::entry(node, component).
    *
-   * <h3>Meshes</h3>
-   *  - mu_1 (layer 1 across Sigma) on the union of the break points of the
-   *    two traces (Omega- and Omega+ faces on Sigma);
-   *  - lambda- on the trace of the Omega- mesh, lambda+ on that of the
-   *    Omega+ mesh.
-   * u- and v- share the Omega- mesh, so the nodal constraints u- = v- at its
-   * trace nodes make the two traces equal, with no redundant constraint;
-   * likewise on Omega+. Across Sigma the union mesh is the coarsest one on
-   * which both traces are piecewise polynomials: equal values at its nodes
-   * make the traces equal, and the map from the two traces to the jumps at
-   * its nodes is onto. On matching meshes the three meshes coincide with the
-   * common trace. A block whose subproblems are not both present (no layer
-   * 2) has no nodes.
+   * <h3>Meshes and degrees: the mortar choice</h3>
+   * Each block b couples two subproblems (Layout::coupled(b)). Its
+   * multiplier space is built on the trace of one of them, the "slave" of
+   * b, with a degree that the slave's trace realises, so that the rows of
+   * the coupling restricted to the slave's trace dofs form a square (up to
+   * Gamma_D), invertible and local matrix: D for the lumped coupling, the
+   * mass matrix of the multiplier basis against the trace basis for the
+   * consistent one. The slaves' trace dofs of different blocks are
+   * distinct, so the coupling B of all blocks restricted to them is block
+   * diagonal with those blocks: B has full row rank (the multipliers are
+   * unique) and the discrete inf-sup constant is that of each slave's trace
+   * against its own multipliers, independent of the other side's mesh and
+   * degree (uniformly stable, as in mortar methods).
+   *  - mu_1 (u- against u+), degree p1: the points that both traces share
+   *    (always the ends of Sigma) cut Sigma into macro segments; on each,
+   *    the mesh is that of the trace with more segments there (Omega- on a
+   *    tie), the slave of that macro segment. The finer side is the slave
+   *    so that the non-penetration constraint is tested at the finer set of
+   *    points; on nested traces (hanging nodes, adaptive refinement of each
+   *    side, ratio 1:2) this is the union of the two traces and the gluing
+   *    is conforming. A shared point pivots on either side's vertex, an
+   *    interior node on its slave's node: distinct dofs. Contact/Multiplier
+   *    mesh = coarser trace takes the side with fewer segments instead
+   *    (fewer constraints, a better conditioned dual problem).
+   *  - lambda- (u- against v-, one mesh): the trace of the Omega- mesh,
+   *    degree min(p1, p2), slave v- (layer 2), whose trace of degree
+   *    p2 >= min(p1, p2) is onto the multipliers' nodal values.
+   *  - lambda+: likewise on Omega+, slave v+.
+   * On matching meshes with p1 = p2 the three meshes are the common trace
+   * and every degree is p1 (the spaces of the paper). A block whose
+   * subproblems are not both present (no layer 2) has no nodes.
    *
    * <h3>Sets</h3>
    * mu_c nu at the nodes of mu_1 inside the crack (only the normal
@@ -54,22 +74,44 @@ namespace bilayer
   class MultiplierSpace
   {
   public:
+    /// The mesh and degree of one block's multipliers.
+    struct BlockChoice
+    {
+      std::vector<double> breakpoints;
+      unsigned int        degree;
+    };
+
+    /**
+     * The mortar choice of the class documentation for the traces'
+     * break points @p trace_breakpoints (Omega-, Omega+; points closer than
+     * @p tol are shared) and the degrees of the two layers.
+     */
+    static PerBlock<BlockChoice>
+    choose(const std::array<std::vector<double>, 2> &trace_breakpoints,
+           const unsigned int                        degree_first,
+           const unsigned int                        degree_second,
+           const MultiplierMesh                      rule,
+           const double                              tol);
+
     /**
      * Build the meshes from the break points of the Omega- and Omega+ traces
-     * on Sigma (sorted coordinates along Sigma), for multipliers of degree
-     * @p degree; @p active[b] says whether both subproblems of block b exist.
+     * on Sigma (sorted coordinates along Sigma) and the degrees of the two
+     * layers' elements, by choose(); @p active[b] says whether both
+     * subproblems of block b exist.
      */
     void
     reinit(const GeometryParameters                 &geometry,
            const ContactParameters                  &contact,
            const std::array<std::vector<double>, 2> &trace_breakpoints,
-           const unsigned int                        degree,
+           const unsigned int                        degree_first,
+           const unsigned int                        degree_second,
            const PerBlock<bool>                     &active);
 
+    /// Degree of the multipliers of block @p b.
     unsigned int
-    degree() const
+    degree(const unsigned int b = Layout::across_sigma) const
     {
-      return degree_;
+      return meshes[b].degree;
     }
 
     /// Zero multipliers of the right sizes.
@@ -146,12 +188,58 @@ namespace bilayer
       return meshes[b].node_x[a];
     }
 
-    /// The lumped mass D of node @p a of block @p b.
+    /// The lumped mass D of node @p a of block @p b (with the masses of the
+    /// end nodes merged into it, see row()).
     double
     node_weight(const unsigned int a, const unsigned int b) const
     {
       return meshes[b].node_weight[a];
     }
+
+    /// int_Sigma phi_a ds of the basis function of node @p a of block @p b
+    /// alone.
+    double
+    node_mass(const unsigned int a, const unsigned int b) const
+    {
+      return meshes[b].node_mass[a];
+    }
+
+    /**
+     * Whether the trace of the @p j-th subproblem that block @p b couples
+     * (Layout::coupled(b): 0 first, 1 second) lies in the multiplier space
+     * of b: its break points are among b's and its degree is at most b's.
+     * Then the dual basis integrates it exactly at the nodes, and the lumped
+     * coupling of that side is D times the evaluation at the nodes;
+     * otherwise it is integrated with the dual basis on the common
+     * refinement.
+     */
+    bool
+    nodal(const unsigned int b, const unsigned int j) const
+    {
+      return meshes[b].nodal[j];
+    }
+
+    /**
+     * The node whose multiplier the basis function of node @p a of block
+     * @p b carries: a itself, except at an end of Sigma on Gamma_D (no
+     * multiplier) of a block with a side that is not nodal(), whose basis
+     * function joins that of the other vertex of its segment, so that the
+     * multipliers still contain the constants and constant tractions are
+     * transmitted exactly (the mortar modification at the ends).
+     */
+    unsigned int
+    row(const unsigned int a, const unsigned int b) const
+    {
+      return meshes[b].row[a];
+    }
+
+    /// Segment of the mesh of block @p b containing @p x and the values
+    /// there of the dual basis of its shape functions (biorthogonal:
+    /// int psi_i phi_k = delta_ik int phi_i on each segment).
+    unsigned int
+    dual_shape_values(const unsigned int   b,
+                      const double         x,
+                      std::vector<double> &values) const;
 
     /// Break points of the mesh of block @p b.
     const std::vector<double> &
@@ -196,14 +284,26 @@ namespace bilayer
                  const double         x,
                  std::vector<double> &values) const;
 
-    /// The node of block b's mesh of local shape function i of segment e
-    /// (vertices first, as FE_Q<1> numbers them).
-    unsigned int
-    node(const unsigned int e, const unsigned int i) const
+    /// The node of local shape function i of segment e of a mesh with
+    /// elements of degree @p degree (vertices first, as FE_Q<1> numbers
+    /// them).
+    static unsigned int
+    node_of(const unsigned int degree,
+            const unsigned int e,
+            const unsigned int i)
     {
-      return i == 0 ? e * degree_ :
-             i == 1 ? (e + 1) * degree_ :
-                      e * degree_ + i - 1;
+      return i == 0 ? e * degree :
+             i == 1 ? (e + 1) * degree :
+                      e * degree + i - 1;
+    }
+
+    /// The node of block @p b's mesh of local shape function i of segment e.
+    unsigned int
+    node(const unsigned int e,
+         const unsigned int i,
+         const unsigned int b = Layout::across_sigma) const
+    {
+      return node_of(degree(b), e, i);
     }
 
     /// Component @p c of the multiplier function of block @p b at @p x
@@ -220,7 +320,7 @@ namespace bilayer
      */
     struct Functions
     {
-      unsigned int                  degree = 0;
+      PerBlock<unsigned int>        degree = {{0, 0, 0}};
       PerBlock<std::vector<double>> breakpoints;
       dealii::BlockVector<double>   values;
     };
@@ -229,21 +329,26 @@ namespace bilayer
     Functions
     functions(const dealii::BlockVector<double> &mu) const;
 
-    /// Interpolate @p old at the current nodes (same degree: exact on nested
-    /// refinements of the meshes), then project onto the multiplier sets.
+    /// Interpolate @p old at the current nodes (exact where the new mesh and
+    /// degree refine the old ones), then project onto the multiplier sets.
     void
     interpolate(const Functions &old, dealii::BlockVector<double> &mu) const;
 
   private:
-    /// A mesh on Sigma: break points, nodes, D per node.
+    /// A mesh on Sigma: break points, nodes, D per node, the degree and
+    /// element of its multipliers.
     struct Mesh
     {
-      std::vector<double> breakpoints, node_x, node_weight;
+      std::vector<double>       breakpoints, node_x, node_weight, node_mass;
+      std::vector<unsigned int> row;
+      std::array<bool, 2>       nodal  = {{true, true}};
+      unsigned int              degree = 1;
+      std::shared_ptr<dealii::FE_Q<1>> fe;
+      /// psi_i = sum_k dual(i, k) phi_k on every segment.
+      dealii::FullMatrix<double> dual;
     };
 
-    unsigned int                     degree_ = 1;
-    std::unique_ptr<dealii::FE_Q<1>> fe;
-    PerBlock<Mesh>                   meshes;
+    PerBlock<Mesh> meshes;
     /// Per node of mu_1.
     std::vector<bool>           crack_nodes;
     dealii::BlockVector<double> lower, upper;

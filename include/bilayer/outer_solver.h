@@ -8,6 +8,7 @@
 #include <bilayer/parameters.h>
 #include <bilayer/subdomain_solves.h>
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -119,6 +120,41 @@ namespace bilayer
                       const Interface                   &interface,
                       const unsigned int                 max_iterations,
                       const dealii::BlockVector<double> *mask = nullptr);
+
+  /// Extreme eigenvalues of the dual operator and the work spent on them.
+  struct DualSpectrum
+  {
+    double lambda_min = 0, lambda_max = 0;
+    /// The shortest segment of the multiplier meshes [m].
+    double h = 0;
+    /// Lanczos steps (conjugate-gradient iterations).
+    unsigned int  iterations       = 0;
+    unsigned long subdomain_solves = 0;
+
+    double
+    condition_number() const
+    {
+      return lambda_min > 0 ? lambda_max / lambda_min :
+                              std::numeric_limits<double>::infinity();
+    }
+  };
+
+  /**
+   * lambda_min and lambda_max of S = D^{-1} C A^{-1} C^T on the components
+   * that carry multipliers, from the Lanczos process of the conjugate-
+   * gradient method (deal.II's SolverCG and its eigenvalue estimates) on the
+   * symmetric form D^{-1/2} C A^{-1} C^T D^{-1/2} with a fixed pseudo-random
+   * right-hand side, run to a relative residual of 1e-10 or
+   * @p max_iterations steps. Each step is one homogeneous solve per
+   * subproblem. The multipliers are unique exactly when lambda_min > 0;
+   * for a uniformly inf-sup stable choice of multipliers lambda_min / h is
+   * bounded below under refinement (the multipliers' H^{-1/2} norm bounds
+   * h^{1/2} times their L2 norm from above), and lambda_max is bounded.
+   */
+  DualSpectrum
+  estimate_dual_spectrum(const Subproblems &subproblems,
+                         const Interface   &interface,
+                         const unsigned int max_iterations);
 } // namespace bilayer
 
 #endif

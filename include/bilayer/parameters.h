@@ -63,6 +63,19 @@ namespace bilayer
   };
 
   /**
+   * Which trace of layer 1 carries the mesh of mu_1 (the "slave" of the
+   * mortar coupling across Sigma, MultiplierSpace): the one with more
+   * segments on Sigma (the contact constraint tested at the finer set of
+   * points) or the one with fewer (fewer, better conditioned constraints).
+   * The two coincide on matching meshes.
+   */
+  enum class MultiplierMesh
+  {
+    finer_trace,
+    coarser_trace
+  };
+
+  /**
    * How the jumps in the Uzawa update are sampled. `weighted`: the weak
    * jump D^{-1} C w (the gradient of the Lagrangian in the metric of the
    * lumped multiplier mass D); `nodal`: the traces evaluated at the
@@ -288,6 +301,7 @@ namespace bilayer
     double             multiplier_bound = 1e7;
     MultiplierCoupling coupling         = MultiplierCoupling::lumped;
     JumpSampling       sampling         = JumpSampling::weighted;
+    MultiplierMesh     mesh             = MultiplierMesh::finer_trace;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -317,6 +331,9 @@ namespace bilayer
     bool         auto_theta          = false;
     double       auto_theta_fraction = 0.9;
     unsigned int spectrum_iterations = 30;
+    /// Lanczos steps for the extreme eigenvalues of the dual operator
+    /// reported per cycle (0: none).
+    unsigned int dual_spectrum_steps = 0;
     unsigned int max_iterations      = 100000;
     StoppingRule stopping_rule       = StoppingRule::paper;
     /// Amesos solver of subproblems shared by a group of processes.

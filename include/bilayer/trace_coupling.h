@@ -27,9 +27,13 @@ namespace bilayer
    * the matrix C_s, (C_s)_{2a+c, j} = int_Sigma phi_a psi_j^c ds (phi_a the
    * multiplier basis of block b), maps the dofs of s to the multiplier space
    * of b. The quadrature is either the Gauss-Lobatto rule of the multiplier
-   * segments (lumped: C_s = D E_s with E_s the evaluation at the nodes,
-   * node-to-node coupling) or a Gauss rule on the common refinement of the
-   * multiplier mesh and the trace of s (consistent, mortar coupling). The
+   * segments (lumped: C_s = D E_s with E_s the evaluation at the nodes:
+   * collocation at the slave's nodes, node-to-segment on the other side) or
+   * a Gauss rule on the common refinement of the multiplier mesh and the
+   * trace of s (consistent, mortar coupling). On the slave of b (the
+   * subproblem whose trace carries b's mesh, see MultiplierSpace) C_s is D
+   * times the identity on its trace dofs (lumped, same degree) or a local
+   * mass matrix; on the other side it is the mortar projection. The
    * trace of s at a point of Sigma is found by locating the point among the
    * Sigma faces of s's mesh, so nothing assumes that the Omega- and Omega+
    * traces match: non-matching meshes only change the break points of the
@@ -37,8 +41,8 @@ namespace bilayer
    * mass of MultiplierSpace.
    *
    * It also evaluates the traces of every subproblem at the nodes of mu_1
-   * and at the Gauss points of its mesh (the common refinement of all
-   * traces), which the diagnostics use.
+   * and at the Gauss points of the common refinement of the two traces,
+   * where every trace is a polynomial, which the diagnostics use.
    */
   class TraceCoupling
   {
@@ -97,7 +101,8 @@ namespace bilayer
                           const dealii::Vector<double> &w,
                           dealii::Vector<double>       &trace) const;
 
-    /// Gauss points of the mesh of mu_1 (coordinates along Sigma, weights).
+    /// Gauss points of the common refinement of the Omega- and Omega+
+    /// traces (coordinates along Sigma, weights).
     const std::vector<double> &
     gauss_points() const
     {
@@ -164,7 +169,7 @@ namespace bilayer
     PerBlock<std::array<PointMatrix, 2>> coupling, evaluation;
     /// Traces of the subproblems at the nodes of mu_1.
     PerSubproblem<PointMatrix> node_traces;
-    /// Traces at the Gauss points of the mesh of mu_1.
+    /// Traces at the Gauss points of the common refinement.
     PerSubproblem<PointMatrix> gauss_traces;
     std::vector<double>        gauss_x, gauss_weight;
   };
