@@ -297,10 +297,11 @@ namespace bilayer
   std::string
   CycleRecord::failure() const
   {
+    // The failed checks as the check lines print them ("...: NO").
     std::string failed;
     for (const auto &c : checks)
       if (!c.second)
-        failed += (failed.empty() ? "" : ", ") + c.first;
+        failed += (failed.empty() ? "" : ", ") + c.first + ": NO";
     return failed + " (" + result.message + ")" +
            (note.empty() ? "" : "; " + note);
   }
