@@ -76,7 +76,7 @@ namespace bilayer
 
     // Coupling (lumped or consistent) and evaluation at the nodes of each
     // block, traces at the nodes of mu_1, and the Gauss points of the
-    // common refinement of all traces (= the mesh of mu_1).
+    // common refinement of the two traces.
     unsigned int max_degree = 0;
     for (const unsigned int b : Layout::blocks)
       max_degree = std::max(max_degree, space.degree(b));

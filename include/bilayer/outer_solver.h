@@ -148,8 +148,9 @@ namespace bilayer
    * @p max_iterations steps. Each step is one homogeneous solve per
    * subproblem. The multipliers are unique exactly when lambda_min > 0;
    * for a uniformly inf-sup stable choice of multipliers lambda_min / h is
-   * bounded below under refinement (the multipliers' H^{-1/2} norm bounds
-   * h^{1/2} times their L2 norm from above), and lambda_max is bounded.
+   * bounded below under refinement (lambda_min >= beta^2 min |mu|^2_{-1/2} /
+   * |mu|^2_{L2} and |mu|_{-1/2} >= c h^{1/2} |mu|_{L2} by the inverse
+   * inequality), and lambda_max is bounded.
    */
   DualSpectrum
   estimate_dual_spectrum(const Subproblems &subproblems,

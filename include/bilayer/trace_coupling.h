@@ -26,14 +26,17 @@ namespace bilayer
    * For each block b and each of its two subproblems s = Layout::coupled(b)
    * the matrix C_s, (C_s)_{2a+c, j} = int_Sigma phi_a psi_j^c ds (phi_a the
    * multiplier basis of block b), maps the dofs of s to the multiplier space
-   * of b. The quadrature is either the Gauss-Lobatto rule of the multiplier
-   * segments (lumped: C_s = D E_s with E_s the evaluation at the nodes:
-   * collocation at the slave's nodes, node-to-segment on the other side) or
-   * a Gauss rule on the common refinement of the multiplier mesh and the
-   * trace of s (consistent, mortar coupling). On the slave of b (the
-   * subproblem whose trace carries b's mesh, see MultiplierSpace) C_s is D
-   * times the identity on its trace dofs (lumped, same degree) or a local
-   * mass matrix; on the other side it is the mortar projection. The
+   * of b. Lumped coupling: phi_a is the dual (biorthogonal) basis psi_a of
+   * MultiplierSpace; where the trace of s lies in the multiplier space
+   * (MultiplierSpace::nodal: the slave of b, matching and nested traces)
+   * this is exactly C_s = D E_s with E_s the evaluation at the nodes, else a
+   * Gauss rule on the common refinement of the multiplier mesh and the
+   * trace of s (the mortar projection). Consistent coupling: the Lagrange
+   * basis, Gauss rule on the common refinement (standard mortar). On the
+   * slave of b (the subproblem whose trace carries b's mesh, see
+   * MultiplierSpace) C_s is D times the identity on its trace dofs (lumped,
+   * same degree) or a local mass matrix. Rows follow MultiplierSpace::row
+   * (the mortar modification at the ends on Gamma_D). The
    * trace of s at a point of Sigma is found by locating the point among the
    * Sigma faces of s's mesh, so nothing assumes that the Omega- and Omega+
    * traces match: non-matching meshes only change the break points of the
