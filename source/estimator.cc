@@ -74,7 +74,10 @@ namespace bilayer
                       const Tensor<1, 2> residual =
                         stress * fe_face.normal_vector(q) -
                         interface.multiplier_traction(
-                          mu, s, fe_face.quadrature_point(q)[0]);
+                          mu,
+                          s,
+                          interface.curve().parameter(
+                            fe_face.quadrature_point(q)));
                       sum += (residual * residual) /
                              (4 * mu_material * mu_material) * fe_face.JxW(q);
                     }
@@ -84,10 +87,12 @@ namespace bilayer
                   if (Layout::layer(s) == Layer::first &&
                       cell->face(f)->boundary_id() == BoundaryIds::crack)
                     {
-                      const double x0 = std::min(cell->face(f)->vertex(0)[0],
-                                                 cell->face(f)->vertex(1)[0]);
-                      const double x1 = std::max(cell->face(f)->vertex(0)[0],
-                                                 cell->face(f)->vertex(1)[0]);
+                      const double s0 = interface.curve().parameter(
+                                     cell->face(f)->vertex(0)),
+                                   s1 = interface.curve().parameter(
+                                     cell->face(f)->vertex(1));
+                      const double x0 = std::min(s0, s1);
+                      const double x1 = std::max(s0, s1);
                       auto         it = std::lower_bound(contact.begin(),
                                                  contact.end(),
                                                  x0,

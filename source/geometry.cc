@@ -19,7 +19,16 @@ namespace bilayer
                      const MeshParameters     &mesh)
     : geometry(geometry)
     , mesh(mesh)
-  {}
+  {
+    // The rectangle's Sigma: the horizontal segment, s = x, nu = (0, 1);
+    // its ends lie on Gamma_D where the left or right side is clamped.
+    curve = InterfaceCurve::segment({geometry.x_min, geometry.sigma_height},
+                                    {geometry.x_max, geometry.sigma_height});
+    curve.set_crack(geometry.crack());
+    curve.set_ends_on_gamma_d(
+      {{geometry.clamped[static_cast<unsigned int>(Side::left)],
+        geometry.clamped[static_cast<unsigned int>(Side::right)]}});
+  }
 
 
   void

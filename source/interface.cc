@@ -4,18 +4,18 @@ namespace bilayer
 {
   using namespace dealii;
 
-  Interface::Interface(const GeometryParameters &geometry,
-                       const ContactParameters  &contact)
-    : geometry(geometry)
-    , contact(contact)
+  Interface::Interface(const ContactParameters &contact)
+    : contact(contact)
   {}
 
 
   void
-  Interface::setup(const PerSubproblem<const ElasticSubproblem *> &subs)
+  Interface::setup(const PerSubproblem<const ElasticSubproblem *> &subs,
+                   const InterfaceCurve                           &curve)
   {
-    const double   tol    = 1e-10 * (geometry.x_max - geometry.x_min);
-    const auto    &traces = coupling_.locate_traces(subs);
+    curve_             = curve;
+    const double   tol = curve.tolerance();
+    const auto    &traces = coupling_.locate_traces(subs, curve_);
     PerBlock<bool> active;
     for (const unsigned int b : Layout::blocks)
       active[b] = coupling_.active(b);
@@ -24,7 +24,7 @@ namespace bilayer
     const unsigned int degree_second =
       subs[Layout::v_minus] ? subs[Layout::v_minus]->fe().degree : degree_first;
     space_.reinit(
-      geometry, contact, traces, degree_first, degree_second, active);
+      curve_, contact, traces, degree_first, degree_second, active);
     coupling_.reinit(space_, contact.coupling, tol);
   }
 
@@ -63,11 +63,21 @@ namespace bilayer
           {
             const unsigned int e = space_.shape_values(b, x, values);
             for (unsigned int i = 0; i <= space_.degree(b); ++i)
-              for (unsigned int c = 0; c < Layout::n_components; ++c)
-                t[c] +=
-                  (j == 0 ? -1. : 1.) * values[i] *
-                  mu.block(b)(
-                    Layout::entry(space_.row(space_.node(e, i, b), b), c));
+              {
+                // The multiplier's components in its node's frame.
+                const unsigned int r = space_.row(space_.node(e, i, b), b);
+                const double       s_r = space_.node_position(r, b);
+                const std::array<Tensor<1, 2>, 2> frame = {
+                  {curve_.tangent(s_r), curve_.normal(s_r)}};
+                for (unsigned int k = 0; k < Layout::n_components; ++k)
+                  {
+                    const double m = (j == 0 ? -1. : 1.) * values[i] *
+                                     mu.block(b)(Layout::entry(r, k));
+                    for (unsigned int c = 0; c < Layout::n_components; ++c)
+                      if (frame[k][c] != 0.)
+                        t[c] += m * frame[k][c];
+                  }
+              }
           }
     return t;
   }

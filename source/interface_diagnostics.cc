@@ -146,7 +146,7 @@ namespace bilayer
           interface.present(s) ? s : Layout::first_layer_partner(s);
         coupling.trace_at_gauss_points(source, w[source], t[s]);
       }
-    const CrackSet crack = interface.geometry_parameters().crack();
+    const CrackSet &crack = interface.curve().crack();
     const auto    &x     = coupling.gauss_points();
     const auto    &wq    = coupling.gauss_weights();
     double         size  = 0;
@@ -202,7 +202,8 @@ namespace bilayer
                                         w[Layout::u_minus],
                                         tm);
     interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
-    // Normal jump and contact multiplier at node a (nu = e_y).
+    // Normal jump and contact multiplier at node a (the traces' components
+    // are in the node's frame (tangent, normal)).
     const auto gap = [&](const unsigned int a) {
       return tp(Layout::entry(a, Layout::normal)) -
              tm(Layout::entry(a, Layout::normal));
@@ -269,14 +270,17 @@ namespace bilayer
     out << "x,on_crack,jump_normal,jump_tangential,mu_c,mu_g_x,mu_g_y,"
            "mu_minus_x,mu_minus_y,mu_plus_x,mu_plus_y,gap_minus_x,"
            "gap_minus_y,gap_plus_x,gap_plus_y,u_minus_x,u_minus_y,u_plus_x,"
-           "u_plus_y,v_minus_x,v_minus_y,v_plus_x,v_plus_y\n";
+           "u_plus_y,v_minus_x,v_minus_y,v_plus_x,v_plus_y,s,y,normal_x,"
+           "normal_y\n";
     out << std::setprecision(12);
     for (unsigned int a = 0; a < space.n_nodes(Layout::across_sigma); ++a)
       {
         const unsigned int x  = Layout::entry(a, Layout::tangential),
                            y  = Layout::entry(a, Layout::normal);
         const double position = space.node_position(a, Layout::across_sigma);
-        out << position << ',' << (space.on_crack(a) ? 1 : 0) << ','
+        const Point<2>     point  = interface.curve().point(position);
+        const Tensor<1, 2> normal = interface.curve().normal(position);
+        out << point[0] << ',' << (space.on_crack(a) ? 1 : 0) << ','
             << t[u_plus](y) - t[u_minus](y) << ','
             << t[u_plus](x) - t[u_minus](x) << ','
             << space.contact_multiplier(mu, a) << ','
@@ -291,7 +295,9 @@ namespace bilayer
             << t[u_plus](y) - t[v_plus](y);
         for (const unsigned int s : Layout::subproblems)
           out << ',' << t[s](x) << ',' << t[s](y);
-        out << '\n';
+        // (+ 0. turns a negative zero into a positive one.)
+        out << ',' << position << ',' << point[1] << ',' << normal[0] + 0.
+            << ',' << normal[1] + 0. << '\n';
       }
   }
 } // namespace bilayer

@@ -75,14 +75,14 @@ namespace bilayer
 
 
   void
-  MultiplierSpace::reinit(const GeometryParameters                 &geometry,
+  MultiplierSpace::reinit(const InterfaceCurve                     &curve,
                           const ContactParameters                  &contact,
                           const std::array<std::vector<double>, 2> &traces,
                           const unsigned int    degree_first,
                           const unsigned int    degree_second,
                           const PerBlock<bool> &active)
   {
-    const double tol = 1e-10 * (geometry.x_max - geometry.x_min);
+    const double tol = curve.tolerance();
 
     // The meshes: the slave's trace of each block, Gauss-Lobatto nodes of
     // the block's degree on each segment.
@@ -171,13 +171,10 @@ namespace bilayer
 
     // Multiplier sets (paper.md §3) as bounds per component.
     const double   p     = contact.multiplier_bound;
-    const CrackSet crack = geometry.crack();
-    // The ends of Sigma on a clamped side belong to Gamma_D.
-    const auto on_gamma_d = [&](const double x) {
-      return (std::abs(x - geometry.x_min) < tol &&
-              geometry.clamped[static_cast<unsigned int>(Side::left)]) ||
-             (std::abs(x - geometry.x_max) < tol &&
-              geometry.clamped[static_cast<unsigned int>(Side::right)]);
+    const CrackSet &crack = curve.crack();
+    // The ends of Sigma on Gamma_D.
+    const auto on_gamma_d = [&](const double s) {
+      return curve.on_gamma_d(s);
     };
     std::vector<types::global_dof_index> sizes;
     for (const auto &mesh : meshes)

@@ -71,7 +71,7 @@ namespace bilayer
               distribution.is_root())
     , rout(out, distribution.is_root())
     , domain(scene.geometry, scene.mesh)
-    , coupling(scene.geometry, scene.contact)
+    , coupling(scene.contact)
   {}
 
 
@@ -265,7 +265,7 @@ namespace bilayer
   Study::set_up_interface(CycleRecord                      &record,
                           const MultiplierSpace::Functions *previous)
   {
-    coupling.setup(subproblem_views());
+    coupling.setup(subproblem_views(), domain.interface_curve());
     coupling.space().initialize(mu);
     if (previous != nullptr)
       coupling.space().interpolate(*previous, mu);

@@ -13,7 +13,8 @@ namespace bilayer
   using namespace dealii;
 
   std::vector<TraceCoupling::SigmaFace>
-  TraceCoupling::sigma_faces(const Triangulation<2> &tria)
+  TraceCoupling::sigma_faces(const Triangulation<2> &tria,
+                             const InterfaceCurve   &curve)
   {
     std::vector<SigmaFace> result;
     for (const auto &cell : tria.active_cell_iterators())
@@ -28,7 +29,7 @@ namespace bilayer
             for (unsigned int fv = 0; fv < 2; ++fv)
               for (const unsigned int v : cell->vertex_indices())
                 if (cell->vertex(v).distance(face->vertex(fv)) < tol)
-                  ends[fv] = {face->vertex(fv)[0],
+                  ends[fv] = {curve.parameter(face->vertex(fv)),
                               cell->reference_cell().template vertex<2>(v)};
             if (ends[0].first > ends[1].first)
               std::swap(ends[0], ends[1]);
@@ -49,15 +50,18 @@ namespace bilayer
 
   const std::array<std::vector<double>, 2> &
   TraceCoupling::locate_traces(
-    const PerSubproblem<const ElasticSubproblem *> &subs)
+    const PerSubproblem<const ElasticSubproblem *> &subs,
+    const InterfaceCurve                           &sigma)
   {
     subproblems = subs;
+    curve       = &sigma;
     for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
       {
         const unsigned int i = static_cast<unsigned int>(sd);
         faces[i]             = sigma_faces(subs[Layout::index(Layer::first, sd)]
                                  ->dof_handler()
-                                 .get_triangulation());
+                                 .get_triangulation(),
+                               sigma);
         traces[i].clear();
         for (const auto &face : faces[i])
           traces[i].push_back(face.x0);
@@ -97,6 +101,13 @@ namespace bilayer
         points.emplace_back(a, space.node_position(a, b), 1.0);
       return points;
     };
+    // Each multiplier node's frame is that of its own position.
+    const auto node_frames = [&](const unsigned int b) {
+      std::vector<double> at;
+      for (unsigned int a = 0; a < space.n_nodes(b); ++a)
+        at.push_back(space.node_position(a, b));
+      return at;
+    };
 
     std::vector<double> values;
     for (const unsigned int b : Layout::blocks)
@@ -134,15 +145,18 @@ namespace bilayer
                                           x,
                                           w * values[i]);
                   });
-              build_point_matrix(s, points, n, coupling[b][j]);
-              build_point_matrix(s, nodal(b), n, evaluation[b][j]);
+              build_point_matrix(s, points, node_frames(b), coupling[b][j]);
+              build_point_matrix(s,
+                                 nodal(b),
+                                 node_frames(b),
+                                 evaluation[b][j]);
             }
         }
     for (const unsigned int s : Layout::subproblems)
       if (present(s))
         build_point_matrix(s,
                            nodal(Layout::across_sigma),
-                           space.n_nodes(Layout::across_sigma),
+                           node_frames(Layout::across_sigma),
                            node_traces[s]);
 
     gauss_x.clear();
@@ -157,7 +171,7 @@ namespace bilayer
       at_gauss.emplace_back(q, gauss_x[q], 1.0);
     for (const unsigned int s : Layout::subproblems)
       if (present(s))
-        build_point_matrix(s, at_gauss, gauss_x.size(), gauss_traces[s]);
+        build_point_matrix(s, at_gauss, gauss_x, gauss_traces[s]);
   }
 
 
@@ -165,9 +179,13 @@ namespace bilayer
   TraceCoupling::build_point_matrix(
     const unsigned int                                           s,
     const std::vector<std::tuple<unsigned int, double, double>> &points,
-    const unsigned int                                           n_rows,
+    const std::vector<double>                                   &frame_at,
     PointMatrix                                                 &result) const
   {
+    const unsigned int n_rows = frame_at.size();
+    std::vector<std::array<Tensor<1, 2>, 2>> frames(n_rows);
+    for (unsigned int r = 0; r < n_rows; ++r)
+      frames[r] = {{curve->tangent(frame_at[r]), curve->normal(frame_at[r])}};
     const ElasticSubproblem &sub = *subproblems[s];
     const auto              &fe  = sub.fe();
     const auto &sfaces = faces[static_cast<unsigned int>(Layout::subdomain(s))];
@@ -196,8 +214,15 @@ namespace bilayer
           {
             const double v = fe.shape_value(i, unit);
             if (std::abs(v) > 1e-14)
-              rows[Layout::entry(r, fe.system_to_component_index(i).first)]
-                  [local[i]] += weight * v;
+              {
+                // Component k of the frame of row r: the displacement
+                // component c of the shape function times frame[k][c].
+                const unsigned int c = fe.system_to_component_index(i).first;
+                for (unsigned int k = 0; k < Layout::n_components; ++k)
+                  if (frames[r][k][c] != 0.)
+                    rows[Layout::entry(r, k)][local[i]] +=
+                      weight * v * frames[r][k][c];
+              }
           }
       }
 

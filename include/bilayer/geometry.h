@@ -4,6 +4,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
+#include <bilayer/interface_curve.h>
 #include <bilayer/parameters.h>
 
 #include <array>
@@ -76,6 +77,14 @@ namespace bilayer
     MeshStatistics
     statistics(const Subdomain subdomain) const;
 
+    /// Sigma as a curve: parametrisation, normals, crack pieces and the
+    /// ends on Gamma_D (set by create_meshes()).
+    const InterfaceCurve &
+    interface_curve() const
+    {
+      return curve;
+    }
+
     /// P of Table 1: vertices on Sigma.
     unsigned int
     n_sigma_vertices() const;
@@ -120,6 +129,7 @@ namespace bilayer
     const GeometryParameters                geometry;
     const MeshParameters                    mesh;
     std::array<dealii::Triangulation<2>, 2> triangulations;
+    InterfaceCurve                          curve;
   };
 } // namespace bilayer
 

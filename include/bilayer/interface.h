@@ -42,15 +42,15 @@ namespace bilayer
   class Interface
   {
   public:
-    Interface(const GeometryParameters &geometry,
-              const ContactParameters  &contact);
+    explicit Interface(const ContactParameters &contact);
 
     /// Build the multiplier spaces and all operators for the given
     /// subproblems (indexed by Layout::index()); without layer 2 its entries
     /// are null, and the gluing blocks have no nodes. The multipliers take
     /// the degree of layer 1.
     void
-    setup(const PerSubproblem<const ElasticSubproblem *> &subproblems);
+    setup(const PerSubproblem<const ElasticSubproblem *> &subproblems,
+          const InterfaceCurve                           &curve);
 
     const MultiplierSpace &
     space() const
@@ -64,10 +64,11 @@ namespace bilayer
       return coupling_;
     }
 
-    const GeometryParameters &
-    geometry_parameters() const
+    /// Sigma with its parametrisation, normals and crack pieces.
+    const InterfaceCurve &
+    curve() const
     {
-      return geometry;
+      return curve_;
     }
 
     const ContactParameters &
@@ -88,8 +89,10 @@ namespace bilayer
     void
     jumps(const Solutions &w, dealii::BlockVector<double> &g) const;
 
-    /// The traction that the multipliers @p mu apply to subproblem @p s at
-    /// the point x of Sigma (the density of its multiplier load).
+    /// The traction (Cartesian components) that the multipliers @p mu
+    /// apply to subproblem @p s at the point of parameter @p x on Sigma
+    /// (the density of its multiplier load; the multipliers' components
+    /// are in the frame (tangent, normal) of their nodes).
     dealii::Tensor<1, 2>
     multiplier_traction(const dealii::BlockVector<double> &mu,
                         const unsigned int                 s,
@@ -125,8 +128,8 @@ namespace bilayer
     }
 
   private:
-    const GeometryParameters geometry;
-    const ContactParameters  contact;
+    const ContactParameters contact;
+    InterfaceCurve          curve_;
     MultiplierSpace          space_;
     TraceCoupling            coupling_;
   };

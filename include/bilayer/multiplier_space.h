@@ -5,6 +5,7 @@
 #include <deal.II/lac/block_vector.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <bilayer/interface_curve.h>
 #include <bilayer/layout.h>
 #include <bilayer/parameters.h>
 
@@ -96,11 +97,12 @@ namespace bilayer
     /**
      * Build the meshes from the break points of the Omega- and Omega+ traces
      * on Sigma (sorted coordinates along Sigma) and the degrees of the two
-     * layers' elements, by choose(); @p active[b] says whether both
+     * layers' elements, by choose(); the crack pieces and the ends on
+     * Gamma_D come from @p curve; @p active[b] says whether both
      * subproblems of block b exist.
      */
     void
-    reinit(const GeometryParameters                 &geometry,
+    reinit(const InterfaceCurve                     &curve,
            const ContactParameters                  &contact,
            const std::array<std::vector<double>, 2> &trace_breakpoints,
            const unsigned int                        degree_first,

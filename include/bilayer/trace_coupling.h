@@ -7,6 +7,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <bilayer/interface_curve.h>
 #include <bilayer/layout.h>
 #include <bilayer/multiplier_space.h>
 #include <bilayer/subproblem.h>
@@ -52,9 +53,11 @@ namespace bilayer
   public:
     /// Take the subproblems @p subs (null where absent), find the faces of
     /// each subdomain's mesh on Sigma and return the break points of the two
-    /// traces, from which the multiplier spaces are built.
+    /// traces (values of the parameter s of @p curve, which must outlive
+    /// this object's use), from which the multiplier spaces are built.
     const std::array<std::vector<double>, 2> &
-    locate_traces(const PerSubproblem<const ElasticSubproblem *> &subs);
+    locate_traces(const PerSubproblem<const ElasticSubproblem *> &subs,
+                  const InterfaceCurve                           &curve);
 
     /// Build every matrix for the multiplier spaces @p space (after
     /// locate_traces()).
@@ -146,23 +149,28 @@ namespace bilayer
       dealii::SparseMatrix<double> matrix;
     };
 
-    /// Sorted Sigma faces of a mesh.
+    /// Sorted Sigma faces of a mesh (by the parameter s of @p curve).
     static std::vector<SigmaFace>
-    sigma_faces(const dealii::Triangulation<2> &tria);
+    sigma_faces(const dealii::Triangulation<2> &tria,
+                const InterfaceCurve           &curve);
 
     /**
      * The matrix with rows 2 r + c whose product with the dofs of
      * subproblem s gives sum_k weight_k * (component c of the trace at x_k),
-     * for the entries (r, x_k, weight_k) of @p points.
+     * for the entries (r, x_k, weight_k) of @p points; the components are
+     * those in the frame (tangent, normal) of Sigma at the parameter
+     * @p frame_at[r] of row r (for multiplier rows their node, so that
+     * each node has one normal).
      */
     void
     build_point_matrix(
       const unsigned int                                           s,
       const std::vector<std::tuple<unsigned int, double, double>> &points,
-      const unsigned int                                           n_rows,
+      const std::vector<double>                                   &frame_at,
       PointMatrix &result) const;
 
     PerSubproblem<const ElasticSubproblem *> subproblems;
+    const InterfaceCurve                    *curve = nullptr;
     std::array<std::vector<SigmaFace>, 2>    faces;
     /// The break points of the two traces (the ends of faces).
     std::array<std::vector<double>, 2> traces;
