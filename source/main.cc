@@ -216,6 +216,8 @@ main(int argc, char **argv)
         try
           {
             std::vector<std::string> inputs = scene.input_files;
+            if (!scene.geometry.gmsh_file.empty())
+              inputs.push_back(scene.geometry.gmsh_file);
             for (const auto &pattern : scene.mesh.mesh_files)
               for (const std::string side : {"minus", "plus"})
                 {

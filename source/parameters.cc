@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <bilayer/gmsh_mesh.h>
 #include <bilayer/parameters.h>
 
 #include <cctype>
@@ -10,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <set>
@@ -87,11 +89,6 @@ namespace bilayer
       return "Layer " + std::to_string(layer + 1);
     }
 
-    std::string
-    traction_entry(const Side side)
-    {
-      return "Traction on " + side_name(side) + " side";
-    }
 
     /// The longest expression text read (Loads section) [characters].
     constexpr std::size_t max_expression_length = 10000;
@@ -176,9 +173,22 @@ namespace bilayer
 
 
   void
-  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  GeometryParameters::declare_parameters(ParameterHandler    &prm,
+                                         const BoundaryParts &parts)
   {
     prm.enter_subsection("Geometry");
+    prm.declare_entry(
+      "Gmsh file",
+      "",
+      Patterns::Anything(),
+      "A Gmsh geometry (.geo, meshed by the gmsh command with Mesh/Gmsh mesh "
+      "size factor) or mesh (.msh, format 2) of the specimen, relative to "
+      "the parameter file. Its physical groups carry the meaning by name: "
+      "surfaces 'Omega-' and 'Omega+', curves 'Sigma' (the glued part of the "
+      "interface) and 'crack' (one or several debonded pieces), and any "
+      "other named curve a boundary part for Clamped sides and the "
+      "'Traction on NAME' entries of the Loads section (docs/geometry.md). "
+      "Empty: the rectangle of the entries below.");
     prm.declare_entry("Lower left corner",
                       "-1, -1",
                       Patterns::List(Patterns::Double(), 2, 2),
@@ -201,20 +211,28 @@ namespace bilayer
                       "End points (x_start, x_end) of the through crack "
                       "gamma_c on Sigma [length]. Equal end points mean no "
                       "crack. The crack must lie strictly inside Omega.");
+    std::string selection;
+    for (const auto &name : parts.names)
+      selection += (selection.empty() ? "" : "|") + name;
     prm.declare_entry("Clamped sides",
-                      "left, right",
-                      Patterns::MultipleSelection("left|right|bottom|top"),
-                      "Sides of Omega that form Gamma_D (both layers clamped "
-                      "to the prescribed displacement). The other sides form "
-                      "Gamma_N and carry the tractions of the Loads section.");
+                      parts.gmsh ? "" : "left, right",
+                      Patterns::MultipleSelection(selection),
+                      "Sides of Omega (the named boundary curves of a Gmsh "
+                      "scene) that form Gamma_D (both layers clamped to the "
+                      "prescribed displacement). The other parts form "
+                      "Gamma_N and carry the tractions of the Loads "
+                      "section.");
     prm.leave_subsection();
   }
 
 
   void
-  GeometryParameters::parse_parameters(ParameterHandler &prm)
+  GeometryParameters::parse_parameters(ParameterHandler    &prm,
+                                       const BoundaryParts &boundary_parts)
   {
+    parts = boundary_parts;
     prm.enter_subsection("Geometry");
+    gmsh_file = Utilities::trim(prm.get("Gmsh file"));
     const auto lower = parse_pair(prm, "Geometry", "Lower left corner");
     const auto upper = parse_pair(prm, "Geometry", "Upper right corner");
     x_min            = lower[0];
@@ -227,13 +245,24 @@ namespace bilayer
     const auto crack = parse_pair(prm, "Geometry", "Crack interval on Sigma");
     crack_start      = crack[0];
     crack_end        = crack[1];
-    clamped.fill(false);
+    clamped.assign(parts.size(), false);
     for (const auto &name :
          Utilities::split_string_list(prm.get("Clamped sides")))
-      for (const Side side : all_sides)
-        if (name == side_name(side))
-          clamped[static_cast<unsigned int>(side)] = true;
+      for (unsigned int i = 0; i < parts.size(); ++i)
+        if (name == parts.names[i])
+          clamped[i] = true;
     prm.leave_subsection();
+    if (!gmsh_file.empty())
+      {
+        // The file's own checks (Geometry) say which subdomain lacks a
+        // clamped part.
+        AssertThrow(std::find(clamped.begin(), clamped.end(), true) !=
+                      clamped.end(),
+                    ExcMessage("Geometry/Clamped sides must name at least one "
+                               "boundary curve of '" +
+                               gmsh_file + "', got '" + clamped_text + "'"));
+        return;
+      }
 
     AssertThrow(x_min < x_max && y_min < y_max,
                 ExcMessage("Geometry/Upper right corner must lie above and to "
@@ -306,6 +335,14 @@ namespace bilayer
       "parameter file; cycles beyond the list refine the last "
       "meshes uniformly. Boundary ids are assigned from the "
       "coordinates.");
+    prm.declare_entry("Gmsh mesh size factor",
+                      "1",
+                      Patterns::Double(0),
+                      "Factor on the mesh sizes of a Gmsh geometry "
+                      "(Geometry/Gmsh file, .geo), passed to gmsh as "
+                      "-clscale [-], > 0: the coarsest mesh, which the cycles "
+                      "refine (globally or adaptively) with deal.II, curved "
+                      "boundaries and Sigma staying on their circles.");
     prm.declare_entry("Number of cycles",
                       "1",
                       Patterns::Integer(1, 40),
@@ -377,6 +414,11 @@ namespace bilayer
     degree_second     = prm.get_integer("Polynomial degree of layer 2");
     n_cycles          = prm.get_integer("Number of cycles");
     mesh_files        = Utilities::split_string_list(prm.get("Mesh files"));
+    gmsh_size_factor  = get_double(prm, "Mesh", "Gmsh mesh size factor");
+    AssertThrow(gmsh_size_factor >= 1e-3 && gmsh_size_factor <= 1e3,
+                ExcMessage("Mesh/Gmsh mesh size factor must lie in [1e-3, "
+                           "1e3], got " +
+                           prm.get("Gmsh mesh size factor")));
     if (!mesh_files.empty())
       shape = ElementShape::triangle;
     cells_along_sigma_plus =
@@ -467,12 +509,13 @@ namespace bilayer
   LoadParameters::LoadParameters()
   {
     for (auto &layer : traction)
-      layer.fill("0; 0");
+      layer.assign(parts.size(), "0; 0");
   }
 
 
   void
-  LoadParameters::declare_parameters(ParameterHandler &prm)
+  LoadParameters::declare_parameters(ParameterHandler    &prm,
+                                     const BoundaryParts &parts)
   {
     prm.enter_subsection("Loads");
     prm.declare_entry(
@@ -486,14 +529,14 @@ namespace bilayer
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
-        for (const Side side : all_sides)
-          prm.declare_entry(traction_entry(side),
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          prm.declare_entry(parts.traction_entry(i),
                             "0; 0",
                             Patterns::Anything(),
-                            "Traction (x-component; y-component) on this side "
-                            "of the layer as expressions of x and y [stress]. "
-                            "Used where the side is not clamped; must be "
-                            "'0; 0' on clamped sides.");
+                            "Traction (x-component; y-component) on this part "
+                            "of the boundary of the layer as expressions of x "
+                            "and y [stress]. Used where the part is not "
+                            "clamped; must be '0; 0' on clamped parts.");
         prm.declare_entry("Prescribed displacement",
                           "0; 0",
                           Patterns::Anything(),
@@ -508,8 +551,10 @@ namespace bilayer
 
   void
   LoadParameters::parse_parameters(ParameterHandler         &prm,
-                                   const MaterialParameters &materials)
+                                   const MaterialParameters &materials,
+                                   const BoundaryParts      &boundary_parts)
   {
+    parts = boundary_parts;
     constant_values.clear();
     std::set<std::string> materials_constants;
     for (unsigned int l = 0; l < 2; ++l)
@@ -580,9 +625,9 @@ namespace bilayer
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
-        for (const Side side : all_sides)
-          traction[l][static_cast<unsigned int>(side)] =
-            prm.get(traction_entry(side));
+        traction[l].assign(parts.size(), "0; 0");
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          traction[l][i] = prm.get(parts.traction_entry(i));
         prescribed[l] = prm.get("Prescribed displacement");
         prm.leave_subsection();
       }
@@ -592,20 +637,21 @@ namespace bilayer
     for (const Layer layer : {Layer::first, Layer::second})
       {
         prescribed_function(layer);
-        for (const Side side : all_sides)
-          traction_function(layer, side);
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          traction_function(layer, i);
       }
   }
 
 
   std::unique_ptr<FunctionParser<2>>
-  LoadParameters::traction_function(const Layer layer, const Side side) const
+  LoadParameters::traction_function(const Layer        layer,
+                                    const unsigned int part) const
   {
     const unsigned int l = static_cast<unsigned int>(layer);
-    return make_vector_function(traction[l][static_cast<unsigned int>(side)],
+    return make_vector_function(traction[l][part],
                                 constant_values,
                                 "Loads/" + layer_subsection(l) + "/" +
-                                  traction_entry(side));
+                                  parts.traction_entry(part));
   }
 
 
@@ -621,13 +667,12 @@ namespace bilayer
 
 
   bool
-  LoadParameters::traction_is_zero(const Layer layer, const Side side) const
+  LoadParameters::traction_is_zero(const Layer        layer,
+                                   const unsigned int part) const
   {
-    const auto parts =
-      Utilities::split_string_list(traction[static_cast<unsigned int>(layer)]
-                                           [static_cast<unsigned int>(side)],
-                                   ';');
-    for (const auto &p : parts)
+    const auto components = Utilities::split_string_list(
+      traction[static_cast<unsigned int>(layer)][part], ';');
+    for (const auto &p : components)
       if (p != "0" && p != "0.0" && p != "0.")
         return false;
     return true;
@@ -954,12 +999,12 @@ namespace bilayer
 
 
   void
-  Scene::declare_parameters(ParameterHandler &prm)
+  Scene::declare_parameters(ParameterHandler &prm, const BoundaryParts &parts)
   {
-    GeometryParameters::declare_parameters(prm);
+    GeometryParameters::declare_parameters(prm, parts);
     MeshParameters::declare_parameters(prm);
     MaterialParameters::declare_parameters(prm);
-    LoadParameters::declare_parameters(prm);
+    LoadParameters::declare_parameters(prm, parts);
     ContactParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
@@ -967,12 +1012,12 @@ namespace bilayer
 
 
   void
-  Scene::parse_parameters(ParameterHandler &prm)
+  Scene::parse_parameters(ParameterHandler &prm, const BoundaryParts &parts)
   {
-    geometry.parse_parameters(prm);
+    geometry.parse_parameters(prm, parts);
     mesh.parse_parameters(prm);
     materials.parse_parameters(prm);
-    loads.parse_parameters(prm, materials);
+    loads.parse_parameters(prm, materials, parts);
     contact.parse_parameters(prm);
     solver.parse_parameters(prm);
     output.parse_parameters(prm);
@@ -991,21 +1036,27 @@ namespace bilayer
                              std::to_string(static_cast<int>(layer) + 1) +
                              " must be 1 or 2 on triangles, got " +
                              std::to_string(mesh.degree(layer))));
-    for (const Side side : all_sides)
+    AssertThrow(geometry.gmsh_file.empty() || mesh.mesh_files.empty(),
+                ExcMessage("Mesh/Mesh files and Geometry/Gmsh file exclude "
+                           "each other: give the specimen by one of them"));
+    for (unsigned int i = 0; i < parts.size(); ++i)
       AssertThrow(materials.n_layers == 2 ||
-                    loads.traction_is_zero(Layer::second, side),
-                  ExcMessage("Loads/Layer 2/" + traction_entry(side) +
+                    loads.traction_is_zero(Layer::second, i),
+                  ExcMessage("Loads/Layer 2/" + parts.traction_entry(i) +
                              " must be '0; 0': layer 2 is absent "
                              "(Materials/Number of layers = 1)"));
     for (const Layer layer : {Layer::first, Layer::second})
-      for (const Side side : all_sides)
-        AssertThrow(!geometry.clamped[static_cast<unsigned int>(side)] ||
-                      loads.traction_is_zero(layer, side),
+      for (unsigned int i = 0; i < parts.size(); ++i)
+        AssertThrow(!geometry.clamped[i] || loads.traction_is_zero(layer, i),
                     ExcMessage("Loads/Layer " +
                                std::to_string(static_cast<int>(layer) + 1) +
-                               "/" + traction_entry(side) +
-                               " must be '0; 0': the " + side_name(side) +
-                               " side is clamped (Geometry/Clamped sides)"));
+                               "/" + parts.traction_entry(i) +
+                               " must be '0; 0': " + parts.names[i] +
+                               " is clamped (Geometry/Clamped sides)"));
+    // Gmsh scenes: the loads are checked where they act, on the assembled
+    // loads (ElasticSubproblem).
+    if (parts.gmsh)
+      return;
 
     // Every load must be finite where it acts: tractions on their sides,
     // the prescribed displacement on the clamped sides (1001 points each).
@@ -1016,10 +1067,10 @@ namespace bilayer
           const std::string  where =
             "Loads/Layer " + std::to_string(static_cast<int>(layer) + 1) + "/" +
             (geometry.clamped[s] ? std::string("Prescribed displacement") :
-                                   traction_entry(side));
+                                   parts.traction_entry(s));
           const auto f = geometry.clamped[s] ?
                            loads.prescribed_function(layer) :
-                           loads.traction_function(layer, side);
+                           loads.traction_function(layer, s);
           for (unsigned int i = 0; i <= 1000; ++i)
             {
               // The point a fraction i/1000 along the side.
@@ -1121,14 +1172,77 @@ namespace bilayer
   } // namespace
 
 
+  namespace
+  {
+    /**
+     * The boundary parts of the scene: the rectangle's sides, or the named
+     * curves of Geometry/Gmsh file, read from the parameter file (or text)
+     * and the overrides before the other entries are declared (they name
+     * the Loads entries). Relative paths are relative to @p base.
+     */
+    BoundaryParts
+    boundary_parts(const std::function<void(ParameterHandler &)> &parse,
+                   const std::vector<std::string>                &overrides,
+                   const std::filesystem::path                   &base,
+                   std::string                                   &gmsh_file)
+    {
+      ParameterHandler first;
+      first.enter_subsection("Geometry");
+      first.declare_entry("Gmsh file", "", Patterns::Anything());
+      first.leave_subsection();
+      try
+        {
+          parse(first);
+        }
+      catch (...)
+        {
+          // A broken file: the full parse reports it.
+          return BoundaryParts();
+        }
+      first.enter_subsection("Geometry");
+      gmsh_file = Utilities::trim(first.get("Gmsh file"));
+      first.leave_subsection();
+      for (const auto &assignment : overrides)
+        {
+          const auto equal = assignment.find('=');
+          if (equal != std::string::npos &&
+              Utilities::split_string_list(assignment.substr(0, equal), '/') ==
+                std::vector<std::string>{"Geometry", "Gmsh file"})
+            gmsh_file = Utilities::trim(assignment.substr(equal + 1));
+        }
+      if (gmsh_file.empty())
+        return BoundaryParts();
+      if (std::filesystem::path(gmsh_file).is_relative())
+        gmsh_file = (base / gmsh_file).string();
+      const auto names = gmsh_boundary_names(gmsh_file);
+      for (const auto &name : names)
+        AssertThrow(!name.empty() &&
+                      name.find_first_of(",|") == std::string::npos,
+                    ExcMessage("Geometry/Gmsh file '" + gmsh_file +
+                               "': the physical curve name '" + name +
+                               "' must be non-empty and without ',' or '|'"));
+      return BoundaryParts::of_gmsh(names);
+    }
+  } // namespace
+
+
   Scene
   read_scene(ParameterHandler               &prm,
              const std::string              &filename,
              const std::vector<std::string> &overrides)
   {
-    Scene::declare_parameters(prm);
     std::vector<std::string> chain, files;
     check_parameter_file(filename, chain, files);
+    const auto    base = std::filesystem::path(filename).parent_path();
+    std::string   gmsh_file;
+    BoundaryParts parts = boundary_parts(
+      [&](ParameterHandler &first) {
+        first.parse_input(filename, "", true, false);
+      },
+      overrides,
+      base,
+      gmsh_file);
+    Scene::declare_parameters(prm, parts);
     prm.parse_input(filename, "", false, true);
 
     // "Section/Subsection/Entry=value" from the command line; blanks around
@@ -1162,13 +1276,13 @@ namespace bilayer
       }
 
     Scene scene;
-    scene.parse_parameters(prm);
-    scene.name      = std::filesystem::path(filename).stem().string();
-    const auto base = std::filesystem::path(filename).parent_path();
+    scene.parse_parameters(prm, parts);
+    scene.name = std::filesystem::path(filename).stem().string();
     for (auto &file : scene.mesh.mesh_files)
       if (std::filesystem::path(file).is_relative())
         file = (base / file).string();
-    scene.input_files = files;
+    scene.geometry.gmsh_file = gmsh_file;
+    scene.input_files        = files;
     return scene;
   }
 
@@ -1176,12 +1290,21 @@ namespace bilayer
   Scene
   scene_from_string(const std::string &text, const std::string &name)
   {
+    std::string         gmsh_file;
+    const BoundaryParts parts = boundary_parts(
+      [&](ParameterHandler &first) {
+        first.parse_input_from_string(text, "", true);
+      },
+      {},
+      "",
+      gmsh_file);
     ParameterHandler prm;
-    Scene::declare_parameters(prm);
+    Scene::declare_parameters(prm, parts);
     prm.parse_input_from_string(text);
     Scene scene;
-    scene.parse_parameters(prm);
-    scene.name = name;
+    scene.parse_parameters(prm, parts);
+    scene.geometry.gmsh_file = gmsh_file;
+    scene.name               = name;
     return scene;
   }
 

@@ -94,7 +94,7 @@ namespace bilayer
   structured_cells(const Scene &scene, const unsigned int cycle)
   {
     const auto &mesh = scene.mesh;
-    if (!mesh.mesh_files.empty() ||
+    if (!mesh.mesh_files.empty() || !scene.geometry.gmsh_file.empty() ||
         (cycle > 0 && mesh.refinement == Refinement::adaptive))
       return {{0., 0.}};
     const auto           &g      = scene.geometry;

@@ -204,20 +204,22 @@ namespace bilayer
     std::array<decltype(scene.loads.prescribed_function(Layer::first)),
                Layout::n_layers>
       prescribed;
-    std::array<PerSide<std::unique_ptr<FunctionParser<2>>>, Layout::n_layers>
-                                                               traction_owners;
-    std::array<PerSide<const Function<2> *>, Layout::n_layers> traction;
+    std::array<std::vector<std::unique_ptr<FunctionParser<2>>>,
+               Layout::n_layers>
+      traction_owners;
+    std::array<std::vector<const Function<2> *>, Layout::n_layers> traction;
     Tasks                                                      setups;
     for (const Layer layer : {Layer::first, Layer::second})
       if (scene.materials.has_layer(layer))
         {
           const unsigned int l = static_cast<unsigned int>(layer);
           prescribed[l]        = scene.loads.prescribed_function(layer);
-          for (unsigned int side = 0; side < n_sides; ++side)
+          for (unsigned int part = 0; part < scene.geometry.parts.size();
+               ++part)
             {
-              traction_owners[l][side] =
-                scene.loads.traction_function(layer, static_cast<Side>(side));
-              traction[l][side] = traction_owners[l][side].get();
+              traction_owners[l].push_back(
+                scene.loads.traction_function(layer, part));
+              traction[l].push_back(traction_owners[l].back().get());
             }
           for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
             {
@@ -278,7 +280,8 @@ namespace bilayer
   {
     pcout << "Cycle " << record.cycle << ": " << record.minus.cells << " + "
           << record.plus.cells << " "
-          << (scene.mesh.shape == ElementShape::quadrilateral ?
+          << (domain.triangulation(Subdomain::minus)
+                  .all_reference_cells_are_hyper_cube() ?
                 "quadrilaterals" :
                 "triangles")
           << ", P = " << record.P << ", M = " << record.M << ", " << record.dofs
@@ -396,7 +399,7 @@ namespace bilayer
                                "constraints <= " +
                                  t.str(),
                                r.relative_discrete_violation <= tol);
-    if (scene.contact.non_penetration && scene.geometry.has_crack())
+    if (scene.contact.non_penetration && !domain.interface_curve().crack().empty())
       {
         record.checks.emplace_back("contact multiplier mu_c >= 0",
                                    r.min_contact_multiplier >= 0);

@@ -96,8 +96,8 @@ namespace bilayer
       CellSystem(const FiniteElement<2>             &fe,
                  const Mapping<2>                   &mapping,
                  const LayerMaterial                &material,
-                 const PerSide<bool>                &clamped,
-                 const PerSide<const Function<2> *> &traction)
+                 const std::vector<bool>                &clamped,
+                 const std::vector<const Function<2> *> &traction)
         : fe(fe)
         , clamped(clamped)
         , traction(traction)
@@ -149,7 +149,7 @@ namespace bilayer
 
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() <= BoundaryIds::top &&
+              cell->face(f)->boundary_id() < clamped.size() &&
               !clamped[cell->face(f)->boundary_id()])
             {
               const Function<2> &load = *traction[cell->face(f)->boundary_id()];
@@ -169,8 +169,8 @@ namespace bilayer
 
     private:
       const FiniteElement<2>             &fe;
-      const PerSide<bool>                 clamped;
-      const PerSide<const Function<2> *> &traction;
+      const std::vector<bool>                 clamped;
+      const std::vector<const Function<2> *> &traction;
       const PlaneStrainLaw                law;
       FEValues<2>                         fe_values;
       FEFaceValues<2>                     fe_face_values;
@@ -189,9 +189,9 @@ namespace bilayer
 
 
   void
-  ElasticSubproblem::setup(const PerSide<bool>                &clamped,
+  ElasticSubproblem::setup(const std::vector<bool>                &clamped,
                            const Function<2>                  &prescribed,
-                           const PerSide<const Function<2> *> &traction,
+                           const std::vector<const Function<2> *> &traction,
                            const std::string &shared_solver_type)
   {
     shared_solver = shared_solver_type;
@@ -204,7 +204,7 @@ namespace bilayer
     DoFTools::make_hanging_node_constraints(dofs, constraints);
     DoFTools::make_hanging_node_constraints(dofs, homogeneous_constraints);
     const Functions::ZeroFunction<2> zero(2);
-    for (unsigned int side = 0; side < n_sides; ++side)
+    for (unsigned int side = 0; side < clamped.size(); ++side)
       if (clamped[side])
         {
           VectorTools::interpolate_boundary_values(
@@ -276,8 +276,8 @@ namespace bilayer
 
 
   void
-  ElasticSubproblem::assemble(const PerSide<bool>                &clamped,
-                              const PerSide<const Function<2> *> &traction)
+  ElasticSubproblem::assemble(const std::vector<bool>                &clamped,
+                              const std::vector<const Function<2> *> &traction)
   {
     CellSystem system(*fe_system, mapping(), material_, clamped, traction);
     for (const auto &cell : dofs.active_cell_iterators())
@@ -372,8 +372,9 @@ namespace bilayer
                                           distribution.group_communicator(),
                                           shared_solver,
                                           shared.get());
-    const PerSide<bool>                no_loads{{true, true, true, true}};
-    const PerSide<const Function<2> *> none{};
+    // No boundary part: no tractions.
+    const std::vector<bool>                no_loads;
+    const std::vector<const Function<2> *> none;
     CellSystem system_of_cell(*fe_system, mapping(), material_, no_loads, none);
     for (const auto &cell : dofs.active_cell_iterators())
       if (system->assembles(cell->active_cell_index()))

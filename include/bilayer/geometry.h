@@ -4,19 +4,24 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
+#include <bilayer/gmsh_mesh.h>
 #include <bilayer/interface_curve.h>
 #include <bilayer/parameters.h>
 
 #include <array>
+#include <map>
+#include <memory>
 #include <vector>
 
 namespace bilayer
 {
   /**
-   * Boundary ids of the subdomain meshes. The outer sides keep their own
-   * ids (so that each side can carry its own traction); which of them form
-   * Gamma_D is GeometryParameters::clamped. Sigma is split into the glued
-   * part Sigma \ gamma_c and the crack gamma_c.
+   * Boundary ids of the subdomain meshes. The outer boundary parts keep
+   * their own ids (so that each can carry its own traction): the
+   * rectangle's sides 0-3, a Gmsh scene's named curves 0, 1, ... in the
+   * order of BoundaryParts, its unnamed boundary curves `free` (traction
+   * free). Which parts form Gamma_D is GeometryParameters::clamped. Sigma is
+   * split into the glued part Sigma \ gamma_c and the crack gamma_c.
    */
   namespace BoundaryIds
   {
@@ -24,8 +29,10 @@ namespace bilayer
     constexpr dealii::types::boundary_id right  = 1;
     constexpr dealii::types::boundary_id bottom = 2;
     constexpr dealii::types::boundary_id top    = 3;
-    constexpr dealii::types::boundary_id glued  = 4;
-    constexpr dealii::types::boundary_id crack  = 5;
+    /// Boundary part i of a Gmsh scene has id i (< free).
+    constexpr dealii::types::boundary_id free  = 199;
+    constexpr dealii::types::boundary_id glued = 200;
+    constexpr dealii::types::boundary_id crack = 201;
 
     inline dealii::types::boundary_id
     of(const Side side)
@@ -126,10 +133,25 @@ namespace bilayer
     void
     assign_boundary_ids(dealii::Triangulation<2> &tria) const;
 
+    /// Read the Gmsh scene (once), check it and build Sigma's curve.
+    void
+    load_gmsh();
+
+    /// The mesh of @p subdomain from the Gmsh scene: cells of the physical
+    /// surface, boundary ids from the physical curves, polar manifolds on
+    /// the circular arcs.
+    void
+    make_gmsh_subdomain(const Subdomain           subdomain,
+                        dealii::Triangulation<2> &tria) const;
+
     const GeometryParameters                geometry;
     const MeshParameters                    mesh;
     std::array<dealii::Triangulation<2>, 2> triangulations;
     InterfaceCurve                          curve;
+    /// The Gmsh scene (null for the rectangle and mesh files).
+    std::shared_ptr<const GmshMesh> gmsh;
+    /// Centres of the circular Gmsh curves, by entity tag.
+    std::map<int, dealii::Point<2>> arc_centres;
   };
 } // namespace bilayer
 

@@ -124,8 +124,50 @@ namespace bilayer
     checks
   };
 
+  /**
+   * The named parts of the outer boundary: the rectangle's four sides, or
+   * the physical curves of a Gmsh scene other than Sigma and crack. Part i
+   * has boundary id i in both subdomain meshes.
+   */
+  struct BoundaryParts
+  {
+    std::vector<std::string> names = {"left", "right", "bottom", "top"};
+    /// Whether the parts come from a Gmsh file (entries "Traction on NAME")
+    /// or are the rectangle's sides ("Traction on NAME side").
+    bool gmsh = false;
+
+    unsigned int
+    size() const
+    {
+      return names.size();
+    }
+
+    /// The Loads entry of part @p i.
+    std::string
+    traction_entry(const unsigned int i) const
+    {
+      return "Traction on " + names[i] + (gmsh ? "" : " side");
+    }
+
+    /// The parts of a Gmsh scene (the file's boundary curve names).
+    static BoundaryParts
+    of_gmsh(const std::vector<std::string> &names)
+    {
+      return {names, true};
+    }
+  };
+
   struct GeometryParameters
   {
+    /**
+     * A Gmsh geometry (.geo) or mesh (.msh, format 2) of the specimen, its
+     * physical groups naming the subdomains, Sigma, the crack and the
+     * boundary parts (docs/geometry.md); empty: the rectangle below.
+     * Relative paths are relative to the parameter file.
+     */
+    std::string   gmsh_file;
+    BoundaryParts parts;
+
     double x_min        = -1.0;
     double x_max        = 1.0;
     double y_min        = -1.0;
@@ -134,14 +176,17 @@ namespace bilayer
     double crack_start  = -0.5;
     double crack_end    = 0.5;
 
-    /// clamped[side] is true if the side belongs to Gamma_D.
-    PerSide<bool> clamped = {{true, true, false, false}};
+    /// clamped[i] is true if boundary part i belongs to Gamma_D.
+    std::vector<bool> clamped = {true, true, false, false};
 
     static void
-    declare_parameters(dealii::ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const BoundaryParts      &parts = BoundaryParts());
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const BoundaryParts      &parts = BoundaryParts());
 
+    /// The rectangle's crack is not empty (Gmsh scenes: see the file).
     bool
     has_crack() const
     {
@@ -213,6 +258,8 @@ namespace bilayer
      * refine the last meshes uniformly.
      */
     std::vector<std::string> mesh_files;
+    /// Mesh size factor of Gmsh scenes (gmsh -clscale).
+    double gmsh_size_factor = 1;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -270,8 +317,10 @@ namespace bilayer
   struct LoadParameters
   {
     std::string constants = "";
-    /// traction[layer][side], "f_x; f_y"
-    std::array<PerSide<std::string>, Layout::n_layers> traction;
+    /// The boundary parts the tractions refer to.
+    BoundaryParts parts;
+    /// traction[layer][part], "f_x; f_y"
+    std::array<std::vector<std::string>, Layout::n_layers> traction;
     /// prescribed[layer], "u_x; u_y", on the clamped sides
     std::array<std::string, 2> prescribed = {{"0; 0", "0; 0"}};
 
@@ -281,18 +330,20 @@ namespace bilayer
     LoadParameters();
 
     static void
-    declare_parameters(dealii::ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const BoundaryParts      &parts = BoundaryParts());
     void
     parse_parameters(dealii::ParameterHandler &prm,
-                     const MaterialParameters &materials);
+                     const MaterialParameters &materials,
+                     const BoundaryParts      &parts);
 
     std::unique_ptr<dealii::FunctionParser<2>>
-    traction_function(const Layer layer, const Side side) const;
+    traction_function(const Layer layer, const unsigned int part) const;
     std::unique_ptr<dealii::FunctionParser<2>>
     prescribed_function(const Layer layer) const;
-    /// Whether the traction expression of a side is identically "0; 0".
+    /// Whether the traction expression of a part is identically "0; 0".
     bool
-    traction_is_zero(const Layer layer, const Side side) const;
+    traction_is_zero(const Layer layer, const unsigned int part) const;
   };
 
   struct ContactParameters
@@ -391,10 +442,14 @@ namespace bilayer
     /// The parameter file and the files it includes (not the mesh files).
     std::vector<std::string> input_files;
 
+    /// Declare every entry; a Gmsh scene's boundary @p parts give the
+    /// entries of the Loads section.
     static void
-    declare_parameters(dealii::ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const BoundaryParts      &parts = BoundaryParts());
     void
-    parse_parameters(dealii::ParameterHandler &prm);
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const BoundaryParts      &parts = BoundaryParts());
   };
 
   /**

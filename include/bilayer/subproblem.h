@@ -63,9 +63,9 @@ namespace bilayer
      * that are not clamped; @p prescribed on the clamped ones.
      */
     void
-    setup(const PerSide<bool>                        &clamped,
+    setup(const std::vector<bool>                        &clamped,
           const dealii::Function<2>                  &prescribed,
-          const PerSide<const dealii::Function<2> *> &traction,
+          const std::vector<const dealii::Function<2> *> &traction,
           const std::string &shared_solver = "Amesos_Mumps");
 
     /// Whether a group of processes shares it (DistributedSystem).
@@ -204,8 +204,8 @@ namespace bilayer
 
   private:
     void
-    assemble(const PerSide<bool>                        &clamped,
-             const PerSide<const dealii::Function<2> *> &traction);
+    assemble(const std::vector<bool>                        &clamped,
+             const std::vector<const dealii::Function<2> *> &traction);
 
     const Layer                        layer_;
     const Subdomain                    subdomain_;
