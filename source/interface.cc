@@ -65,10 +65,10 @@ namespace bilayer
             for (unsigned int i = 0; i <= space_.degree(b); ++i)
               {
                 // The multiplier's components in its node's frame.
-                const unsigned int r = space_.row(space_.node(e, i, b), b);
-                const double       s_r = space_.node_position(r, b);
+                const unsigned int  r = space_.row(space_.node(e, i, b), b);
+                const Tensor<1, 2> &n = space_.node_normal(r, b);
                 const std::array<Tensor<1, 2>, 2> frame = {
-                  {curve_.tangent(s_r), curve_.normal(s_r)}};
+                  {Tensor<1, 2>({n[1], -n[0]}), n}};
                 for (unsigned int k = 0; k < Layout::n_components; ++k)
                   {
                     const double m = (j == 0 ? -1. : 1.) * values[i] *

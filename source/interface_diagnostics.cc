@@ -279,7 +279,7 @@ namespace bilayer
                            y  = Layout::entry(a, Layout::normal);
         const double position = space.node_position(a, Layout::across_sigma);
         const Point<2>     point  = interface.curve().point(position);
-        const Tensor<1, 2> normal = interface.curve().normal(position);
+        const Tensor<1, 2> &normal = space.node_normal(a);
         out << point[0] << ',' << (space.on_crack(a) ? 1 : 0) << ','
             << t[u_plus](y) - t[u_minus](y) << ','
             << t[u_plus](x) - t[u_minus](x) << ','

@@ -107,20 +107,36 @@ namespace bilayer
           n_segments > 0 ? n_segments * mesh.degree + 1 : 0;
         mesh.node_x.assign(n, 0.);
         mesh.node_weight.assign(n, 0.);
+        mesh.normal.assign(n, Tensor<1, 2>());
         for (unsigned int e = 0; e < n_segments; ++e)
           {
             const double h = mesh.breakpoints[e + 1] - mesh.breakpoints[e];
+            // The segment's chord turned by +90 degrees: its normal times
+            // its length.
+            const Tensor<1, 2> chord = curve.point(mesh.breakpoints[e + 1]) -
+                                       curve.point(mesh.breakpoints[e]);
+            const Tensor<1, 2> chord_normal({-chord[1], chord[0]});
             for (unsigned int i = 0; i <= mesh.degree; ++i)
               {
                 const unsigned int a = node(e, i, b);
                 mesh.node_x[a]       = mesh.breakpoints[e] +
                                  mesh.fe->get_unit_support_points()[i][0] * h;
+                double integral = 0;
                 for (unsigned int q = 0; q < lobatto.size(); ++q)
-                  mesh.node_weight[a] +=
-                    mesh.fe->shape_value(i, lobatto.point(q)) *
-                    lobatto.weight(q) * h;
+                  {
+                    const double phi_w =
+                      mesh.fe->shape_value(i, lobatto.point(q)) *
+                      lobatto.weight(q);
+                    mesh.node_weight[a] += phi_w * h;
+                    integral += phi_w;
+                  }
+                mesh.normal[a] += integral * chord_normal;
               }
           }
+        // Weighted nodal normals: int phi_a nu_h ds over the chords of the
+        // multiplier mesh, normalised.
+        for (auto &normal : mesh.normal)
+          normal /= normal.norm();
         mesh.node_mass = mesh.node_weight;
         mesh.row.resize(n);
         for (unsigned int a = 0; a < n; ++a)

@@ -1051,7 +1051,9 @@ namespace bilayer
                     ExcMessage("Loads/Layer " +
                                std::to_string(static_cast<int>(layer) + 1) +
                                "/" + parts.traction_entry(i) +
-                               " must be '0; 0': " + parts.names[i] +
+                               " must be '0; 0': " +
+                               (parts.gmsh ? parts.names[i] :
+                                             "the " + parts.names[i] + " side") +
                                " is clamped (Geometry/Clamped sides)"));
     // Gmsh scenes: the loads are checked where they act, on the assembled
     // loads (ElasticSubproblem).

@@ -101,12 +101,12 @@ namespace bilayer
         points.emplace_back(a, space.node_position(a, b), 1.0);
       return points;
     };
-    // Each multiplier node's frame is that of its own position.
+    // Each multiplier node's frame is that of its own normal.
     const auto node_frames = [&](const unsigned int b) {
-      std::vector<double> at;
+      std::vector<Tensor<1, 2>> normals;
       for (unsigned int a = 0; a < space.n_nodes(b); ++a)
-        at.push_back(space.node_position(a, b));
-      return at;
+        normals.push_back(space.node_normal(a, b));
+      return normals;
     };
 
     std::vector<double> values;
@@ -171,7 +171,13 @@ namespace bilayer
       at_gauss.emplace_back(q, gauss_x[q], 1.0);
     for (const unsigned int s : Layout::subproblems)
       if (present(s))
-        build_point_matrix(s, at_gauss, gauss_x, gauss_traces[s]);
+      {
+        // The Gauss points' frames: the curve's normal there.
+        std::vector<Tensor<1, 2>> normals;
+        for (const double x : gauss_x)
+          normals.push_back(curve->normal(x));
+        build_point_matrix(s, at_gauss, normals, gauss_traces[s]);
+      }
   }
 
 
@@ -179,13 +185,14 @@ namespace bilayer
   TraceCoupling::build_point_matrix(
     const unsigned int                                           s,
     const std::vector<std::tuple<unsigned int, double, double>> &points,
-    const std::vector<double>                                   &frame_at,
+    const std::vector<Tensor<1, 2>>                             &normals,
     PointMatrix                                                 &result) const
   {
-    const unsigned int n_rows = frame_at.size();
+    const unsigned int n_rows = normals.size();
     std::vector<std::array<Tensor<1, 2>, 2>> frames(n_rows);
     for (unsigned int r = 0; r < n_rows; ++r)
-      frames[r] = {{curve->tangent(frame_at[r]), curve->normal(frame_at[r])}};
+      frames[r] = {{Tensor<1, 2>({normals[r][1], -normals[r][0]}),
+                    normals[r]}};
     const ElasticSubproblem &sub = *subproblems[s];
     const auto              &fe  = sub.fe();
     const auto &sfaces = faces[static_cast<unsigned int>(Layout::subdomain(s))];

@@ -172,8 +172,7 @@ end
          {bilayer::Layer::first, bilayer::Layer::second})
       for (unsigned int side = 0; side < 4; ++side)
         traction[static_cast<unsigned int>(layer)][side] =
-          scene.loads.traction_function(layer,
-                                        static_cast<bilayer::Side>(side));
+          scene.loads.traction_function(layer, side);
 
     const QGauss<2>    quadrature(2);
     const QGauss<1>    face_quadrature(2);

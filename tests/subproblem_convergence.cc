@@ -36,9 +36,11 @@ main()
                           "2*mu*exp(x)*cos(y); -2*mu*exp(x)*sin(y)",
                           constants);
   const Functions::ZeroFunction<2>         zero(2);
-  const std::array<const Function<2> *, 4> traction = {
-    {&zero, &zero, &zero, &top_traction}};
-  const std::array<bool, 4> clamped = {{true, true, true, false}};
+  const std::vector<const Function<2> *> traction = {&zero,
+                                                     &zero,
+                                                     &zero,
+                                                     &top_traction};
+  const std::vector<bool> clamped = {true, true, true, false};
 
   for (const bool simplex : {false, true})
     for (const unsigned int degree : {1u, 2u})

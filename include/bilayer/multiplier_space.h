@@ -190,6 +190,23 @@ namespace bilayer
       return meshes[b].node_x[a];
     }
 
+    /**
+     * The unit normal of node @p a of block @p b, the normal of the frame
+     * (tangent, normal) in which the node's multiplier components are
+     * taken: int_Sigma phi_a nu_h ds over the chords of the block's mesh
+     * (nu_h the chord normals, pointing into Omega+), normalised. On a
+     * straight piece it is the piece's normal; at a corner, or on an arc,
+     * the mean of the two neighbouring chords' normals weighted by the
+     * integrals of phi_a, so that a uniform pressure on the discrete
+     * (chordal) trace is transmitted exactly.
+     */
+    const dealii::Tensor<1, 2> &
+    node_normal(const unsigned int a,
+                const unsigned int b = Layout::across_sigma) const
+    {
+      return meshes[b].normal[a];
+    }
+
     /// The lumped mass D of node @p a of block @p b (with the masses of the
     /// end nodes merged into it, see row()).
     double
@@ -342,6 +359,8 @@ namespace bilayer
     struct Mesh
     {
       std::vector<double>       breakpoints, node_x, node_weight, node_mass;
+      /// Unit normal of each node (weighted nodal normal).
+      std::vector<dealii::Tensor<1, 2>> normal;
       std::vector<unsigned int> row;
       std::array<bool, 2>       nodal  = {{true, true}};
       unsigned int              degree = 1;
