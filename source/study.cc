@@ -286,6 +286,11 @@ namespace bilayer
                 "triangles")
           << ", P = " << record.P << ", M = " << record.M << ", " << record.dofs
           << " dofs, " << record.multipliers << " multipliers" << std::endl;
+    if (!scene.geometry.gmsh_file.empty() && record.cycle == 0)
+      pcout << "  Sigma from " << scene.geometry.gmsh_file << ": "
+            << domain.interface_curve().description() << ", "
+            << domain.interface_curve().crack().pieces().size()
+            << " crack piece(s)" << std::endl;
 
     Timer               solve_timer;
     const unsigned long shared_before  = distribution.shared_values();
@@ -500,11 +505,20 @@ namespace bilayer
             a_max = a;
         if (a_max >= 0)
           {
+            // The position: s = x on the rectangle, else s and the point.
+            const double       s_max = coupling.space().node_position(a_max);
             std::ostringstream x;
-            x << std::setprecision(6) << coupling.space().node_position(a_max);
+            x << std::setprecision(6);
+            if (scene.geometry.gmsh_file.empty())
+              x << "x = " << s_max;
+            else
+              {
+                const Point<2> p = coupling.curve().point(s_max);
+                x << "s = " << s_max << ", (x, y) = (" << p[0] << ", " << p[1]
+                  << ")";
+              }
             rout << "cycle " << record.cycle << ": largest crack opening "
-                 << scaled(opening[a_max]) << " at x = " << x.str()
-                 << std::endl;
+                 << scaled(opening[a_max]) << " at " << x.str() << std::endl;
           }
       }
     if (!record.accepted())

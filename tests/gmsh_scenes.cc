@@ -25,6 +25,12 @@
 // keeps its chord, a geometric gap h^2 / (8 R): the error is of that order
 // and falls by about 4 when the cells along Sigma are halved again.
 //
+// The three outer solvers on the curved scene (Q2 on layer 1, Q1 on layer
+// 2: non-matching multiplier degrees on the arc): the active set, the
+// accelerated method and the paper's Uzawa with theta = auto reach the same
+// solution: energies to 1e-8 and the contact multipliers to 1e-6 of their
+// largest value (at KKT tolerance 1e-10).
+//
 // Two cracks (parameter_files/two_cracks.prm, Example 1's load on a strip
 // with crack pieces (-1.5, -0.5) and (0.5, 1.5)): every acceptance check
 // passes (mu_c >= 0, no interpenetration, complementarity), the right piece
@@ -237,6 +243,60 @@ namespace
   }
 
   void
+  solvers_agree()
+  {
+    const std::string scene =
+      "subsection Geometry\n set Gmsh file = " + files +
+      "curved_interface.geo\n set Clamped sides = left, right\nend\n"
+      "subsection Mesh\n set Polynomial degree of layer 1 = 2\nend\n"
+      "subsection Loads\n set Constants = q = 1e-3*mu1\n"
+      " subsection Layer 1\n"
+      "  set Traction on inner = q*x*x/sqrt(x*x + y*y); q*x*y/sqrt(x*x + y*y)\n"
+      "  set Traction on outer = -q*x*x/sqrt(x*x + y*y); "
+      "-q*x*y/sqrt(x*x + y*y)\n end\nend\n"
+      "subsection Output\n set Output directory = results\n"
+      " set Write VTU = false\n set Write interface CSV = false\n"
+      " set Terminal output = checks\nend\n";
+    std::vector<Result> results;
+    for (const std::string method : {"active set", "accelerated", "uzawa"})
+      {
+        Study study(scene_from_string(
+                      scene + "subsection Solver\n set Method = " + method +
+                        "\n set Stopping rule = kkt\n set Tolerance = 1e-10\n"
+                        " set Uzawa step theta = auto\n"
+                        " set Maximum iterations = 200000\nend\n",
+                      "solvers"),
+                    quiet);
+        const CycleRecord &record = study.run_cycle(0);
+        Result r{record.energy, {}, {}, {}, record.accepted()};
+        const auto &space = study.interface().space();
+        for (unsigned int a = 0; a < space.n_nodes(Layout::across_sigma); ++a)
+          r.mu_c.push_back(space.on_crack(a) ?
+                             space.contact_multiplier(study.multipliers(), a) :
+                             0.);
+        results.push_back(r);
+      }
+    bool energies = true, multipliers = true, accepted = true;
+    for (const auto &r : results)
+      {
+        accepted = accepted && r.accepted;
+        energies = energies && std::abs(r.energy - results[0].energy) <=
+                                 1e-8 * std::abs(results[0].energy);
+        for (unsigned int a = 0; a < r.mu_c.size(); ++a)
+          multipliers =
+            multipliers && std::abs(r.mu_c[a] - results[0].mu_c[a]) <=
+                             1e-6 * max_abs(results[0].mu_c);
+      }
+    std::cout << "curved interface, Q2/Q1: active set, accelerated and "
+                 "Uzawa (theta = auto) accepted: "
+              << (accepted ? "yes" : "NO")
+              << "; energies agree to 1e-8: " << (energies ? "yes" : "NO")
+              << "; contact multipliers agree to 1e-6: "
+              << (multipliers && max_abs(results[0].mu_c) > 0 ? "yes" : "NO")
+              << std::endl;
+  }
+
+  void
   two_cracks()
   {
     const auto scene = [](const std::string &sign) {
@@ -315,5 +375,6 @@ main()
             << (arc[2] * 3 <= arc[1] ? "yes" : "NO")
             << "; vertices of Sigma on the circle after refinement: "
             << (drift < 1e-12 ? "yes" : "NO") << std::endl;
+  solvers_agree();
   two_cracks();
 }
