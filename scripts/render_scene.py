@@ -22,7 +22,7 @@ magnification = 0.08 * size / umax if umax > 0 else 1.0
 shift = 1.2 * width
 
 view = CreateView("RenderView")
-view.ViewSize = [1400, int(1400 * max(height, 0.3 * width) / (2.2 * width)) + 200]
+view.ViewSize = [1400, 8 * ((int(1400 * max(height, 0.3 * width) / (2.2 * width)) + 200) // 8)]
 view.OrientationAxesVisibility = 0
 view.Background = [1, 1, 1]
 try:
@@ -67,6 +67,7 @@ cdisplay.Color = [0, 0, 0]
 cdisplay.FontSize = 20
 view.InteractionMode = "2D"
 view.CameraParallelProjection = 1
+Render(view)  # the first render resets the camera; place it after that
 cx = bounds[0] + 0.5 * (width + shift)
 cy = bounds[2] + 0.5 * height
 view.CameraPosition = [cx, cy, 10 * size]

@@ -153,8 +153,9 @@ namespace bilayer
       result.iteration_seconds = timer.wall_time();
       return result;
     };
-    BlockVector<double> g, mask(lower), previous_mask(lower), r, delta;
-    unsigned int        inner_iterations = 0;
+    BlockVector<double> g, mask(lower), previous_mask(lower), older_mask(lower),
+      r, delta;
+    unsigned int inner_iterations = 0, n_cycling = 0;
     interface.space().project(mu);
 
     for (unsigned int k = 0;; ++k)
@@ -167,6 +168,7 @@ namespace bilayer
         result.stopping_value = kkt.value();
 
         // The active set at mu: components held at a bound.
+        older_mask = previous_mask;
         previous_mask.swap(mask);
         unsigned int n_active = 0, n_changed = 0;
         for (unsigned int i = 0; i < mu.size(); ++i)
@@ -180,6 +182,14 @@ namespace bilayer
             n_changed += (mask(i) != previous_mask(i));
           }
         const bool settled = k > 0 && n_changed == 0;
+        // Cycling: the active set of two steps ago again (the inexact
+        // steps of a changing set can alternate between two sets): the
+        // next steps are solved as if the set had settled, and from the
+        // third such return on they are halved (damped).
+        bool cycling = k > 1 && n_changed > 0;
+        for (unsigned int i = 0; cycling && i < mask.size(); ++i)
+          cycling = mask(i) == older_mask(i);
+        n_cycling += cycling;
 
         if (output.progress_interval > 0)
           pcout << "    Newton step " << std::setw(3) << k << "  KKT residual "
@@ -230,11 +240,12 @@ namespace bilayer
         r = g;
         interface.space().scale_by_weights(r);
         r.scale(mask);
-        const double scale = displacement_scale(interface, w);
-        const double start = largest_jump(interface, r);
-        const double target =
-          std::max(settled ? 0. : parameters.inner_tolerance * start,
-                   0.1 * parameters.tolerance * scale);
+        const double scale  = displacement_scale(interface, w);
+        const double start  = largest_jump(interface, r);
+        const double target = std::max(settled || n_cycling > 0 ?
+                                         0. :
+                                         parameters.inner_tolerance * start,
+                                       0.1 * parameters.tolerance * scale);
         const ConjugateGradientOutcome cg =
           conjugate_gradients_on_free_set(subproblems,
                                           interface,
@@ -258,7 +269,7 @@ namespace bilayer
             return finish(msg.str());
           }
         result.linear_iterations += inner_iterations;
-        mu += delta;
+        mu.add(cycling && n_cycling > 2 ? 0.5 : 1., delta);
         interface.space().project(mu);
       }
   }

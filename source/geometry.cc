@@ -496,9 +496,9 @@ namespace bilayer
       for (const auto &q : p)
         if (q.distance(a) > b.distance(a))
           b = q;
-      const double   ab = a.distance(b);
-      Point<2>       c  = a;
-      double         off = 0;
+      const double ab  = a.distance(b);
+      Point<2>     c   = a;
+      double       off = 0;
       for (const auto &q : p)
         {
           const Tensor<1, 2> d = q - a, e = (b - a) / ab;
@@ -512,16 +512,13 @@ namespace bilayer
       if (off <= 1e-8 * ab)
         return std::nullopt;
       // Circumcentre of a, b, c.
-      const double d = 2 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) +
+      const double d  = 2 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) +
                             c[0] * (a[1] - b[1]));
       const double a2 = a.norm_square(), b2 = b.norm_square(),
                    c2 = c.norm_square();
-      const Point<2> centre((a2 * (b[1] - c[1]) + b2 * (c[1] - a[1]) +
-                             c2 * (a[1] - b[1])) /
-                              d,
-                            (a2 * (c[0] - b[0]) + b2 * (a[0] - c[0]) +
-                             c2 * (b[0] - a[0])) /
-                              d);
+      const Point<2> centre(
+        (a2 * (b[1] - c[1]) + b2 * (c[1] - a[1]) + c2 * (a[1] - b[1])) / d,
+        (a2 * (c[0] - b[0]) + b2 * (a[0] - c[0]) + c2 * (b[0] - a[0])) / d);
       const double radius = centre.distance(a);
       for (const auto &q : p)
         if (std::abs(centre.distance(q) - radius) > 1e-8 * radius)
@@ -576,15 +573,16 @@ namespace bilayer
         const std::string name = s == Subdomain::minus ? "Omega-" : "Omega+";
         surface[static_cast<unsigned int>(s)] = g.physical_tag(2, name);
         AssertThrow(surface[static_cast<unsigned int>(s)] >= 0,
-                    ExcMessage(where + ": no physical surface named '" +
-                               name + "' (the subdomain " +
+                    ExcMessage(where + ": no physical surface named '" + name +
+                               "' (the subdomain " +
                                (s == Subdomain::minus ? "below" : "above") +
                                " Sigma)"));
       }
-    const int sigma = g.physical_tag(1, "Sigma"), crack = g.physical_tag(1, "crack");
+    const int sigma = g.physical_tag(1, "Sigma"),
+              crack = g.physical_tag(1, "crack");
     AssertThrow(sigma >= 0 || crack >= 0,
                 ExcMessage(where + ": no physical curve named 'Sigma' (the "
-                           "glued part of the interface) or 'crack'"));
+                                   "glued part of the interface) or 'crack'"));
     for (const auto &[tag, name] : g.curve_names)
       AssertThrow(name == "Sigma" || name == "crack" ||
                     std::find(geometry.parts.names.begin(),
@@ -597,20 +595,21 @@ namespace bilayer
     // Sigma and the crack are the edges the two surfaces share, and
     // nothing else is shared; every other edge of a surface belongs to one
     // cell or two.
-    const auto minus = cell_edges(g, surface[0]), plus = cell_edges(g, surface[1]);
-    for (const auto &[name, edges] : {std::make_pair("Omega-", &minus),
-                                      std::make_pair("Omega+", &plus)})
+    const auto minus = cell_edges(g, surface[0]),
+               plus  = cell_edges(g, surface[1]);
+    for (const auto &[name, edges] :
+         {std::make_pair("Omega-", &minus), std::make_pair("Omega+", &plus)})
       {
         AssertThrow(!edges->empty(),
                     ExcMessage(where + ": the physical surface '" + name +
                                "' has no triangles or quadrilaterals"));
         for (const auto &[e, n] : *edges)
           AssertThrow(n <= 2,
-                      ExcMessage(where + ": more than two cells of '" + name +
-                                 "' share the edge at " +
-                                 at(0.5 * (g.nodes[e.first] +
-                                           g.nodes[e.second])) +
-                                 " (overlapping cells)"));
+                      ExcMessage(
+                        where + ": more than two cells of '" + name +
+                        "' share the edge at " +
+                        at(0.5 * (g.nodes[e.first] + g.nodes[e.second])) +
+                        " (overlapping cells)"));
       }
     std::map<Edge, const GmshMesh::Element *> on_sigma;
     for (const auto &e : g.elements)
@@ -621,15 +620,14 @@ namespace bilayer
         const auto m = minus.find(e), p = plus.find(e);
         AssertThrow(m != minus.end() && p != plus.end() && m->second == 1 &&
                       p->second == 1,
-                    ExcMessage(where + ": the '" +
-                               (element->physical == sigma ? "Sigma" :
-                                                             "crack") +
-                               "' edge at " +
-                               at(0.5 * (g.nodes[e.first] +
-                                         g.nodes[e.second])) +
-                               " is not a boundary edge of both Omega- and "
-                               "Omega+: Sigma must separate the two "
-                               "subdomains (curves shared by both surfaces)"));
+                    ExcMessage(
+                      where + ": the '" +
+                      (element->physical == sigma ? "Sigma" : "crack") +
+                      "' edge at " +
+                      at(0.5 * (g.nodes[e.first] + g.nodes[e.second])) +
+                      " is not a boundary edge of both Omega- and "
+                      "Omega+: Sigma must separate the two "
+                      "subdomains (curves shared by both surfaces)"));
       }
     for (const auto &[e, n] : minus)
       AssertThrow(plus.count(e) == 0 || on_sigma.count(e) == 1,
@@ -700,7 +698,8 @@ namespace bilayer
           ends.push_back(n);
       }
     AssertThrow(ends.size() == 2,
-                ExcMessage(where + ": Sigma and the crack must form one open "
+                ExcMessage(where +
+                           ": Sigma and the crack must form one open "
                            "curve from the outer boundary to the outer "
                            "boundary (found " +
                            std::to_string(ends.size()) + " ends)"));
@@ -721,7 +720,7 @@ namespace bilayer
       }
     AssertThrow(chain.size() == on_sigma.size(),
                 ExcMessage(where + ": Sigma and the crack must form one "
-                           "connected curve"));
+                                   "connected curve"));
 
     // Pieces: a circular curve one arc, a straight curve one segment, any
     // other curve one segment per edge (the polygon of its nodes).
@@ -731,7 +730,7 @@ namespace bilayer
         unsigned int j = i;
         while (j < chain.size() && chain[j]->entity == chain[i]->entity)
           ++j;
-        const int entity = chain[i]->entity;
+        const int             entity = chain[i]->entity;
         std::vector<Point<2>> points;
         for (unsigned int k = i; k <= j; ++k)
           points.push_back(g.nodes[nodes[k]]);
@@ -810,14 +809,14 @@ namespace bilayer
           if (geometry.clamped[part])
             for (unsigned int k = 0; k < 2; ++k)
               for (const unsigned int n : e.nodes)
-                clamped_end[k] =
-                  clamped_end[k] || n == (k == 0 ? nodes.front() : nodes.back());
+                clamped_end[k] = clamped_end[k] ||
+                                 n == (k == 0 ? nodes.front() : nodes.back());
         }
     curve.set_ends_on_gamma_d(clamped_end);
 
     // Orientation: the normal points out of Omega-.
     {
-      const auto  &first = *chain.front();
+      const auto    &first = *chain.front();
       const Point<2> mid =
         0.5 * (g.nodes[first.nodes[0]] + g.nodes[first.nodes[1]]);
       for (const auto &e : g.elements)
@@ -843,8 +842,9 @@ namespace bilayer
   {
     const GmshMesh   &g     = *gmsh;
     const std::string where = "Geometry/Gmsh file '" + geometry.gmsh_file + "'";
-    const std::string name  = subdomain == Subdomain::minus ? "Omega-" : "Omega+";
-    const int         tag   = g.physical_tag(2, name);
+    const std::string name =
+      subdomain == Subdomain::minus ? "Omega-" : "Omega+";
+    const int                            tag = g.physical_tag(2, name);
     std::map<unsigned int, unsigned int> vertex_of;
     std::vector<unsigned int>            node_of;
     std::vector<Point<2>>                vertices;
@@ -886,11 +886,11 @@ namespace bilayer
                            "deal.II 9.4 refines triangle meshes only "
                            "globally)"));
     AssertThrow((mesh.shape == ElementShape::triangle) == triangles,
-                ExcMessage("Mesh/Element shape = " +
-                           std::string(triangles ? "quadrilaterals" :
-                                                   "triangles") +
-                           ", but " + where + " has " +
-                           (triangles ? "triangles" : "quadrilaterals")));
+                ExcMessage(
+                  "Mesh/Element shape = " +
+                  std::string(triangles ? "quadrilaterals" : "triangles") +
+                  ", but " + where + " has " +
+                  (triangles ? "triangles" : "quadrilaterals")));
     // Degenerate cells are broken meshes; inverted ones are only
     // oriented the other way.
     for (const auto &cell : cells)
@@ -922,9 +922,9 @@ namespace bilayer
     catch (const ExceptionBase &e)
       {
         AssertThrow(false,
-                    ExcMessage(where + ": the cells of '" + name +
-                               "' do not form a valid mesh: " +
-                               one_line_message(e)));
+                    ExcMessage(
+                      where + ": the cells of '" + name +
+                      "' do not form a valid mesh: " + one_line_message(e)));
       }
 
     // Boundary ids and manifolds from the line elements.
@@ -932,7 +932,8 @@ namespace bilayer
     for (const auto &e : g.elements)
       if (e.type == 1)
         lines[edge(e.nodes[0], e.nodes[1])] = &e;
-    const int sigma = g.physical_tag(1, "Sigma"), crack = g.physical_tag(1, "crack");
+    const int sigma = g.physical_tag(1, "Sigma"),
+              crack = g.physical_tag(1, "crack");
     std::map<int, types::manifold_id> manifold_of;
     for (const auto &[entity, centre] : arc_centres)
       {
@@ -945,8 +946,8 @@ namespace bilayer
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
           {
-            const auto found = lines.find(
-              edge(node_of[face->vertex_index(0)], node_of[face->vertex_index(1)]));
+            const auto found = lines.find(edge(node_of[face->vertex_index(0)],
+                                               node_of[face->vertex_index(1)]));
             if (found == lines.end())
               {
                 face->set_boundary_id(BoundaryIds::free);
@@ -959,7 +960,7 @@ namespace bilayer
               face->set_boundary_id(BoundaryIds::crack);
             else if (g.curve_names.count(line.physical) > 0)
               {
-                const auto &names = geometry.parts.names;
+                const auto        &names = geometry.parts.names;
                 const unsigned int part =
                   std::find(names.begin(),
                             names.end(),

@@ -43,7 +43,7 @@ namespace bilayer
       std::map<long, unsigned int> node_index;
       std::string                  line;
       bool                         format_seen = false;
-      const auto fail = [&](const std::string &what) {
+      const auto                   fail        = [&](const std::string &what) {
         AssertThrow(false, ExcMessage(where(file) + ": " + what));
       };
       while (std::getline(in, line))
@@ -69,11 +69,10 @@ namespace bilayer
                   in >> dim >> tag;
                   std::string rest;
                   std::getline(in, rest);
-                  const auto a = rest.find('"'), b = rest.rfind('"');
-                  const std::string name =
-                    a != std::string::npos && b > a ?
-                      rest.substr(a + 1, b - a - 1) :
-                      Utilities::trim(rest);
+                  const auto        a = rest.find('"'), b = rest.rfind('"');
+                  const std::string name = a != std::string::npos && b > a ?
+                                             rest.substr(a + 1, b - a - 1) :
+                                             Utilities::trim(rest);
                   (dim == 1 ? mesh.curve_names : mesh.surface_names)[tag] =
                     name;
                 }
@@ -99,7 +98,7 @@ namespace bilayer
               in >> n;
               for (unsigned int i = 0; i < n && in; ++i)
                 {
-                  long         tag = 0;
+                  long         tag  = 0;
                   unsigned int type = 0, n_tags = 0;
                   in >> tag >> type >> n_tags;
                   std::vector<int> tags(n_tags);
@@ -166,8 +165,7 @@ namespace bilayer
     if (extension == ".msh")
       {
         std::ifstream in(file);
-        AssertThrow(in,
-                    ExcMessage(where(file) + ": " + std::strerror(errno)));
+        AssertThrow(in, ExcMessage(where(file) + ": " + std::strerror(errno)));
         return parse_msh(in, file);
       }
 
@@ -180,16 +178,16 @@ namespace bilayer
                 ExcMessage(where(file) +
                            ": cannot create a temporary directory: " +
                            std::strerror(errno)));
-    const fs::path    directory(buffer.data());
-    const std::string msh = (directory / "mesh.msh").string();
-    const std::string log = (directory / "gmsh.log").string();
+    const fs::path     directory(buffer.data());
+    const std::string  msh = (directory / "mesh.msh").string();
+    const std::string  log = (directory / "gmsh.log").string();
     std::ostringstream command;
     command.precision(17);
     command << "gmsh -2 -format msh2 -clscale " << size_factor << " -o "
             << quoted(msh) << " " << quoted(file) << " > " << quoted(log)
             << " 2>&1";
-    const int  status = std::system(command.str().c_str());
-    GmshMesh   mesh;
+    const int   status = std::system(command.str().c_str());
+    GmshMesh    mesh;
     std::string problem;
     if (status != 0 || !fs::is_regular_file(msh, error))
       {
@@ -203,11 +201,11 @@ namespace bilayer
               break;
             }
         if (problem.empty())
-          problem = WIFEXITED(status) && WEXITSTATUS(status) == 127 ?
-                      "the gmsh command is missing (Debian: apt-get install "
-                      "gmsh)" :
-                      "gmsh failed (exit status " + std::to_string(status) +
-                        ")";
+          problem =
+            WIFEXITED(status) && WEXITSTATUS(status) == 127 ?
+              "the gmsh command is missing (Debian: apt-get install "
+              "gmsh)" :
+              "gmsh failed (exit status " + std::to_string(status) + ")";
       }
     else
       try
@@ -248,9 +246,8 @@ namespace bilayer
         const std::regex  statement(
           R"(Physical\s+(Curve|Line)\s*\(\s*"([^"]*)\"\s*(,\s*(\d+))?)");
         int order = 1 << 20;
-        for (auto it = std::sregex_iterator(content.begin(),
-                                            content.end(),
-                                            statement);
+        for (auto it =
+               std::sregex_iterator(content.begin(), content.end(), statement);
              it != std::sregex_iterator();
              ++it)
           {

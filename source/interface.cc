@@ -13,8 +13,8 @@ namespace bilayer
   Interface::setup(const PerSubproblem<const ElasticSubproblem *> &subs,
                    const InterfaceCurve                           &curve)
   {
-    curve_             = curve;
-    const double   tol = curve.tolerance();
+    curve_                = curve;
+    const double   tol    = curve.tolerance();
     const auto    &traces = coupling_.locate_traces(subs, curve_);
     PerBlock<bool> active;
     for (const unsigned int b : Layout::blocks)
@@ -23,8 +23,7 @@ namespace bilayer
     const unsigned int degree_first = subs[Layout::u_minus]->fe().degree;
     const unsigned int degree_second =
       subs[Layout::v_minus] ? subs[Layout::v_minus]->fe().degree : degree_first;
-    space_.reinit(
-      curve_, contact, traces, degree_first, degree_second, active);
+    space_.reinit(curve_, contact, traces, degree_first, degree_second, active);
     coupling_.reinit(space_, contact.coupling, tol);
   }
 

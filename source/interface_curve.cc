@@ -37,16 +37,15 @@ namespace bilayer
     {
       if (piece.kind == InterfaceCurve::Piece::Kind::segment)
         {
-          const double s =
-            std::clamp(p * piece.tau + piece.offset,
-                       piece.s0,
-                       piece.s0 + piece.length);
+          const double   s = std::clamp(p * piece.tau + piece.offset,
+                                      piece.s0,
+                                      piece.s0 + piece.length);
           const Point<2> q = piece.a + (s - piece.s0) * piece.tau;
           return {s, p.distance(q)};
         }
-      const double sign  = arc_sign(piece);
-      const double phi   = std::atan2(p[1] - piece.centre[1],
-                                    p[0] - piece.centre[0]);
+      const double sign = arc_sign(piece);
+      const double phi =
+        std::atan2(p[1] - piece.centre[1], p[0] - piece.centre[0]);
       const double d     = angle_from(phi, piece.phi0, sign);
       const double range = std::abs(piece.phi1 - piece.phi0);
       if (d <= range)
@@ -87,8 +86,7 @@ namespace bilayer
         s += piece.length;
       }
     for (unsigned int i = 1; i < pieces_.size(); ++i)
-      AssertThrow(pieces_[i - 1].b.distance(pieces_[i].a) <=
-                    1e-8 * (s - start),
+      AssertThrow(pieces_[i - 1].b.distance(pieces_[i].a) <= 1e-8 * (s - start),
                   ExcMessage("the pieces of Sigma do not form a chain"));
   }
 
@@ -97,8 +95,8 @@ namespace bilayer
   InterfaceCurve::segment(const Point<2> &a, const Point<2> &b)
   {
     Piece piece;
-    piece.a = a;
-    piece.b = b;
+    piece.a             = a;
+    piece.b             = b;
     const double length = a.distance(b);
     AssertThrow(length > 0, ExcMessage("Sigma has zero length"));
     const Tensor<1, 2> tau = (b - a) / length;
@@ -178,8 +176,7 @@ namespace bilayer
     const double tol = tolerance();
     if (i > 0 && std::abs(s - pieces_[i].s0) <= tol)
       n += piece_normal(pieces_[i - 1], s);
-    else if (i + 1 < pieces_.size() &&
-             std::abs(s - pieces_[i + 1].s0) <= tol)
+    else if (i + 1 < pieces_.size() && std::abs(s - pieces_[i + 1].s0) <= tol)
       n += piece_normal(pieces_[i + 1], s);
     else
       return n;
@@ -203,10 +200,10 @@ namespace bilayer
     // The crack pieces in the new parameter.
     std::vector<CrackSet::Piece> cracks;
     for (const auto &c : crack_.pieces())
-      cracks.push_back({start + (start + length - c.end),
-                        start + (start + length - c.start)});
+      cracks.push_back(
+        {start + (start + length - c.end), start + (start + length - c.start)});
     std::reverse(cracks.begin(), cracks.end());
-    *this = InterfaceCurve(reversed, start);
+    *this  = InterfaceCurve(reversed, start);
     crack_ = CrackSet(cracks, tolerance());
     std::swap(ends_on_gamma_d[0], ends_on_gamma_d[1]);
   }

@@ -147,9 +147,9 @@ namespace bilayer
         coupling.trace_at_gauss_points(source, w[source], t[s]);
       }
     const CrackSet &crack = interface.curve().crack();
-    const auto    &x     = coupling.gauss_points();
-    const auto    &wq    = coupling.gauss_weights();
-    double         size  = 0;
+    const auto     &x     = coupling.gauss_points();
+    const auto     &wq    = coupling.gauss_weights();
+    double          size  = 0;
     for (unsigned int q = 0; q < x.size(); ++q)
       {
         const bool on_crack = crack.contains(x[q]);
@@ -275,10 +275,10 @@ namespace bilayer
     out << std::setprecision(12);
     for (unsigned int a = 0; a < space.n_nodes(Layout::across_sigma); ++a)
       {
-        const unsigned int x  = Layout::entry(a, Layout::tangential),
-                           y  = Layout::entry(a, Layout::normal);
-        const double position = space.node_position(a, Layout::across_sigma);
-        const Point<2>     point  = interface.curve().point(position);
+        const unsigned int x    = Layout::entry(a, Layout::tangential),
+                           y    = Layout::entry(a, Layout::normal);
+        const double   position = space.node_position(a, Layout::across_sigma);
+        const Point<2> point    = interface.curve().point(position);
         const Tensor<1, 2> &normal = space.node_normal(a);
         out << point[0] << ',' << (space.on_crack(a) ? 1 : 0) << ','
             << t[u_plus](y) - t[u_minus](y) << ','

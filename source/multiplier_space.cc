@@ -186,12 +186,10 @@ namespace bilayer
       }
 
     // Multiplier sets (paper.md §3) as bounds per component.
-    const double   p     = contact.multiplier_bound;
+    const double    p     = contact.multiplier_bound;
     const CrackSet &crack = curve.crack();
     // The ends of Sigma on Gamma_D.
-    const auto on_gamma_d = [&](const double s) {
-      return curve.on_gamma_d(s);
-    };
+    const auto on_gamma_d = [&](const double s) { return curve.on_gamma_d(s); };
     std::vector<types::global_dof_index> sizes;
     for (const auto &mesh : meshes)
       sizes.push_back(Layout::n_components * mesh.node_x.size());

@@ -11,8 +11,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -232,7 +232,7 @@ namespace bilayer
   {
     parts = boundary_parts;
     prm.enter_subsection("Geometry");
-    gmsh_file = Utilities::trim(prm.get("Gmsh file"));
+    gmsh_file        = Utilities::trim(prm.get("Gmsh file"));
     const auto lower = parse_pair(prm, "Geometry", "Lower left corner");
     const auto upper = parse_pair(prm, "Geometry", "Upper right corner");
     x_min            = lower[0];
@@ -1047,14 +1047,13 @@ namespace bilayer
                              "(Materials/Number of layers = 1)"));
     for (const Layer layer : {Layer::first, Layer::second})
       for (unsigned int i = 0; i < parts.size(); ++i)
-        AssertThrow(!geometry.clamped[i] || loads.traction_is_zero(layer, i),
-                    ExcMessage("Loads/Layer " +
-                               std::to_string(static_cast<int>(layer) + 1) +
-                               "/" + parts.traction_entry(i) +
-                               " must be '0; 0': " +
-                               (parts.gmsh ? parts.names[i] :
-                                             "the " + parts.names[i] + " side") +
-                               " is clamped (Geometry/Clamped sides)"));
+        AssertThrow(
+          !geometry.clamped[i] || loads.traction_is_zero(layer, i),
+          ExcMessage(
+            "Loads/Layer " + std::to_string(static_cast<int>(layer) + 1) + "/" +
+            parts.traction_entry(i) + " must be '0; 0': " +
+            (parts.gmsh ? parts.names[i] : "the " + parts.names[i] + " side") +
+            " is clamped (Geometry/Clamped sides)"));
     // Gmsh scenes: the loads are checked where they act, on the assembled
     // loads (ElasticSubproblem).
     if (parts.gmsh)

@@ -208,7 +208,7 @@ namespace bilayer
                Layout::n_layers>
       traction_owners;
     std::array<std::vector<const Function<2> *>, Layout::n_layers> traction;
-    Tasks                                                      setups;
+    Tasks                                                          setups;
     for (const Layer layer : {Layer::first, Layer::second})
       if (scene.materials.has_layer(layer))
         {
@@ -404,7 +404,8 @@ namespace bilayer
                                "constraints <= " +
                                  t.str(),
                                r.relative_discrete_violation <= tol);
-    if (scene.contact.non_penetration && !domain.interface_curve().crack().empty())
+    if (scene.contact.non_penetration &&
+        !domain.interface_curve().crack().empty())
       {
         record.checks.emplace_back("contact multiplier mu_c >= 0",
                                    r.min_contact_multiplier >= 0);

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -35,12 +36,22 @@ namespace bilayer
       fe_system = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 2);
     else
       fe_system = std::make_unique<FESystem<2>>(FE_SimplexP<2>(degree), 2);
+    // Curved manifolds (circular boundaries or Sigma of a Gmsh scene): an
+    // isoparametric mapping for elements of degree >= 2.
+    bool curved = false;
+    for (const types::manifold_id id : triangulation.get_manifold_ids())
+      curved = curved || id != numbers::flat_manifold_id;
+    if (curved && degree >= 2 &&
+        triangulation.all_reference_cells_are_hyper_cube())
+      curved_mapping = std::make_unique<MappingQ<2>>(degree);
   }
 
 
   const Mapping<2> &
   ElasticSubproblem::mapping() const
   {
+    if (curved_mapping)
+      return *curved_mapping;
     return fe_system->reference_cell().get_default_linear_mapping<2>();
   }
 
@@ -93,9 +104,9 @@ namespace bilayer
     class CellSystem
     {
     public:
-      CellSystem(const FiniteElement<2>             &fe,
-                 const Mapping<2>                   &mapping,
-                 const LayerMaterial                &material,
+      CellSystem(const FiniteElement<2>                 &fe,
+                 const Mapping<2>                       &mapping,
+                 const LayerMaterial                    &material,
                  const std::vector<bool>                &clamped,
                  const std::vector<const Function<2> *> &traction)
         : fe(fe)
@@ -168,17 +179,17 @@ namespace bilayer
       }
 
     private:
-      const FiniteElement<2>             &fe;
+      const FiniteElement<2>                 &fe;
       const std::vector<bool>                 clamped;
       const std::vector<const Function<2> *> &traction;
-      const PlaneStrainLaw                law;
-      FEValues<2>                         fe_values;
-      FEFaceValues<2>                     fe_face_values;
-      const SimilarityBreaker             fresh;
-      const FEValuesExtractors::Vector    displacement{0};
-      std::vector<SymmetricTensor<2, 2>>  eps;
-      std::vector<double>                 div;
-      Vector<double>                      t;
+      const PlaneStrainLaw                    law;
+      FEValues<2>                             fe_values;
+      FEFaceValues<2>                         fe_face_values;
+      const SimilarityBreaker                 fresh;
+      const FEValuesExtractors::Vector        displacement{0};
+      std::vector<SymmetricTensor<2, 2>>      eps;
+      std::vector<double>                     div;
+      Vector<double>                          t;
 
     public:
       FullMatrix<double>                   cell_matrix;
@@ -190,7 +201,7 @@ namespace bilayer
 
   void
   ElasticSubproblem::setup(const std::vector<bool>                &clamped,
-                           const Function<2>                  &prescribed,
+                           const Function<2>                      &prescribed,
                            const std::vector<const Function<2> *> &traction,
                            const std::string &shared_solver_type)
   {

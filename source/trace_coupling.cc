@@ -146,10 +146,7 @@ namespace bilayer
                                           w * values[i]);
                   });
               build_point_matrix(s, points, node_frames(b), coupling[b][j]);
-              build_point_matrix(s,
-                                 nodal(b),
-                                 node_frames(b),
-                                 evaluation[b][j]);
+              build_point_matrix(s, nodal(b), node_frames(b), evaluation[b][j]);
             }
         }
     for (const unsigned int s : Layout::subproblems)
@@ -171,13 +168,13 @@ namespace bilayer
       at_gauss.emplace_back(q, gauss_x[q], 1.0);
     for (const unsigned int s : Layout::subproblems)
       if (present(s))
-      {
-        // The Gauss points' frames: the curve's normal there.
-        std::vector<Tensor<1, 2>> normals;
-        for (const double x : gauss_x)
-          normals.push_back(curve->normal(x));
-        build_point_matrix(s, at_gauss, normals, gauss_traces[s]);
-      }
+        {
+          // The Gauss points' frames: the curve's normal there.
+          std::vector<Tensor<1, 2>> normals;
+          for (const double x : gauss_x)
+            normals.push_back(curve->normal(x));
+          build_point_matrix(s, at_gauss, normals, gauss_traces[s]);
+        }
   }
 
 
@@ -188,11 +185,10 @@ namespace bilayer
     const std::vector<Tensor<1, 2>>                             &normals,
     PointMatrix                                                 &result) const
   {
-    const unsigned int n_rows = normals.size();
+    const unsigned int                       n_rows = normals.size();
     std::vector<std::array<Tensor<1, 2>, 2>> frames(n_rows);
     for (unsigned int r = 0; r < n_rows; ++r)
-      frames[r] = {{Tensor<1, 2>({normals[r][1], -normals[r][0]}),
-                    normals[r]}};
+      frames[r] = {{Tensor<1, 2>({normals[r][1], -normals[r][0]}), normals[r]}};
     const ElasticSubproblem &sub = *subproblems[s];
     const auto              &fe  = sub.fe();
     const auto &sfaces = faces[static_cast<unsigned int>(Layout::subdomain(s))];

@@ -115,12 +115,12 @@ namespace
             " set Constants = c = 1e-3*mu1; cs = cos(_pi/6); sn = sin(_pi/6)\n"
             " subsection Layer 1\n" +
             rotated_loads + " end\nend\n");
-    double profile = 0, shift = 0;
+    double     profile = 0, shift = 0;
     const bool same_nodes = plain.s.size() == rotated.s.size();
     for (unsigned int a = 0; same_nodes && a < plain.s.size(); ++a)
       {
-        profile = std::max(profile,
-                           std::abs(plain.opening[a] - rotated.opening[a]));
+        profile =
+          std::max(profile, std::abs(plain.opening[a] - rotated.opening[a]));
         shift = std::max(shift, std::abs((rotated.s[a] - 1) - plain.s[a]));
       }
     std::cout << name << ", rotated by 30 degrees: accepted: "
@@ -148,9 +148,9 @@ namespace
     double error = 0, size = 0;
     for (const unsigned int s : Layout::subproblems)
       {
-        const auto &sub = study.subproblem(Layout::layer(s),
-                                           Layout::subdomain(s));
-        const auto &w   = study.solutions()[s];
+        const auto &sub =
+          study.subproblem(Layout::layer(s), Layout::subdomain(s));
+        const auto           &w = study.solutions()[s];
         std::vector<Point<2>> support(sub.n_dofs());
         DoFTools::map_dofs_to_support_points(sub.mapping(),
                                              sub.dof_handler(),
@@ -182,22 +182,21 @@ namespace
   std::array<double, 3>
   patch(const std::string &geo, const std::string &parts)
   {
-    drift = 0;
+    drift                    = 0;
     const std::string affine = "-1e-3*x; -1e-3*y";
-    Study             study(
-      scene_from_string("subsection Geometry\n set Gmsh file = " + geo +
-                          "\n set Clamped sides = " + parts +
-                          "\nend\nsubsection Mesh\n set Refinement = "
-                          "adaptive\n set Number of cycles = 3\n"
-                          " set Refinement fraction = 1\nend\n"
-                          "subsection Loads\n subsection Layer 1\n"
-                          "  set Prescribed displacement = " +
-                          affine +
-                          "\n end\n subsection Layer 2\n"
-                          "  set Prescribed displacement = " +
-                          affine + "\n end\nend\n" + solver,
-                        "patch"),
-      quiet);
+    Study study(scene_from_string("subsection Geometry\n set Gmsh file = " +
+                                    geo + "\n set Clamped sides = " + parts +
+                                    "\nend\nsubsection Mesh\n set Refinement = "
+                                    "adaptive\n set Number of cycles = 3\n"
+                                    " set Refinement fraction = 1\nend\n"
+                                    "subsection Loads\n subsection Layer 1\n"
+                                    "  set Prescribed displacement = " +
+                                    affine +
+                                    "\n end\n subsection Layer 2\n"
+                                    "  set Prescribed displacement = " +
+                                    affine + "\n end\nend\n" + solver,
+                                  "patch"),
+                quiet);
     Tensor<2, 2> E;
     E[0][0] = -1e-3;
     E[1][1] = -1e-3;
@@ -205,7 +204,7 @@ namespace
     for (unsigned int cycle = 0; cycle < 3; ++cycle)
       {
         const CycleRecord &record = study.run_cycle(cycle);
-        errors[cycle] = record.accepted() ? affine_error(study, E) : 1.;
+        errors[cycle]     = record.accepted() ? affine_error(study, E) : 1.;
         const auto &curve = study.interface().curve();
         for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
           for (const auto &face : study.subproblem(Layer::first, sd)
@@ -216,17 +215,18 @@ namespace
                 (face->boundary_id() == BoundaryIds::glued ||
                  face->boundary_id() == BoundaryIds::crack))
               for (const unsigned int v : face->vertex_indices())
-                drift = std::max(drift,
-                                 curve.distance(face->vertex(v)) /
-                                   curve.length());
+                drift =
+                  std::max(drift,
+                           curve.distance(face->vertex(v)) / curve.length());
         // Mark the cells along Sigma: of Omega- only after the matching
         // cycle, of both sides after that (the cells along Sigma halved,
         // the traces still non-matching).
         std::array<Vector<float>, Layout::n_subdomains> marks;
         for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
           {
-            const auto &tria =
-              study.subproblem(Layer::first, sd).dof_handler().get_triangulation();
+            const auto &tria = study.subproblem(Layer::first, sd)
+                                 .dof_handler()
+                                 .get_triangulation();
             auto &m = marks[static_cast<unsigned int>(sd)];
             m.reinit(tria.n_active_cells());
             if (sd == Subdomain::minus || cycle > 0)
@@ -260,16 +260,16 @@ namespace
     std::vector<Result> results;
     for (const std::string method : {"active set", "accelerated", "uzawa"})
       {
-        Study study(scene_from_string(
+        Study              study(scene_from_string(
                       scene + "subsection Solver\n set Method = " + method +
                         "\n set Stopping rule = kkt\n set Tolerance = 1e-10\n"
-                        " set Uzawa step theta = auto\n"
-                        " set Maximum iterations = 200000\nend\n",
+                                     " set Uzawa step theta = auto\n"
+                                     " set Maximum iterations = 200000\nend\n",
                       "solvers"),
                     quiet);
         const CycleRecord &record = study.run_cycle(0);
-        Result r{record.energy, {}, {}, {}, record.accepted()};
-        const auto &space = study.interface().space();
+        Result             r{record.energy, {}, {}, {}, record.accepted()};
+        const auto        &space = study.interface().space();
         for (unsigned int a = 0; a < space.n_nodes(Layout::across_sigma); ++a)
           r.mu_c.push_back(space.on_crack(a) ?
                              space.contact_multiplier(study.multipliers(), a) :
@@ -310,16 +310,16 @@ namespace
     const Result r = solve(scene("")), m = solve(scene("-"));
     // Contact nodes (mu_c > 0) and open nodes (opening > 0) per piece.
     std::array<unsigned int, 2> closed = {{0, 0}}, open = {{0, 0}};
-    const double                mid    = 0.5 * (r.s.front() + r.s.back());
-    const double                scale  = max_abs(r.opening);
+    const double                mid   = 0.5 * (r.s.front() + r.s.back());
+    const double                scale = max_abs(r.opening);
     for (unsigned int a = 0; a < r.s.size(); ++a)
       {
         const unsigned int piece = r.s[a] < mid ? 0 : 1;
         closed[piece] += r.mu_c[a] > 0;
         open[piece] += r.opening[a] > 1e-6 * scale;
       }
-    double mirror = 0;
-    const bool same = r.s.size() == m.s.size();
+    double     mirror = 0;
+    const bool same   = r.s.size() == m.s.size();
     for (unsigned int a = 0; same && a < r.s.size(); ++a)
       mirror = std::max(mirror,
                         std::abs(r.opening[a] - m.opening[r.s.size() - 1 - a]) +
@@ -353,17 +353,16 @@ main()
            "  set Traction on bottom = sn*c; -cs*c\n"
            "  set Traction on top = -sn*c; cs*c\n");
 
-  const auto polygon =
-    patch(std::string(SOURCE_DIR) + "/polygonal_sigma.geo",
-          "left, right, bottom, top");
+  const auto polygon = patch(std::string(SOURCE_DIR) + "/polygonal_sigma.geo",
+                             "left, right, bottom, top");
   std::cout << "patch test, polygonal Sigma: matching to round-off: "
             << (polygon[0] < 1e-10 ? "yes" : "NO")
             << "; non-matching (Omega- refined along Sigma) to round-off: "
             << (polygon[1] < 1e-10 && polygon[2] < 1e-10 ? "yes" : "NO")
             << "; vertices of Sigma on the polygon after refinement: "
             << (drift < 1e-12 ? "yes" : "NO") << std::endl;
-  const auto arc = patch(files + "curved_interface.geo",
-                         "left, right, inner, outer");
+  const auto arc =
+    patch(files + "curved_interface.geo", "left, right, inner, outer");
   // Chord of the coarse side: 40/8 = 5 degrees on radius 1, gap h^2/(8R)
   // with h = 0.087: about 1e-3 of the arc's cell; relative to the
   // displacement scale the error is of that order.

@@ -35,12 +35,12 @@ main()
   top_traction.initialize("x,y",
                           "2*mu*exp(x)*cos(y); -2*mu*exp(x)*sin(y)",
                           constants);
-  const Functions::ZeroFunction<2>         zero(2);
+  const Functions::ZeroFunction<2>       zero(2);
   const std::vector<const Function<2> *> traction = {&zero,
                                                      &zero,
                                                      &zero,
                                                      &top_traction};
-  const std::vector<bool> clamped = {true, true, true, false};
+  const std::vector<bool>                clamped  = {true, true, true, false};
 
   for (const bool simplex : {false, true})
     for (const unsigned int degree : {1u, 2u})

@@ -26,7 +26,7 @@ namespace bilayer
     struct Element
     {
       /// Gmsh element type: 1 line, 2 triangle, 3 quadrilateral.
-      unsigned int type = 0;
+      unsigned int type     = 0;
       int          physical = 0;
       int          entity   = 0;
       /// Indices into nodes (not Gmsh's node tags).

@@ -130,8 +130,8 @@ namespace bilayer
   private:
     const ContactParameters contact;
     InterfaceCurve          curve_;
-    MultiplierSpace          space_;
-    TraceCoupling            coupling_;
+    MultiplierSpace         space_;
+    TraceCoupling           coupling_;
   };
 } // namespace bilayer
 

@@ -109,8 +109,7 @@ namespace bilayer
     double
     s_end() const
     {
-      return pieces_.empty() ? 0. :
-                               pieces_.back().s0 + pieces_.back().length;
+      return pieces_.empty() ? 0. : pieces_.back().s0 + pieces_.back().length;
     }
     /// The sum of the pieces' lengths.
     double

@@ -358,13 +358,13 @@ namespace bilayer
     /// element of its multipliers.
     struct Mesh
     {
-      std::vector<double>       breakpoints, node_x, node_weight, node_mass;
+      std::vector<double> breakpoints, node_x, node_weight, node_mass;
       /// Unit normal of each node (weighted nodal normal).
       std::vector<dealii::Tensor<1, 2>> normal;
-      std::vector<unsigned int> row;
-      std::array<bool, 2>       nodal  = {{true, true}};
-      unsigned int              degree = 1;
-      std::shared_ptr<dealii::FE_Q<1>> fe;
+      std::vector<unsigned int>         row;
+      std::array<bool, 2>               nodal  = {{true, true}};
+      unsigned int                      degree = 1;
+      std::shared_ptr<dealii::FE_Q<1>>  fe;
       /// psi_i = sum_k dual(i, k) phi_k on every segment.
       dealii::FullMatrix<double> dual;
     };

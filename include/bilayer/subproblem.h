@@ -64,7 +64,7 @@ namespace bilayer
      */
     void
     setup(const std::vector<bool>                        &clamped,
-          const dealii::Function<2>                  &prescribed,
+          const dealii::Function<2>                      &prescribed,
           const std::vector<const dealii::Function<2> *> &traction,
           const std::string &shared_solver = "Amesos_Mumps");
 
@@ -186,6 +186,10 @@ namespace bilayer
     {
       return *fe_system;
     }
+    /// The mapping: linear, or MappingQ of the element's degree on
+    /// quadrilaterals of degree >= 2 when the mesh has curved (non-flat)
+    /// manifolds, so that curved boundaries and a curved Sigma are
+    /// approximated to the element's order (isoparametric).
     const dealii::Mapping<2> &
     mapping() const;
     const LayerMaterial &
@@ -217,6 +221,7 @@ namespace bilayer
     /// included: the support of every trace the interface evaluates.
     std::vector<dealii::types::global_dof_index> trace_dofs_;
     std::unique_ptr<dealii::FESystem<2>>         fe_system;
+    std::unique_ptr<dealii::Mapping<2>>          curved_mapping;
     dealii::DoFHandler<2>                        dofs;
     dealii::AffineConstraints<double>            constraints;
     dealii::AffineConstraints<double>            homogeneous_constraints;
