@@ -3,12 +3,12 @@
 
 #include <bilayer/gmsh_mesh.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <unistd.h>
 
@@ -157,7 +157,9 @@ namespace bilayer
     namespace fs = std::filesystem;
     std::error_code error;
     AssertThrow(fs::is_regular_file(file, error),
-                ExcMessage(where(file) + ": no such file"));
+                ExcMessage(where(file) + (fs::exists(file, error) ?
+                                            ": not a regular file" :
+                                            ": no such file")));
     const std::string extension = fs::path(file).extension().string();
     AssertThrow(extension == ".geo" || extension == ".msh",
                 ExcMessage(where(file) +
@@ -231,7 +233,9 @@ namespace bilayer
     namespace fs = std::filesystem;
     std::error_code error;
     AssertThrow(fs::is_regular_file(file, error),
-                ExcMessage(where(file) + ": no such file"));
+                ExcMessage(where(file) + (fs::exists(file, error) ?
+                                            ": not a regular file" :
+                                            ": no such file")));
     std::ifstream in(file);
     AssertThrow(in, ExcMessage(where(file) + ": " + std::strerror(errno)));
     std::map<int, std::string> names;
@@ -242,18 +246,46 @@ namespace bilayer
         // Physical Curve("name", tag) = {...}; or Physical Line("name").
         std::stringstream text;
         text << in.rdbuf();
-        const std::string content = text.str();
-        const std::regex  statement(
-          R"(Physical\s+(Curve|Line)\s*\(\s*"([^"]*)\"\s*(,\s*(\d+))?)");
-        int order = 1 << 20;
-        for (auto it =
-               std::sregex_iterator(content.begin(), content.end(), statement);
-             it != std::sregex_iterator();
-             ++it)
+        const std::string c     = text.str();
+        int               order = 1 << 20;
+        const auto        blank = [&](std::size_t i) {
+          while (i < c.size() && std::isspace(static_cast<unsigned char>(c[i])))
+            ++i;
+          return i;
+        };
+        for (std::size_t at = c.find("Physical"); at != std::string::npos;
+             at             = c.find("Physical", at + 8))
           {
-            const int tag =
-              (*it)[4].matched ? std::stoi((*it)[4].str()) : order++;
-            names[tag] = (*it)[2].str();
+                        std::size_t i = blank(at + 8);
+                        if (c.compare(i, 5, "Curve") == 0)
+              i += 5;
+            else if (c.compare(i, 4, "Line") == 0)
+              i += 4;
+            else
+              continue;
+            i = blank(i);
+                        if (i >= c.size() || c[i] != '(')
+              continue;
+            i = blank(i + 1);
+                        if (i >= c.size() || c[i] != '"')
+              continue;
+            const std::size_t close = c.find('"', i + 1);
+                        if (close == std::string::npos)
+              continue;
+            const std::string name = c.substr(i + 1, close - i - 1);
+                        i                      = blank(close + 1);
+                        int tag                = order++;
+                        if (i < c.size() && c[i] == ',')
+              {
+                            i             = blank(i + 1);
+                            std::size_t j = i;
+                            while (j < c.size() && j < i + 9 &&
+                       std::isdigit(static_cast<unsigned char>(c[j])))
+                  ++j;
+                if (j > i)
+                  tag = std::stoi(c.substr(i, j - i));
+              }
+                        names[tag] = name;
           }
       }
     std::vector<std::string> result;
