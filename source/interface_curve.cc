@@ -73,7 +73,7 @@ namespace bilayer
                         ExcMessage("Sigma has a piece of zero length at (" +
                                    std::to_string(piece.a[0]) + ", " +
                                    std::to_string(piece.a[1]) + ")"));
-            piece.tau    = (piece.b - piece.a) / piece.length;
+            piece.tau    = unit_vector(piece.b - piece.a);
             piece.offset = piece.s0 - piece.a * piece.tau;
           }
         else
@@ -99,7 +99,7 @@ namespace bilayer
     piece.b             = b;
     const double length = a.distance(b);
     AssertThrow(length > 0, ExcMessage("Sigma has zero length"));
-    const Tensor<1, 2> tau = (b - a) / length;
+    const Tensor<1, 2> tau = unit_vector(b - a);
     return InterfaceCurve({piece}, a * tau);
   }
 
@@ -180,7 +180,7 @@ namespace bilayer
       n += piece_normal(pieces_[i + 1], s);
     else
       return n;
-    return n / n.norm();
+    return unit_vector(n);
   }
 
 

@@ -136,7 +136,7 @@ namespace bilayer
         // Weighted nodal normals: int phi_a nu_h ds over the chords of the
         // multiplier mesh, normalised.
         for (auto &normal : mesh.normal)
-          normal /= normal.norm();
+          normal = unit_vector(normal);
         mesh.node_mass = mesh.node_weight;
         mesh.row.resize(n);
         for (unsigned int a = 0; a < n; ++a)

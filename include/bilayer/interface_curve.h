@@ -13,6 +13,19 @@
 namespace bilayer
 {
   /**
+   * @p v divided by its length, component by component (deal.II's Tensor
+   * division multiplies by the inverse, which is not exact: (v, 0) would
+   * not become (1, 0) for every v, and the frames of a straight Sigma would
+   * not be exactly its axes).
+   */
+  inline dealii::Tensor<1, 2>
+  unit_vector(const dealii::Tensor<1, 2> &v)
+  {
+    const double length = v.norm();
+    return dealii::Tensor<1, 2>({v[0] / length, v[1] / length});
+  }
+
+  /**
    * The interface Sigma as a geometric curve: a chain of straight segments
    * and circular arcs from one end on the outer boundary to the other, with
    * its parametrisation s (arc length plus a constant), the point and the
