@@ -34,6 +34,22 @@ namespace bilayer
       return q + "'";
     }
 
+    /// @p file opened for reading, refused (naming the entry) when it is
+    /// missing, not a regular file or unreadable.
+    std::ifstream
+    open(const std::string &file)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      AssertThrow(fs::is_regular_file(file, error),
+                  ExcMessage(where(file) + (fs::exists(file, error) ?
+                                              ": not a regular file" :
+                                              ": no such file")));
+      std::ifstream in(file);
+      AssertThrow(in, ExcMessage(where(file) + ": " + std::strerror(errno)));
+      return in;
+    }
+
     /// Read the sections of a format-2 ASCII mesh.
     GmshMesh
     parse_msh(std::istream &in, const std::string &file)
@@ -155,21 +171,14 @@ namespace bilayer
   read_gmsh(const std::string &file, const double size_factor)
   {
     namespace fs = std::filesystem;
-    std::error_code error;
-    AssertThrow(fs::is_regular_file(file, error),
-                ExcMessage(where(file) + (fs::exists(file, error) ?
-                                            ": not a regular file" :
-                                            ": no such file")));
+    std::error_code   error;
+    std::ifstream     in        = open(file);
     const std::string extension = fs::path(file).extension().string();
     AssertThrow(extension == ".geo" || extension == ".msh",
                 ExcMessage(where(file) +
                            ": must be a .geo or a .msh file (Gmsh)"));
     if (extension == ".msh")
-      {
-        std::ifstream in(file);
-        AssertThrow(in, ExcMessage(where(file) + ": " + std::strerror(errno)));
-        return parse_msh(in, file);
-      }
+      return parse_msh(in, file);
 
     // Mesh the geometry with the gmsh command in a directory of our own.
     std::string pattern =
@@ -230,16 +239,9 @@ namespace bilayer
   std::vector<std::string>
   gmsh_boundary_names(const std::string &file)
   {
-    namespace fs = std::filesystem;
-    std::error_code error;
-    AssertThrow(fs::is_regular_file(file, error),
-                ExcMessage(where(file) + (fs::exists(file, error) ?
-                                            ": not a regular file" :
-                                            ": no such file")));
-    std::ifstream in(file);
-    AssertThrow(in, ExcMessage(where(file) + ": " + std::strerror(errno)));
+    std::ifstream              in = open(file);
     std::map<int, std::string> names;
-    if (fs::path(file).extension() == ".msh")
+    if (std::filesystem::path(file).extension() == ".msh")
       names = parse_msh(in, file).curve_names;
     else
       {

@@ -66,8 +66,7 @@ namespace bilayer
                 // The multiplier's components in its node's frame.
                 const unsigned int  r = space_.row(space_.node(e, i, b), b);
                 const Tensor<1, 2> &n = space_.node_normal(r, b);
-                const std::array<Tensor<1, 2>, 2> frame = {
-                  {Tensor<1, 2>({n[1], -n[0]}), n}};
+                const std::array<Tensor<1, 2>, 2> frame = {{tangent_of(n), n}};
                 for (unsigned int k = 0; k < Layout::n_components; ++k)
                   {
                     const double m = (j == 0 ? -1. : 1.) * values[i] *

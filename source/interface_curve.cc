@@ -28,7 +28,7 @@ namespace bilayer
     double
     arc_sign(const InterfaceCurve::Piece &piece)
     {
-      return piece.phi1 >= piece.phi0 ? 1. : -1.;
+      return piece.sweep >= 0 ? 1. : -1.;
     }
 
     /// Parameter of the point of @p piece closest to @p p, and the distance.
@@ -47,7 +47,7 @@ namespace bilayer
       const double phi =
         std::atan2(p[1] - piece.centre[1], p[0] - piece.centre[0]);
       const double d     = angle_from(phi, piece.phi0, sign);
-      const double range = std::abs(piece.phi1 - piece.phi0);
+      const double range = std::abs(piece.sweep);
       if (d <= range)
         return {piece.s0 + piece.radius * d,
                 std::abs(p.distance(piece.centre) - piece.radius)};
@@ -80,7 +80,6 @@ namespace bilayer
           {
             piece.phi0   = std::atan2(piece.a[1] - piece.centre[1],
                                     piece.a[0] - piece.centre[0]);
-            piece.phi1   = piece.phi0 + piece.sweep;
             piece.length = piece.radius * std::abs(piece.sweep);
           }
         s += piece.length;

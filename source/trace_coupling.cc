@@ -188,7 +188,7 @@ namespace bilayer
     const unsigned int                       n_rows = normals.size();
     std::vector<std::array<Tensor<1, 2>, 2>> frames(n_rows);
     for (unsigned int r = 0; r < n_rows; ++r)
-      frames[r] = {{Tensor<1, 2>({normals[r][1], -normals[r][0]}), normals[r]}};
+      frames[r] = {{tangent_of(normals[r]), normals[r]}};
     const ElasticSubproblem &sub = *subproblems[s];
     const auto              &fe  = sub.fe();
     const auto &sfaces = faces[static_cast<unsigned int>(Layout::subdomain(s))];

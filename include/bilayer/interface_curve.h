@@ -25,6 +25,14 @@ namespace bilayer
     return dealii::Tensor<1, 2>({v[0] / length, v[1] / length});
   }
 
+  /// The unit tangent of the frame with unit normal @p normal (the
+  /// direction of growing s): the normal turned by -90 degrees.
+  inline dealii::Tensor<1, 2>
+  tangent_of(const dealii::Tensor<1, 2> &normal)
+  {
+    return dealii::Tensor<1, 2>({normal[1], -normal[0]});
+  }
+
   /**
    * The interface Sigma as a geometric curve: a chain of straight segments
    * and circular arcs from one end on the outer boundary to the other, with
@@ -54,8 +62,8 @@ namespace bilayer
   public:
     /// One piece of the chain: a segment from a to b, or an arc of the
     /// circle (centre, radius) from a to b turning by the signed angle
-    /// sweep (radians, negative for a clockwise arc); phi0, phi1 are the
-    /// angles of a and b (set by the constructor).
+    /// sweep (radians, negative for a clockwise arc); phi0 is the angle
+    /// of a (set by the constructor).
     struct Piece
     {
       enum class Kind
@@ -66,7 +74,7 @@ namespace bilayer
       Kind             kind = Kind::segment;
       dealii::Point<2> a, b;
       dealii::Point<2> centre;
-      double           radius = 0, sweep = 0, phi0 = 0, phi1 = 0;
+      double           radius = 0, sweep = 0, phi0 = 0;
       /// Parameter s at the start of the piece and its length.
       double s0 = 0, length = 0;
       /// Segment: s = dot(p, tau) + offset (exact s = x for the horizontal
@@ -105,14 +113,6 @@ namespace bilayer
     /// pieces meet).
     dealii::Tensor<1, 2>
     normal(const double s) const;
-
-    /// Unit tangent (direction of growing s): normal turned by -90 degrees.
-    dealii::Tensor<1, 2>
-    tangent(const double s) const
-    {
-      const auto n = normal(s);
-      return dealii::Tensor<1, 2>({n[1], -n[0]});
-    }
 
     double
     s_begin() const
