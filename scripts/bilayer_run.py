@@ -6,7 +6,12 @@ The scripts import it from their own directory (`import bilayer_run`):
     argument_parser(doc)   an ArgumentParser whose --help is the script's
                            docstring (first paragraph, then the rest)
     MPI_ENV                the environment for mpirun as root, oversubscribed
-    setup()                scripts/setup (install, configure, build), quietly
+    setup()                scripts/setup --no-install (configure and build
+                           if needed, never install), quietly; exits with its
+                           status (after its one-line message) if it fails
+    require(*tools)        exits 1 with one line naming the Debian package
+                           of the first of TOOLS (gnuplot, mpirun, ...) not
+                           on PATH: the scripts never install anything
     command(prm, settings, processes=None, binary=BILAYER, mpirun=("mpirun",))
                            the command line: BINARY PRM --set S/E=v ...,
                            behind MPIRUN -np PROCESSES when processes is given
@@ -26,7 +31,9 @@ import argparse
 import collections
 import json
 import os
+import shutil
 import subprocess
+import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -51,10 +58,30 @@ def argument_parser(doc):
                                    formatter_class=argparse.RawDescriptionHelpFormatter)
 
 
+# The Debian package that provides each tool the scripts run.
+PACKAGES = {"gnuplot": "gnuplot-nox", "pvbatch": "paraview python3-paraview",
+            "xvfb-run": "xvfb", "xauth": "xauth", "gmsh": "gmsh",
+            "mpirun": "openmpi-bin", "numdiff": "numdiff", "h5dump": "hdf5-tools"}
+
+
 def setup():
-    """scripts/setup with its output discarded; raises if it fails."""
-    subprocess.run([os.path.join(ROOT, "scripts", "setup")], check=True,
-                   stdout=subprocess.DEVNULL)
+    """scripts/setup --no-install with its output discarded: configures and
+    builds if needed, never installs. If it fails (its one line on stderr
+    names what is missing), exits with its status."""
+    p = subprocess.run([os.path.join(ROOT, "scripts", "setup"), "--no-install"],
+                       stdout=subprocess.DEVNULL)
+    if p.returncode != 0:
+        sys.exit(p.returncode)
+
+
+def require(*tools):
+    """Exit 1 with one line naming the Debian package to install for the
+    first of TOOLS that is not on PATH (the scripts never install)."""
+    for tool in tools:
+        if shutil.which(tool) is None:
+            package = PACKAGES.get(tool, tool)
+            sys.exit("%s: %s is missing: install the Debian package%s %s" % (
+                os.path.basename(sys.argv[0]), tool, "s" if " " in package else "", package))
 
 
 def set_list(settings):

@@ -2,6 +2,7 @@
 
 #include <bilayer/active_set_solver.h>
 #include <bilayer/feti_preconditioner.h>
+#include <bilayer/progress.h>
 
 #include <cmath>
 #include <iomanip>
@@ -134,8 +135,9 @@ namespace bilayer
   {
     SolverResult result;
     result.solver = "active set";
-    Timer              timer;
-    FetiPreconditioner preconditioner(parameters.preconditioner,
+    Timer                timer;
+    const IterationClock clock;
+    FetiPreconditioner   preconditioner(parameters.preconditioner,
                                       subproblems,
                                       interface);
     result.setup_seconds = timer.wall_time();
@@ -198,6 +200,7 @@ namespace bilayer
                 << ", complementarity " << kkt.complementarity << ")"
                 << std::defaultfloat << "  active " << n_active << ", changed "
                 << n_changed << ", CG iterations " << inner_iterations
+                << ", elapsed " << format_duration(clock.elapsed())
                 << std::endl;
 
         if (!std::isfinite(kkt.value()))

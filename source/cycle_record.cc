@@ -133,11 +133,13 @@ namespace bilayer
         record_field("constraint_violation",
                      [](const R &r) { return r.report.constraint_violation; })
           .csv(18, "constraint_violation").column("violation", 2, true),
+        record_field("eta", [](const R &r) { return r.eta; })
+          .csv(19, "eta").column("eta", 2, true),
         record_field("relative_constraint_violation",
                      [](const R &r) { return r.report.relative_constraint_violation; }),
         record_field("max_penetration",
                      [](const R &r) { return r.report.max_penetration; })
-          .csv(19, "max_penetration"),
+          .csv(20, "max_penetration"),
         record_field("displacement_scale",
                      [](const R &r) { return r.report.displacement_scale; }),
         record_field("relative_discrete_violation",
@@ -175,14 +177,14 @@ namespace bilayer
         record_field("memory_estimate_mib",
                      [](const R &r) { return r.memory_estimate_mib; }),
         record_field("setup", [](const R &r) { return r.setup_seconds; })
-          .in("wall_seconds").csv(20, "setup_seconds"),
+          .in("wall_seconds").csv(21, "setup_seconds"),
         record_field("assembly", [](const R &r) { return r.assembly_seconds; })
           .in("wall_seconds"),
         record_field("factorisation",
                      [](const R &r) { return r.factorisation_seconds; })
           .in("wall_seconds"),
         record_field("solve", [](const R &r) { return r.solve_seconds; })
-          .in("wall_seconds").csv(21, "solve_seconds"),
+          .in("wall_seconds").csv(22, "solve_seconds"),
         record_field("solver_setup",
                      [](const R &r) { return r.result.setup_seconds; })
           .in("wall_seconds"),
@@ -190,7 +192,7 @@ namespace bilayer
                      [](const R &r) { return r.result.iteration_seconds; })
           .in("wall_seconds"),
         record_field("total", [](const R &r) { return r.total_seconds; })
-          .in("wall_seconds").csv(22, "total_seconds").column("time [s]", 3),
+          .in("wall_seconds").csv(23, "total_seconds").column("time [s]", 3),
       };
       // clang-format on
     }

@@ -18,7 +18,8 @@ namespace bilayer
                  const Solutions                                &w,
                  const BlockVector<double>                      &mu,
                  const bool   interface_terms,
-                 const double contact_weight)
+                 const double contact_weight,
+                 double      *global_estimate)
   {
     // The squared indicator of each subproblem, evaluated by its owner
     // (the whole solution is needed) and sent to all processes, then
@@ -115,6 +116,7 @@ namespace bilayer
         }
 
     std::array<Vector<float>, Layout::n_subdomains> eta;
+    double                                          energy_estimate = 0;
     for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
       {
         Vector<double> sum;
@@ -128,6 +130,9 @@ namespace bilayer
                                     .get_triangulation()
                                     .n_active_cells());
               subproblems[s]->processes().share(s, squared[s]);
+              energy_estimate +=
+                2 * PlaneStrainLaw(subproblems[s]->material()).shear_modulus() *
+                squared[s].l1_norm();
               if (sum.size() == 0)
                 sum = squared[s];
               else
@@ -138,6 +143,8 @@ namespace bilayer
         for (unsigned int i = 0; i < sum.size(); ++i)
           eta_sd[i] = std::sqrt(sum[i]);
       }
+    if (global_estimate != nullptr)
+      *global_estimate = std::sqrt(energy_estimate);
     return eta;
   }
 } // namespace bilayer

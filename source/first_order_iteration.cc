@@ -114,7 +114,9 @@ namespace bilayer
                  const double               last_increment,
                  const Interface           &interface,
                  const Solutions           &w,
-                 const BlockVector<double> &g)
+                 const BlockVector<double> &g,
+                 IterationClock            &clock,
+                 const double               tolerance)
   {
     if (output.progress_interval > 0 && k > 0 &&
         k % output.progress_interval == 0)
@@ -122,7 +124,8 @@ namespace bilayer
             << std::scientific << std::setprecision(3) << value
             << "  multiplier change " << last_increment
             << "  relative violation " << relative_violation(interface, w, g)
-            << std::defaultfloat << std::endl;
+            << std::defaultfloat << "  (" << clock.report(k, value, tolerance)
+            << ")" << std::endl;
   }
 
 
@@ -227,6 +230,7 @@ namespace bilayer
         parameters, step_bound, subproblems, interface, pcout, result);
     result.setup_seconds = timer.wall_time();
     timer.restart();
+    clock = IterationClock();
     iterate(subproblems, interface, mu, w, result);
     result.iteration_seconds = timer.wall_time();
     return result;
@@ -255,7 +259,16 @@ namespace bilayer
           parameters, subproblems, interface, w, w_old, g, mu, last_increment) :
         std::numeric_limits<double>::infinity();
     result.stopping_value = value;
-    print_progress(output, pcout, k, value, last_increment, interface, w, g);
+    print_progress(output,
+                   pcout,
+                   k,
+                   value,
+                   last_increment,
+                   interface,
+                   w,
+                   g,
+                   clock,
+                   parameters.tolerance);
     return value;
   }
 } // namespace bilayer

@@ -3,8 +3,11 @@
 #include <bilayer/interface.h>
 #include <bilayer/interface_diagnostics.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <numeric>
+#include <utility>
 
 namespace bilayer
 {
@@ -257,47 +260,92 @@ namespace bilayer
   }
 
 
-  void
-  write_interface_csv(std::ostream              &out,
-                      const Interface           &interface,
-                      const Solutions           &w,
-                      const BlockVector<double> &mu)
+  std::vector<InterfaceNode>
+  interface_nodes(const Interface           &interface,
+                  const Solutions           &w,
+                  const BlockVector<double> &mu,
+                  const double               closed_tolerance)
   {
     const MultiplierSpace &space = interface.space();
-    // Without layer 2 its columns repeat layer 1 (gaps and mu+- zero).
+    // Without layer 2 its traces repeat layer 1 (gaps and mu+- zero).
     const PerSubproblem<Vector<double>> t = traces_at_nodes(interface, w);
+    const double scale                    = displacement_scale(interface, w);
+    using Layout::u_minus, Layout::u_plus;
+    std::vector<InterfaceNode> nodes(space.n_nodes(Layout::across_sigma));
+    for (unsigned int a = 0; a < nodes.size(); ++a)
+      {
+        InterfaceNode     &n = nodes[a];
+        const unsigned int x = Layout::entry(a, Layout::tangential),
+                           y = Layout::entry(a, Layout::normal);
+        n.s                  = space.node_position(a, Layout::across_sigma);
+        n.point              = interface.curve().point(n.s);
+        n.normal             = space.node_normal(a);
+        n.on_crack           = space.on_crack(a);
+        n.jump_normal        = t[u_plus](y) - t[u_minus](y);
+        n.jump_tangential    = t[u_plus](x) - t[u_minus](x);
+        n.mu_c               = space.contact_multiplier(mu, a);
+        for (const unsigned int c : {Layout::tangential, Layout::normal})
+          {
+            n.mu_g[c]     = space.gluing_multiplier(mu, a, c);
+            n.mu_minus[c] = space.value(mu, Layout::glue_minus, n.s, c);
+            n.mu_plus[c]  = space.value(mu, Layout::glue_plus, n.s, c);
+          }
+        for (const unsigned int s : Layout::subproblems)
+          n.trace[s] = Tensor<1, 2>({t[s](x), t[s](y)});
+        n.normal_traction = n.on_crack ? n.mu_c : n.mu_g[Layout::normal];
+        n.state           = !n.on_crack ? ContactState::glued :
+                            (n.mu_c > 0 || n.jump_normal <= closed_tolerance * scale) ?
+                                          ContactState::closed :
+                                          ContactState::open;
+      }
+    // Crack tips: glued nodes next to a crack node along Sigma.
+    std::vector<unsigned int> order(nodes.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
+      return nodes[a].s < nodes[b].s;
+    });
+    for (unsigned int i = 0; i < order.size(); ++i)
+      {
+        InterfaceNode &n = nodes[order[i]];
+        n.crack_tip      = !n.on_crack &&
+                      ((i > 0 && nodes[order[i - 1]].on_crack) ||
+                       (i + 1 < order.size() && nodes[order[i + 1]].on_crack));
+        n.contact_pressure = n.on_crack  ? n.mu_c :
+                             n.crack_tip ? std::max(n.normal_traction, 0.) :
+                                           0.;
+      }
+    return nodes;
+  }
+
+
+  void
+  write_interface_csv(std::ostream                     &out,
+                      const std::vector<InterfaceNode> &nodes)
+  {
     using Layout::u_minus, Layout::u_plus, Layout::v_minus, Layout::v_plus;
     out << "x,on_crack,jump_normal,jump_tangential,mu_c,mu_g_x,mu_g_y,"
            "mu_minus_x,mu_minus_y,mu_plus_x,mu_plus_y,gap_minus_x,"
            "gap_minus_y,gap_plus_x,gap_plus_y,u_minus_x,u_minus_y,u_plus_x,"
            "u_plus_y,v_minus_x,v_minus_y,v_plus_x,v_plus_y,s,y,normal_x,"
-           "normal_y\n";
+           "normal_y,contact_pressure,normal_traction,state\n";
     out << std::setprecision(12);
-    for (unsigned int a = 0; a < space.n_nodes(Layout::across_sigma); ++a)
+    for (const InterfaceNode &n : nodes)
       {
-        const unsigned int x    = Layout::entry(a, Layout::tangential),
-                           y    = Layout::entry(a, Layout::normal);
-        const double   position = space.node_position(a, Layout::across_sigma);
-        const Point<2> point    = interface.curve().point(position);
-        const Tensor<1, 2> &normal = space.node_normal(a);
-        out << point[0] << ',' << (space.on_crack(a) ? 1 : 0) << ','
-            << t[u_plus](y) - t[u_minus](y) << ','
-            << t[u_plus](x) - t[u_minus](x) << ','
-            << space.contact_multiplier(mu, a) << ','
-            << space.gluing_multiplier(mu, a, Layout::tangential) << ','
-            << space.gluing_multiplier(mu, a, Layout::normal);
-        for (const unsigned int b : {Layout::glue_minus, Layout::glue_plus})
-          for (unsigned int c = 0; c < Layout::n_components; ++c)
-            out << ',' << space.value(mu, b, position, c);
-        out << ',' << t[u_minus](x) - t[v_minus](x) << ','
-            << t[u_minus](y) - t[v_minus](y) << ','
-            << t[u_plus](x) - t[v_plus](x) << ','
-            << t[u_plus](y) - t[v_plus](y);
+        out << n.point[0] << ',' << (n.on_crack ? 1 : 0) << ',' << n.jump_normal
+            << ',' << n.jump_tangential << ',' << n.mu_c << ',' << n.mu_g[0]
+            << ',' << n.mu_g[1];
+        for (const Tensor<1, 2> &m : {n.mu_minus, n.mu_plus})
+          out << ',' << m[0] << ',' << m[1];
+        for (const auto &[layer_1, layer_2] :
+             {std::pair(u_minus, v_minus), std::pair(u_plus, v_plus)})
+          for (const unsigned int c : {0u, 1u})
+            out << ',' << n.trace[layer_1][c] - n.trace[layer_2][c];
         for (const unsigned int s : Layout::subproblems)
-          out << ',' << t[s](x) << ',' << t[s](y);
+          out << ',' << n.trace[s][0] << ',' << n.trace[s][1];
         // (+ 0. turns a negative zero into a positive one.)
-        out << ',' << position << ',' << point[1] << ',' << normal[0] + 0.
-            << ',' << normal[1] + 0. << '\n';
+        out << ',' << n.s << ',' << n.point[1] << ',' << n.normal[0] + 0. << ','
+            << n.normal[1] + 0. << ',' << n.contact_pressure << ','
+            << n.normal_traction << ',' << static_cast<int>(n.state) << '\n';
       }
   }
 } // namespace bilayer

@@ -303,6 +303,7 @@ main(int argc, char **argv)
                     << where << ")" << std::endl;
           return 2;
         }
+      std::cout << "bilayer: results are in " << where << std::endl;
       return 0;
     }
   catch (const bilayer::CollectiveError &e)

@@ -5,6 +5,7 @@
 #include <bilayer/gmsh_mesh.h>
 #include <bilayer/parameters.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <numeric>
 #include <set>
 #include <sstream>
 
@@ -1224,6 +1226,139 @@ namespace bilayer
                                "' must be non-empty and without ',' or '|'"));
       return BoundaryParts::of_gmsh(names);
     }
+
+
+    /// Levenshtein distance of @p a and @p b, letters compared without case.
+    std::size_t
+    edit_distance(const std::string &a, const std::string &b)
+    {
+      std::vector<std::size_t> row(b.size() + 1);
+      std::iota(row.begin(), row.end(), std::size_t(0));
+      for (std::size_t i = 1; i <= a.size(); ++i)
+        {
+          std::size_t diagonal = row[0];
+          row[0]               = i;
+          for (std::size_t j = 1; j <= b.size(); ++j)
+            {
+              const std::size_t above = row[j];
+              const bool        same  = std::tolower((unsigned char)a[i - 1]) ==
+                                std::tolower((unsigned char)b[j - 1]);
+              row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + !same});
+              diagonal = above;
+            }
+        }
+      return row[b.size()];
+    }
+
+
+    /**
+     * The declared names of @p prm as paths "Section/.../Entry"
+     * (@p subsections false) or "Section/.../Subsection" (true), read from
+     * its ShortPRM listing.
+     */
+    std::vector<std::string>
+    declared_paths(const ParameterHandler &prm, const bool subsections)
+    {
+      std::ostringstream listing;
+      prm.print_parameters(listing, ParameterHandler::ShortPRM);
+      std::istringstream       in(listing.str());
+      std::vector<std::string> open, paths;
+      const auto               joined = [&](const std::string &last) {
+        std::string path;
+        for (const auto &name : open)
+          path += name + "/";
+        return path + last;
+      };
+      for (std::string line; std::getline(in, line);)
+        {
+          line = Utilities::trim(line);
+          if (line.rfind("subsection ", 0) == 0)
+            {
+              const std::string name = Utilities::trim(line.substr(11));
+              if (subsections)
+                paths.push_back(joined(name));
+              open.push_back(name);
+            }
+          else if (line == "end" && !open.empty())
+            open.pop_back();
+          else if (line.rfind("set ", 0) == 0 && !subsections)
+            paths.push_back(
+              joined(Utilities::trim(line.substr(4, line.find('=') - 4))));
+        }
+      return paths;
+    }
+
+
+    /**
+     * "; did you mean ...?" naming the declared paths closest to @p name
+     * (compared as a whole path when @p name contains '/', else by their
+     * last part) when they differ from it by a few letters (at most a third
+     * of its length, at least 2), else "".
+     */
+    std::string
+    did_you_mean(const ParameterHandler &prm,
+                 const std::string      &name,
+                 const bool              subsection)
+    {
+      const bool  whole = name.find('/') != std::string::npos;
+      std::size_t best  = std::max<std::size_t>(2, name.size() / 3) + 1;
+      std::vector<std::string> closest;
+      for (const std::string &path : declared_paths(prm, subsection))
+        {
+          const std::string compared =
+            whole ? path : path.substr(path.rfind('/') + 1);
+          const std::size_t d = edit_distance(name, compared);
+          if (d < best)
+            best = d, closest.clear();
+          if (d == best && closest.size() < 3)
+            closest.push_back(path);
+        }
+      // (A whole path that is declared: the error is about something else;
+      // a name that is declared elsewhere: that place.)
+      if (closest.empty() || (whole && best == 0))
+        return "";
+      std::string text = "; did you mean ";
+      for (std::size_t i = 0; i < closest.size(); ++i)
+        text += (i == 0                  ? "'" :
+                 i + 1 == closest.size() ? " or '" :
+                                           ", '") +
+                closest[i] + "'";
+      return text + "?";
+    }
+
+
+    /**
+     * The one-line message of @p e, an error of ParameterHandler reading a
+     * file, with did_you_mean() for a name it does not know.
+     */
+    std::string
+    with_suggestion(const ParameterHandler &prm, const ExceptionBase &e)
+    {
+      std::string message = one_line_message(e);
+      if (!message.empty() && message.back() == '.')
+        message.pop_back();
+      const auto between = [&](const std::string &before,
+                               const std::string &after) -> std::string {
+        const auto a = message.find(before);
+        if (a == std::string::npos)
+          return "";
+        const auto b = message.find(after, a + before.size());
+        return b == std::string::npos ?
+                 "" :
+                 message.substr(a + before.size(), b - a - before.size());
+      };
+      std::string entry = between("No entry with name <", ">");
+      if (!entry.empty())
+        return message + did_you_mean(prm, entry, false);
+      const std::string marker = "no such subsection to be entered: ";
+      const auto        at     = message.find(marker);
+      if (at != std::string::npos)
+        return message +
+               did_you_mean(prm,
+                            Utilities::trim(message.substr(at + marker.size())),
+                            true);
+      return message;
+    }
   } // namespace
 
 
@@ -1244,7 +1379,14 @@ namespace bilayer
       base,
       gmsh_file);
     Scene::declare_parameters(prm, parts);
-    prm.parse_input(filename, "", false, true);
+    try
+      {
+        prm.parse_input(filename, "", false, true);
+      }
+    catch (const ExceptionBase &e)
+      {
+        AssertThrow(false, ExcMessage(with_suggestion(prm, e)));
+      }
 
     // "Section/Subsection/Entry=value" from the command line; blanks around
     // the names and the value do not count.
@@ -1268,9 +1410,15 @@ namespace bilayer
           }
         catch (const ExceptionBase &e)
           {
+            std::string joined;
+            for (const auto &name : path)
+              joined += (joined.empty() ? "" : "/") + name;
+            std::string message = one_line_message(e);
+            if (!message.empty() && message.back() == '.')
+              message.pop_back();
             AssertThrow(false,
-                        ExcMessage("--set " + assignment + ": " +
-                                   one_line_message(e)));
+                        ExcMessage("--set " + assignment + ": " + message +
+                                   did_you_mean(prm, joined, false)));
           }
         for (; entered > 0; --entered)
           prm.leave_subsection();

@@ -5,6 +5,7 @@
 #include <bilayer/estimator.h>
 #include <bilayer/outer_solver.h>
 #include <bilayer/output.h>
+#include <bilayer/progress.h>
 #include <bilayer/resources.h>
 #include <bilayer/study.h>
 #include <bilayer/tasks.h>
@@ -83,11 +84,35 @@ namespace bilayer
                "spelling of fixed number (that fraction of the cells, "
                "deal.II's fixed number); deal.II's fixed fraction is bulk"
             << std::endl;
+    const IterationClock clock;
+    std::vector<double>  seconds, dofs;
     for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
       {
         const CycleRecord &record = run_cycle(cycle);
         if (!record.accepted())
           return false;
+        // The time left: the unknowns grow by 4 per cycle under global
+        // refinement, else as from the previous cycle (1.5 at first).
+        seconds.push_back(record.total_seconds);
+        dofs.push_back(record.dofs);
+        const unsigned int n_left = scene.mesh.n_cycles - cycle - 1;
+        if (n_left > 0)
+          {
+            const double growth =
+              scene.mesh.refinement == Refinement::global ?
+                4. :
+              dofs.size() >= 2 ?
+                std::max(1., dofs.back() / dofs[dofs.size() - 2]) :
+                1.5;
+            std::vector<double> ahead(1, dofs.back() * growth);
+            while (ahead.size() < n_left)
+              ahead.push_back(ahead.back() * growth);
+            pcout << "  elapsed " << format_duration(clock.elapsed())
+                  << ", about "
+                  << format_duration(time_left(seconds, dofs, ahead))
+                  << " left for " << n_left << " more cycle"
+                  << (n_left > 1 ? "s" : "") << std::endl;
+          }
       }
     if (scene.output.terminal == TerminalOutput::full && distribution.is_root())
       {
@@ -329,13 +354,15 @@ namespace bilayer
       record.energy += e;
     record.report = bilayer::assess(coupling, w, mu);
     check(record);
-    if (scene.mesh.refinement == Refinement::adaptive)
-      indicators = estimate_error(subproblem_views(),
-                                  coupling,
-                                  w,
-                                  mu,
-                                  scene.mesh.interface_terms,
-                                  scene.mesh.contact_weight);
+    // The indicators mark the next adaptive cycle; their global sum is
+    // reported on every mesh.
+    indicators = estimate_error(subproblem_views(),
+                                coupling,
+                                w,
+                                mu,
+                                scene.mesh.interface_terms,
+                                scene.mesh.contact_weight,
+                                &record.eta);
   }
 
 
@@ -370,14 +397,21 @@ namespace bilayer
 
 
   void
-  Study::write_records(const unsigned int cycle) const
+  Study::write_records(const unsigned int cycle)
   {
     const std::string &dir = scene.output.directory;
-    if (scene.output.write_interface)
-      write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
-                       [&](std::ostream &o) {
-                         write_interface_csv(o, coupling, w, mu);
-                       });
+    if (scene.output.write_interface || scene.output.write_vtu)
+      {
+        const std::vector<InterfaceNode> nodes =
+          interface_nodes(coupling, w, mu, scene.solver.acceptance_tolerance);
+        if (scene.output.write_interface)
+          write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
+                           [&](std::ostream &o) {
+                             write_interface_csv(o, nodes);
+                           });
+        if (scene.output.write_vtu)
+          write_interface_vtu(dir, cycle, nodes, outputs);
+      }
     write_atomically(dir + "/summary.json", [&](std::ostream &o) {
       write_summary_json(o, scene.name, cycle_records);
     });
@@ -456,6 +490,8 @@ namespace bilayer
     pcout << ")\n"
           << std::scientific << std::setprecision(4)
           << "  energy Pi                    " << record.energy << "\n"
+          << "  error estimate eta           " << record.eta
+          << "  (energy norm, sqrt(2 (Pi_h - Pi)) by the estimator)\n"
           << "  constraint violation (12)    " << r.constraint_violation
           << "  (relative " << r.relative_constraint_violation << ")\n"
           << "  largest interpenetration     " << r.max_penetration

@@ -40,8 +40,12 @@ namespace bilayer
     SolverResult result;
     /// Extreme eigenvalues of the dual operator (Solver/Dual spectrum
     /// steps; zero when not estimated).
-    DualSpectrum    spectrum;
-    double          energy = 0;
+    DualSpectrum spectrum;
+    double       energy = 0;
+    /// The global a-posteriori error estimate in the energy norm
+    /// (estimate_error(), estimator.h), [energy^1/2]: compare with
+    /// (2 |Pi_h - Pi|)^1/2.
+    double          eta = 0;
     InterfaceReport report;
     /// Acceptance checks: (description, passed).
     std::vector<std::pair<std::string, bool>> checks;

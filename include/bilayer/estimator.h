@@ -31,6 +31,14 @@ namespace bilayer
    * among the faces by overlap; an energy over 2 mu, so again a squared
    * length): the discrete constraints hold at the nodes only, and the product
    * is non-zero on the segment where the contact zone ends.
+   *
+   * With @p global_estimate, also the global estimate in the units of the
+   * energy norm,
+   *   eta = (sum over the four subproblems s of 2 mu_s sum_K eta_K(s)^2)^1/2,
+   * each layer's squared indicators (squared lengths) times twice its shear
+   * modulus: an energy (per unit thickness), to be compared with
+   * a(e, e) = 2 (Pi_h - Pi) of the error e = u - u_h (the efficiency index
+   * eta / (2 |Pi_h - Pi|)^1/2 of scripts/mesh_convergence).
    */
   std::array<dealii::Vector<float>, Layout::n_subdomains>
   estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
@@ -38,7 +46,8 @@ namespace bilayer
                  const Solutions                                &solutions,
                  const dealii::BlockVector<double>              &multipliers,
                  const bool   interface_terms,
-                 const double contact_weight = 1);
+                 const double contact_weight  = 1,
+                 double      *global_estimate = nullptr);
 } // namespace bilayer
 
 #endif

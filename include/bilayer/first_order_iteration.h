@@ -7,6 +7,7 @@
 #include <bilayer/interface.h>
 #include <bilayer/outer_solver.h>
 #include <bilayer/parameters.h>
+#include <bilayer/progress.h>
 #include <bilayer/subdomain_solves.h>
 
 #include <string>
@@ -98,7 +99,9 @@ namespace bilayer
                  const double                       last_increment);
 
   /// Every Output/Progress interval steps: the stopping value, the last
-  /// multiplier change and the relative violation, one line.
+  /// multiplier change, the relative violation, the elapsed time and the
+  /// time left to reach @p tolerance at the present rate (@p clock), one
+  /// line.
   void
   print_progress(const OutputParameters            &output,
                  const dealii::ConditionalOStream  &pcout,
@@ -107,7 +110,9 @@ namespace bilayer
                  const double                       last_increment,
                  const Interface                   &interface,
                  const Solutions                   &w,
-                 const dealii::BlockVector<double> &g);
+                 const dealii::BlockVector<double> &g,
+                 IterationClock                    &clock,
+                 const double                       tolerance);
 
   /**
    * The message of a first-order iteration stopped at Solver/Maximum
@@ -224,6 +229,9 @@ namespace bilayer
     /// SolverResult::solver.
     const std::string name;
     const StepBound   step_bound;
+    /// The time of the iteration for the progress lines (started by
+    /// solve()).
+    mutable IterationClock clock;
   };
 } // namespace bilayer
 

@@ -1,6 +1,8 @@
 #ifndef bilayer_interface_diagnostics_h
 #define bilayer_interface_diagnostics_h
 
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/lac/block_vector.h>
 
 #include <bilayer/trace_coupling.h>
@@ -114,12 +116,79 @@ namespace bilayer
                    const Solutions                   &w,
                    const dealii::BlockVector<double> &mu);
 
-  /// One row per node of mu_1: x, jumps, gaps, multipliers, traces.
+  /// The state of Sigma at a node of the mesh of mu_1.
+  enum class ContactState
+  {
+    /// A crack node with an open gap.
+    open = 0,
+    /// A crack node in contact: mu_c > 0, or the normal jump within the
+    /// tolerance (relative to the displacement scale) of zero.
+    closed = 1,
+    /// A node of the glued part (the crack tips included).
+    glued = 2
+  };
+
+  /**
+   * What is reported at one node of the mesh of mu_1 (the multiplier
+   * across Sigma). Vectors are in the node's frame: component 0 along the
+   * tangent tangent_of(normal), component 1 along the normal nu (x and y on
+   * the rectangle).
+   */
+  struct InterfaceNode
+  {
+    /// Parameter s on Sigma, the point and the node's normal nu.
+    double               s;
+    dealii::Point<2>     point;
+    dealii::Tensor<1, 2> normal;
+    bool                 on_crack;
+    /// A node of the glued part next to a crack node.
+    bool         crack_tip;
+    ContactState state;
+    /// [u].nu and [u].tau of layer 1, u+ - u- [length].
+    double jump_normal, jump_tangential;
+    /// The contact multiplier (0 off the crack) and the gluing multiplier
+    /// across Sigma (0 on the crack) [stress].
+    double               mu_c;
+    dealii::Tensor<1, 2> mu_g;
+    /// The multipliers between the layers on each side at the node.
+    dealii::Tensor<1, 2> mu_minus, mu_plus;
+    /// Traces of u-, u+, v-, v+ (Layout's order) [length].
+    PerSubproblem<dealii::Tensor<1, 2>> trace;
+    /**
+     * The normal traction transmitted across Sigma, compression positive
+     * [stress]: mu_c on the crack, the normal component of the gluing
+     * multiplier on the glued part.
+     */
+    double normal_traction;
+    /**
+     * The pressure between the crack faces [stress]: mu_c on the crack; at
+     * a crack tip, where the constraint is the gluing one and mu_c is not
+     * defined, the compressive part max(normal_traction, 0) (the pressure
+     * the faces transmit as they meet at the tip, not a drop to zero); 0 on
+     * the rest of the glued part.
+     */
+    double contact_pressure;
+  };
+
+  /**
+   * Every node of the mesh of mu_1, in the order of its numbering; a crack
+   * node is closed when mu_c > 0 or its normal jump is at most
+   * @p closed_tolerance times the displacement scale.
+   */
+  std::vector<InterfaceNode>
+  interface_nodes(const Interface                   &interface,
+                  const Solutions                   &w,
+                  const dealii::BlockVector<double> &mu,
+                  const double                       closed_tolerance = 1e-6);
+
+  /**
+   * One row per node of mu_1: x, jumps, multipliers, gaps, traces (frame
+   * components), s, y, the normal, the contact pressure, the normal traction
+   * and the state (0 open, 1 closed, 2 glued) of interface_nodes().
+   */
   void
-  write_interface_csv(std::ostream                      &out,
-                      const Interface                   &interface,
-                      const Solutions                   &w,
-                      const dealii::BlockVector<double> &mu);
+  write_interface_csv(std::ostream                     &out,
+                      const std::vector<InterfaceNode> &nodes);
 } // namespace bilayer
 
 #endif

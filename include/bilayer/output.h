@@ -4,6 +4,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <bilayer/interface.h>
+#include <bilayer/interface_diagnostics.h>
 #include <bilayer/material.h>
 #include <bilayer/outer_solver.h>
 #include <bilayer/output_directory.h>
@@ -59,6 +60,8 @@ namespace bilayer
     std::vector<std::pair<double, std::string>> pvd;
     /// Per cycle: the XDMF grids of the pieces (solution.xdmf).
     std::vector<std::pair<unsigned int, std::vector<std::string>>> xdmf;
+    /// (cycle, interface-NN.vtu) for interface.pvd.
+    std::vector<std::pair<double, std::string>> interface_pvd;
   };
 
   /**
@@ -81,6 +84,26 @@ namespace bilayer
                  const Solutions                                &solutions,
                  const OutputParameters                         &parameters,
                  SolutionRecords                                &records);
+
+  /**
+   * The interface dataset of one cycle, interface-NN.vtu, and
+   * interface.pvd over the cycles written so far: the polyline along Sigma
+   * through the nodes of the multiplier across Sigma (@p nodes, from
+   * interface_nodes(); a line cell between neighbours in s), undeformed,
+   * with the point data
+   *  - contact_pressure, normal_traction, mu_c [stress] (InterfaceNode),
+   *  - jump_normal, jump_tangential: [u].nu and [u].tau of layer 1 [length],
+   *  - state: 0 open, 1 closed (in contact), 2 glued; crack_tip: 1 at the
+   *    glued nodes next to the crack; s: the parameter on Sigma,
+   *  - the vectors (x, y components) normal, mu_g, mu_minus, mu_plus
+   *    [stress] and the layers' traces u_minus, u_plus, v_minus, v_plus
+   *    [length].
+   */
+  void
+  write_interface_vtu(const std::string                &directory,
+                      const unsigned int                cycle,
+                      const std::vector<InterfaceNode> &nodes,
+                      SolutionRecords                  &records);
 } // namespace bilayer
 
 #endif

@@ -126,7 +126,7 @@ namespace bilayer
     /// The interface-NN.csv of this cycle, and summary.json, table.txt,
     /// table.tex and table.csv of all cycles so far (first process).
     void
-    write_records(const unsigned int cycle) const;
+    write_records(const unsigned int cycle);
     void
     print_report(const CycleRecord &record) const;
 
