@@ -1,4 +1,4 @@
-// Example 1 of the paper (paper.md §5, parameter_files/partial_closure.prm)
+// Example 1 of the paper (docs/problem.md §5, parameter_files/partial_closure.prm)
 // rotated by 30 degrees counter-clockwise about the origin.
 //
 // Specimen: the square (-1,1)^2 (lengths in the unit of the geometry),

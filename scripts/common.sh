@@ -4,8 +4,11 @@
 #   print_help [SCRIPT]          the leading comment block of SCRIPT (default:
 #                                the calling script) without its '# '
 #   missing_packages PACKAGE...  those of the Debian packages not installed
-#   install_packages PACKAGE...  apt-get update and install (sudo when not
-#                                root), without questions
+#   install_packages PACKAGE...  apt-get update (once per run) and install
+#                                (sudo when not root), without questions
+#   have_apt                     whether this machine installs packages with
+#                                apt-get (Debian and derivatives)
+#   missing_commands COMMAND...  those of the commands not in PATH
 # With --help or -h as the first argument, prints the help of the sourcing
 # script and exits 0.
 
@@ -34,11 +37,26 @@ missing_packages() {
   done
 }
 
+apt_updated=0
 install_packages() {
   local sudo=()
   [[ $(id -u) -ne 0 ]] && sudo=(sudo)
-  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+  if ((!apt_updated)); then
+    "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+    apt_updated=1
+  fi
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "$@"
+}
+
+have_apt() {
+  command -v apt-get > /dev/null && command -v dpkg-query > /dev/null
+}
+
+missing_commands() {
+  local c
+  for c in "$@"; do
+    command -v "$c" > /dev/null || echo "$c"
+  done
 }
 
 if [[ "${1:-}" == --help || "${1:-}" == -h ]]; then

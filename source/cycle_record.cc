@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <bilayer/build_info.h>
 #include <bilayer/cycle_record.h>
 
 #include <algorithm>
@@ -348,7 +349,11 @@ namespace bilayer
                      const std::string              &scene,
                      const std::vector<CycleRecord> &records)
   {
-    out << "{\n  \"scene\": " << json(scene) << ",\n  \"cycles\": [";
+    out << "{\n  \"scene\": " << json(scene) << ",\n  \"build\": {"
+        << "\"bilayer\": " << json(version())
+        << ", \"git_commit\": " << json(git_commit())
+        << ", \"deal_ii\": " << json(deal_ii_version())
+        << ", \"blas\": " << json(blas_library()) << "},\n  \"cycles\": [";
     for (unsigned int i = 0; i < records.size(); ++i)
       {
         out << (i ? "," : "") << "\n    {";

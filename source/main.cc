@@ -1,8 +1,10 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <bilayer/build_info.h>
 #include <bilayer/distribution.h>
 #include <bilayer/output.h>
 #include <bilayer/output_directory.h>
@@ -32,6 +34,9 @@ namespace
     out << "Usage: bilayer PARAMETER_FILE.prm [--set Section/Entry=value ...]\n"
            "       bilayer --print-parameters   print every entry with its "
            "default and documentation\n"
+           "       bilayer --version            print the version, the git "
+           "commit, deal.II's\n"
+           "                                    version and the BLAS in use\n"
            "       bilayer --help               print this message\n\n"
            "--set overrides an entry of the file, e.g.\n"
            "  --set \"Solver/Uzawa step theta=70\" --set "
@@ -49,7 +54,8 @@ namespace
     {
       run,
       help,
-      print_parameters
+      print_parameters,
+      version
     } action = Action::run;
     std::string              parameter_file;
     std::vector<std::string> overrides;
@@ -89,6 +95,8 @@ namespace
           command.action = CommandLine::Action::help;
         else if (arg == "--print-parameters")
           command.action = CommandLine::Action::print_parameters;
+        else if (arg == "--version")
+          command.action = CommandLine::Action::version;
         else if (arg == "--set")
           {
             AssertThrow(i + 1 < argc,
@@ -115,10 +123,13 @@ namespace
             command.parameter_file = arg;
           }
       }
-    AssertThrow(command.action != CommandLine::Action::print_parameters ||
+    AssertThrow((command.action != CommandLine::Action::print_parameters &&
+                 command.action != CommandLine::Action::version) ||
                   (command.parameter_file.empty() && command.overrides.empty()),
-                ExcMessage("--print-parameters prints every entry with its "
-                           "default and takes no parameter file or --set"));
+                ExcMessage("--print-parameters and --version take no "
+                           "parameter file or --set"));
+
+
     AssertThrow(command.action != CommandLine::Action::run ||
                   !command.parameter_file.empty(),
                 ExcMessage(std::string("no parameter file given (") +
@@ -154,6 +165,15 @@ main(int argc, char **argv)
             print_usage(std::cout);
           return 0;
         }
+      if (command.action == CommandLine::Action::version)
+        {
+          if (reporter)
+            std::cout << "bilayer " << bilayer::version() << " (git commit "
+                      << bilayer::git_commit() << ")\ndeal.II "
+                      << bilayer::deal_ii_version() << "\nBLAS "
+                      << bilayer::blas_library() << std::endl;
+          return 0;
+        }
       if (command.action == CommandLine::Action::print_parameters)
         {
           bilayer::Scene::declare_parameters(prm);
@@ -186,6 +206,13 @@ main(int argc, char **argv)
   // cores of the node divided among its processes.
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   const bilayer::Distribution     &processes = bilayer::Distribution::world();
+  // The four subproblems are factorised and solved as parallel tasks, each
+  // calling the BLAS: a threaded BLAS gets this process's threads divided
+  // among them (one each on a machine with fewer than eight cores), so that
+  // the two kinds of threads do not compete for the cores.
+  bilayer::set_blas_threads(
+    std::max(1u,
+             MultithreadInfo::n_threads() / bilayer::Layout::n_subproblems));
 
   // The memory each process sees may differ a little: the processes decide
   // together whether the scene fits.
@@ -247,8 +274,18 @@ main(int argc, char **argv)
                           bilayer::format_bytes(output->free_bytes()) +
                           " are free on its file system: make room, choose "
                           "another directory or set Output/Write VTU = false"));
-            prm.print_parameters(output->staging() + "/used_parameters.prm",
-                                 ParameterHandler::ShortPRM);
+            // Every entry as used, after the versions that used them.
+            std::ostringstream used;
+            used << "# bilayer " << bilayer::version() << ", git commit "
+                 << bilayer::git_commit() << ", deal.II "
+                 << bilayer::deal_ii_version() << "\n# BLAS "
+                 << bilayer::blas_library() << "\n";
+            prm.print_parameters(used, ParameterHandler::ShortPRM);
+            bilayer::write_atomically(output->staging() +
+                                        "/used_parameters.prm",
+                                      [&](std::ostream &out) {
+                                        out << used.str();
+                                      });
             problem = output->staging();
           }
         catch (const ExceptionBase &e)
@@ -267,7 +304,9 @@ main(int argc, char **argv)
       processes.broadcast(ready, problem);
       if (!ready)
         return refuse(problem);
-      scene.output.directory = problem;
+      // (As the user wrote it, for the last line of a successful run.)
+      const std::string requested = scene.output.directory;
+      scene.output.directory      = problem;
 
       bilayer::Study study(scene, std::cout, processes);
       bool           passed = false;
@@ -303,7 +342,7 @@ main(int argc, char **argv)
                     << where << ")" << std::endl;
           return 2;
         }
-      std::cout << "bilayer: results are in " << where << std::endl;
+      std::cout << "bilayer: results are in " << requested << std::endl;
       return 0;
     }
   catch (const bilayer::CollectiveError &e)

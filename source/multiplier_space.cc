@@ -185,7 +185,7 @@ namespace bilayer
             mesh.dual(i, k) = integral(i) * inverse(i, k);
       }
 
-    // Multiplier sets (paper.md §3) as bounds per component.
+    // Multiplier sets (docs/problem.md §3) as bounds per component.
     const double    p     = contact.multiplier_bound;
     const CrackSet &crack = curve.crack();
     // The ends of Sigma on Gamma_D.

@@ -755,7 +755,7 @@ namespace bilayer
                       "uzawa",
                       Patterns::Selection("uzawa|accelerated|active set"),
                       "Outer solver on the multipliers: uzawa (the paper's "
-                      "projected Uzawa iteration, paper.md section 4), "
+                      "projected Uzawa iteration, docs/problem.md section 4), "
                       "accelerated (the same projected step with FISTA "
                       "momentum and adaptive restart; with theta = auto its "
                       "step is Auto theta fraction / lambda_max) or active "

@@ -1,5 +1,8 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/multithread_info.h>
 
+#include <bilayer/build_info.h>
+#include <bilayer/layout.h>
 #include <bilayer/resources.h>
 
 #include <algorithm>
@@ -18,6 +21,23 @@ namespace bilayer
   {
     /// Memory of the program before any mesh: libraries, MPI, threads.
     constexpr double base_memory = 150. * (1 << 20);
+
+    /// A size in /proc/self/status (e.g. "VmSize") in bytes; 0 if unknown.
+    double
+    self_status(const std::string &key)
+    {
+      std::ifstream in("/proc/self/status");
+      std::string   line;
+      while (std::getline(in, line))
+        if (line.rfind(key + ":", 0) == 0)
+          {
+            std::istringstream value(line.substr(key.size() + 1));
+            double             kib = 0;
+            value >> kib;
+            return kib * 1024;
+          }
+      return 0;
+    }
 
     /// Bytes per degree of freedom of a subproblem with n dofs and
     /// polynomial degree k: matrix, factor (fill ~ n log n), vectors.
@@ -127,7 +147,24 @@ namespace bilayer
     double        available = meminfo("MemAvailable");
     struct rlimit limit;
     if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
-      available = std::min(available, double(limit.rlim_cur));
+      {
+        // A limit of the address space (ulimit -v): what is left of it,
+        // the base the estimates count being mapped already, less the work
+        // buffers an OpenBLAS maps on its first call from each thread (its
+        // BUFFER_SIZE, 32 << 22 bytes on x86-64, per thread that calls it:
+        // at most one per subproblem task). OpenBLAS does not survive a
+        // failed allocation of these buffers (it retries or crashes), so
+        // the run must be refused before.
+        const bool   openblas = blas_library().rfind("OpenBLAS", 0) == 0;
+        const double buffers =
+          openblas ? std::min<double>(Layout::n_subproblems,
+                                      MultithreadInfo::n_threads()) *
+                       double(32ul << 22) :
+                     0.;
+        available = std::min(available,
+                             double(limit.rlim_cur) - self_status("VmSize") +
+                               base_memory - buffers);
+      }
     std::ifstream cgroup("/sys/fs/cgroup/memory.max");
     std::string   text;
     if (cgroup >> text && text != "max")

@@ -74,7 +74,7 @@ namespace
   }
 
   /// K w for subproblem s of @p study (Q1, plane strain, the moduli of
-  /// paper.md §5 written out here), by its own assembly.
+  /// docs/problem.md §5 written out here), by its own assembly.
   Vector<double>
   stiffness_times(const Study &study, const unsigned int s)
   {

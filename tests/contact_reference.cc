@@ -1,5 +1,5 @@
-// Example 1 of the paper (partial closure of the crack faces, paper.md §5)
-// on 8 + 8 x 4 quadrilaterals: the Uzawa solution of bilayer::Study against
+// Example 1 of the paper (partial closure of the crack faces, docs/problem.md
+// §5) on 8 + 8 x 4 quadrilaterals: the Uzawa solution of bilayer::Study against
 // an independent reference solution of the SAME discrete contact problem by
 // a primal-dual active set method.
 //
@@ -13,8 +13,8 @@
 // (v in favour of u, u+ in favour of u-), the condensed system is solved by
 // SparseDirectUMFPACK. The contact force at an active vertex a is read from
 // the residual r = K w - F of the constrained solution: with the Lagrangian
-// of paper.md §3, the layer-1 multiplier mu_c acts on the upper face as the
-// load +D_a mu_c (D_a the lumped weight of the vertex), so that
+// of docs/problem.md §3, the layer-1 multiplier mu_c acts on the upper face as
+// the load +D_a mu_c (D_a the lumped weight of the vertex), so that
 //   mu_c(a) = (r(u+_y(a)) + r(v+_y(a))) / D_a,
 // the gluing multiplier lambda+ cancelling in the sum; mu_c >= 0 is
 // compressive. Active set update: an active vertex with mu_c < 0 (tensile)

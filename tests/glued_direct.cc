@@ -1,8 +1,8 @@
 // The decomposed Uzawa solution of a problem WITHOUT crack equals the direct
 // solution of the same discrete glued problem.
 //
-// Without a crack the constraints of the split problem (paper.md §2, lumped
-// coupling = nodal constraints at the vertices of Sigma) say: layer 1 is
+// Without a crack the constraints of the split problem (docs/problem.md §2,
+// lumped coupling = nodal constraints at the vertices of Sigma) say: layer 1 is
 // continuous across Sigma, and layer 1 equals layer 2 at every vertex of
 // Sigma. On matching meshes this is exactly the Q1 space of ONE mesh of the
 // whole square for each layer, with v = u at the vertices of Sigma. This test

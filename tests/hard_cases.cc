@@ -13,7 +13,7 @@
 //    scales with s^2 and the (scale-invariant) Newton count is unchanged;
 //  - a bound p below the contact pressure: the run is refused, with a note
 //    naming the parameter, and the constraint violation falls as p grows
-//    (estimate (12) of paper.md).
+//    (estimate (12) of docs/problem.md).
 
 #include <bilayer/parameters.h>
 #include <bilayer/study.h>

@@ -109,7 +109,7 @@ main()
   text << json.rdbuf();
   // The keys of the file and those of every field of a cycle's record, in
   // this order.
-  std::vector<std::string> keys = {"scene", "cycles"};
+  std::vector<std::string> keys = {"scene", "build", "cycles"};
   for (const std::string &key : CycleRecord::json_keys())
     keys.push_back(key);
   bool        all_keys = true;

@@ -22,9 +22,9 @@
 // plane-strain stiffness (reference.h) for the four subproblems u-, u+, v-,
 // v+ in one global system, clamped at x = -1 and x = 1 (the dofs whose
 // support point lies there), the tractions of layer 1 on the bottom and
-// top, E and nu of paper.md §5 written out here. The interface constraints
-// are rows of a matrix B, imposed with Lagrange multipliers in the saddle
-// point system [K B_A^T; B_A 0] (SparseDirectUMFPACK):
+// top, E and nu of docs/problem.md §5 written out here. The interface
+// constraints are rows of a matrix B, imposed with Lagrange multipliers in the
+// saddle point system [K B_A^T; B_A 0] (SparseDirectUMFPACK):
 //  - lumped coupling (nodal constraints, interface.h): at every node a of
 //    Sigma that is not clamped, u-(a) = v-(a) and u+(a) = v+(a); off the
 //    crack (crack tips included) u-(a) = u+(a); at the nodes strictly inside

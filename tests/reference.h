@@ -9,15 +9,15 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
-/// The loads of Example 1 (paper.md §5) as a Loads subsection.
+/// The loads of Example 1 (docs/problem.md §5) as a Loads subsection.
 inline const char *const example1_loads =
   "subsection Loads\n set Constants = c = 1e-3*mu1\n"
   " subsection Layer 1\n"
   "  set Traction on bottom side = 0; c*x\n"
   "  set Traction on top side = 0; -c*x\n end\nend\n";
 
-/// The materials of Example 1 (paper.md §5, in GPa), written out here rather
-/// than taken from the Scene, so that the references do not share the
+/// The materials of Example 1 (docs/problem.md §5, in GPa), written out here
+/// rather than taken from the Scene, so that the references do not share the
 /// library's parsing.
 namespace example1_materials
 {

@@ -12,7 +12,7 @@ namespace bilayer
 {
   /**
    * Primal-dual active set method (a semismooth Newton method) on the dual
-   * problem of paper.md §3, with FETI-type preconditioned conjugate
+   * problem of docs/problem.md §3, with FETI-type preconditioned conjugate
    * gradients through the subdomain solves.
    *
    * <h3>The dual problem</h3>

@@ -176,7 +176,8 @@ namespace bilayer
     return field;
   }
 
-  /// summary.json: {"scene": ..., "cycles": [one object per record]}.
+  /// summary.json: {"scene": ..., "build": {"bilayer": version, "git_commit",
+  /// "deal_ii", "blas"} (build_info.h), "cycles": [one object per record]}.
   void
   write_summary_json(std::ostream                   &out,
                      const std::string              &scene,

@@ -26,10 +26,9 @@ namespace bilayer
    * solution and the CSV writer are in interface_diagnostics.h.
    *
    * <h3>Discrete problem and update</h3>
-   * The multiplier terms of the four subproblems (paper.md §4, step 2) are
-   *   u-: -C^T (mu_1 + mu-),  u+: C^T (mu_1 - mu+),  v-: C^T mu-,
-   *   v+: C^T mu+.
-   * The jumps are g_1 = D^{-1} (C u- - C u+), g- = D^{-1} (C u- - C v-),
+   * The multiplier terms of the four subproblems (docs/problem.md §4, step 2)
+   * are u-: -C^T (mu_1 + mu-),  u+: C^T (mu_1 - mu+),  v-: C^T mu-, v+: C^T
+   * mu+. The jumps are g_1 = D^{-1} (C u- - C u+), g- = D^{-1} (C u- - C v-),
    * g+ = D^{-1} (C u+ - C v+) ("weighted": the gradient of the Lagrangian in
    * the D-metric, so that the Uzawa step mu <- P(mu + theta g) is a
    * projected gradient step of the dual problem; the projection onto the

@@ -28,7 +28,7 @@ namespace bilayer
    *    max |mu| times the displacement scale.
    * A multiplier held at a bound by a jump pushing it outward (at +-p, or
    * mu_c = 0 with an open gap) is optimal for the bounded problem of
-   * paper.md §3, so its jump counts as no violation and no
+   * docs/problem.md §3, so its jump counts as no violation and no
    * complementarity: the residual measures the solution of the problem
    * with the bound p. Whether p is active is checked separately (the
    * constraints are then violated, estimate (12)).
@@ -45,12 +45,13 @@ namespace bilayer
   };
 
   /**
-   * Residuals of a computed solution (paper.md §3 and the KKT conditions of
-   * the discrete problem).
+   * Residuals of a computed solution (docs/problem.md §3 and the KKT conditions
+   * of the discrete problem).
    */
   struct InterfaceReport
   {
-    /// The integral (12) of paper.md, Gauss quadrature on Sigma [length^2].
+    /// The integral (12) of docs/problem.md, Gauss quadrature on Sigma
+    /// [length^2].
     double constraint_violation = 0;
     /// (12) divided by the integral of |u-|_1 + |u+|_1 + |v-|_1 + |v+|_1.
     double relative_constraint_violation = 0;

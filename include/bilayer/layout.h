@@ -30,7 +30,7 @@ namespace bilayer
     plus  = 1
   };
 
-  /// The three multiplier blocks (paper.md §3).
+  /// The three multiplier blocks (docs/problem.md §3).
   enum class MultiplierBlock
   {
     /// mu_1: layer 1 across Sigma (u- against u+), contact on the crack.

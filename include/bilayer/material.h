@@ -10,7 +10,7 @@
 namespace bilayer
 {
   /**
-   * The plane-strain linear elastic law of one layer (paper.md §1):
+   * The plane-strain linear elastic law of one layer (docs/problem.md §1):
    *   sigma(w) = 2 mu eps(w) + lambda tr(eps(w)) I,
    *   sigma_zz = lambda tr(eps(w))   (eps_zz = 0),
    * with the Lame constants of LayerMaterial. The one place where stresses

@@ -23,8 +23,8 @@ namespace bilayer
                     const double               tol);
 
   /**
-   * The multiplier spaces on Sigma (paper.md §3, docs/multipliers.md): for
-   * each of the three blocks (Layout::blocks) a mesh of Sigma, continuous
+   * The multiplier spaces on Sigma (docs/problem.md §3, docs/multipliers.md):
+   * for each of the three blocks (Layout::blocks) a mesh of Sigma, continuous
    * Lagrange elements of a degree of its own on it whose nodes are the
    * Gauss-Lobatto points of each segment, the lumped mass D (one weight per
    * node), and the multiplier set as bounds per component. A vector of

@@ -14,8 +14,8 @@
 
 /**
  * @file
- * The outer solvers on the multipliers of the dual problem (paper.md §3):
- * one interface, OuterSolver, and the factory that picks the solver of
+ * The outer solvers on the multipliers of the dual problem (docs/problem.md
+ * §3): one interface, OuterSolver, and the factory that picks the solver of
  * Solver/Method: UzawaSolver (the paper's projected Uzawa iteration,
  * uzawa_solver.h), AcceleratedSolver (FISTA with adaptive restart,
  * accelerated_solver.h), ActiveSetSolver (semismooth Newton with

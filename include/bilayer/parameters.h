@@ -91,7 +91,7 @@ namespace bilayer
    * Stopping rules of the Uzawa iteration.
    * - `paper`: max over the four subproblems of
    *   ||w^k - w^{k-1}|| / ||w^k||^2 < tol (energy norms), as printed in the
-   *   paper (paper.md §5); not scale invariant.
+   *   paper (docs/problem.md §5); not scale invariant.
    * - `paper_norm`: the same with ||w^k|| in the denominator.
    * - `relative`: the relative change of the multipliers and the relative
    *   violation of the discrete constraints both below tol.

@@ -22,9 +22,9 @@
 namespace bilayer
 {
   /**
-   * One of the four linear elasticity subproblems of paper.md §2: one layer
-   * (u or v) on one subdomain (Omega- or Omega+), plane strain,
-   * sigma(w) = 2 mu eps(w) + lambda tr(eps(w)) I.
+   * One of the four linear elasticity subproblems of docs/problem.md §2: one
+   * layer (u or v) on one subdomain (Omega- or Omega+), plane strain, sigma(w)
+   * = 2 mu eps(w) + lambda tr(eps(w)) I.
    *
    * It owns its FESystem (two Lagrange components of the layer's degree, on
    * quadrilaterals or triangles as the mesh has), its DoFHandler and its

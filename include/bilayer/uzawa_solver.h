@@ -12,7 +12,7 @@
 namespace bilayer
 {
   /**
-   * The Uzawa algorithm of paper.md §4:
+   * The Uzawa algorithm of docs/problem.md §4:
    *   1. mu^0 given (zero, or a warm start);
    *   2. solve the subproblems with the multiplier loads of mu^k;
    *   3. mu^{k+1} = P(mu^k + theta g^k), g^k the jumps (Interface::jumps);

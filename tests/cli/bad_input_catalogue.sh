@@ -96,7 +96,8 @@ check "no arguments" "no parameter file given"
 check "two parameter files" "more than one parameter file given" "$prm" "$prm"
 check "--set without a value" "--set needs a value" "$prm" --set
 check "unknown option" "unknown option '--frobnicate'" "$prm" --frobnicate
-check "--print-parameters with a file" "--print-parameters prints every entry with its default and takes no parameter file" --print-parameters "$prm"
+check "--print-parameters with a file" "--print-parameters and --version take no parameter file" --print-parameters "$prm"
+check "--version with a file" "--print-parameters and --version take no parameter file" --version "$prm"
 check "--set without '='" "--set expects 'Section/Entry=value'" "$prm" --set "Mesh/Cells along Sigma"
 check "--set of an unknown entry" "--set Mesh/Cels along Sigma=8" "$prm" --set "Mesh/Cels along Sigma=8"
 

@@ -1,0 +1,86 @@
+#ifndef bilayer_build_info_h
+#define bilayer_build_info_h
+
+#include <string>
+
+namespace bilayer
+{
+  /**
+   * @name Build information
+   *
+   * What this program is and what it runs on, for `bilayer --version` and
+   * the summary of a run: the version and git commit of bilayer, the
+   * deal.II it was compiled with, and the BLAS that this process loaded
+   * (which the Cholesky factorisations of CHOLMOD use; on Debian it is
+   * chosen at run time by update-alternatives, not at build time).
+   */
+  /** @{ */
+
+  /**
+   * The version of bilayer, e.g. "0.9.0" (set once, by project() in
+   * CMakeLists.txt).
+   */
+  std::string
+  version();
+
+  /**
+   * The git commit of the source tree when this library was built: the
+   * short hash of HEAD, e.g. "75c36da", followed by "-dirty" when tracked
+   * files had uncommitted changes, or "unknown" when the sources were not
+   * a git checkout or git was missing. It is determined at every build,
+   * so it is right after a new commit without re-running cmake.
+   */
+  std::string
+  git_commit();
+
+  /**
+   * The version of deal.II that bilayer was compiled with
+   * (DEAL_II_PACKAGE_VERSION, e.g. "9.4.1"), followed by " (git
+   * SHORTREV)" when that deal.II was built from a git checkout.
+   */
+  std::string
+  deal_ii_version();
+
+  /**
+   * The BLAS that this process uses, found at run time: the shared object
+   * that provides dgemm_ (as the dynamic loader resolved it, symbolic
+   * links resolved), named by the library itself where it can tell:
+   * - OpenBLAS: its configuration string and the path, e.g.
+   *   "OpenBLAS 0.3.21 DYNAMIC_ARCH NO_AFFINITY Haswell MAX_THREADS=64
+   *   (/usr/lib/x86_64-linux-gnu/openblas-pthread/libblas.so.3)";
+   * - Intel MKL: its version string and the path;
+   * - BLIS: "BLIS" with its version and the path;
+   * - Debian's reference BLAS: "reference BLAS
+   *   (/usr/lib/x86_64-linux-gnu/blas/libblas.so.3.11.0)";
+   * - any other: "BLAS (PATH)";
+   * - "unknown" when no BLAS is loaded or it cannot be located.
+   */
+  std::string
+  blas_library();
+
+  /**
+   * Set the number of threads of the loaded BLAS to @p n where the BLAS
+   * allows it (OpenBLAS: openblas_set_num_threads, Intel MKL:
+   * MKL_Set_Num_Threads, BLIS: bli_thread_set_num_threads), looked up at
+   * run time; @p n = 0 leaves it unchanged. Returns the number of threads
+   * in effect afterwards, as the BLAS reports it (OpenBLAS may cap @p n at
+   * the number it was built for), or 1 for a BLAS without threads (the
+   * reference BLAS) or an unknown one.
+   */
+  unsigned int
+  set_blas_threads(const unsigned int n);
+
+  /**
+   * Whether deal.II's Trilinos offers the Amesos direct solver
+   * @p solver_type (e.g. "Amesos_Mumps", "Amesos_Klu"), as
+   * TrilinosWrappers::SolverDirect needs it: a run can refuse an
+   * unavailable "Solver/Shared subproblem solver" before it starts instead
+   * of at the first factorisation. Always false without Trilinos.
+   */
+  bool
+  amesos_solver_available(const std::string &solver_type);
+
+  /** @} */
+} // namespace bilayer
+
+#endif
