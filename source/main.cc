@@ -13,6 +13,7 @@
 #include <bilayer/study.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -205,7 +206,12 @@ main(int argc, char **argv)
   // Distribution); without it this is a job of one process. Threads: the
   // cores of the node divided among its processes.
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
-  const bilayer::Distribution     &processes = bilayer::Distribution::world();
+  // PETSc, initialised with MPI, turns SIGHUP, SIGINT and SIGTERM into an
+  // error report and MPI_Abort: a stopped run ends by its signal instead, as
+  // any program does (the next run removes what it staged).
+  for (const int stop : {SIGHUP, SIGINT, SIGTERM})
+    std::signal(stop, SIG_DFL);
+  const bilayer::Distribution &processes = bilayer::Distribution::world();
   // The four subproblems are factorised and solved as parallel tasks, each
   // calling the BLAS: a threaded BLAS gets this process's threads divided
   // among them (one each on a machine with fewer than eight cores), so that
