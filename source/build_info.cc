@@ -2,12 +2,6 @@
 
 #include <deal.II/base/revision.h>
 
-#ifdef DEAL_II_WITH_TRILINOS
-DEAL_II_DISABLE_EXTRA_DIAGNOSTICS
-#  include <Amesos.h>
-DEAL_II_ENABLE_EXTRA_DIAGNOSTICS
-#endif
-
 #include <bilayer/build_info.h>
 // Generated at build time (cmake/BilayerGitCommit.cmake): BILAYER_GIT_COMMIT.
 #include <bilayer/git_commit.h>
@@ -240,16 +234,4 @@ namespace bilayer
     return 1;
   }
 
-
-  bool
-  amesos_solver_available(const std::string &solver_type)
-  {
-#ifdef DEAL_II_WITH_TRILINOS
-    Amesos factory;
-    return factory.Query(solver_type.c_str());
-#else
-    (void)solver_type;
-    return false;
-#endif
-  }
 } // namespace bilayer

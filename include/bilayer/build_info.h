@@ -70,16 +70,6 @@ namespace bilayer
   unsigned int
   set_blas_threads(const unsigned int n);
 
-  /**
-   * Whether deal.II's Trilinos offers the Amesos direct solver
-   * @p solver_type (e.g. "Amesos_Mumps", "Amesos_Klu"), as
-   * TrilinosWrappers::SolverDirect needs it: a run can refuse an
-   * unavailable "Solver/Shared subproblem solver" before it starts instead
-   * of at the first factorisation. Always false without Trilinos.
-   */
-  bool
-  amesos_solver_available(const std::string &solver_type);
-
   /** @} */
 } // namespace bilayer
 
