@@ -60,7 +60,7 @@ def argument_parser(doc):
 
 # The Debian package that provides each tool the scripts run.
 PACKAGES = {"gnuplot": "gnuplot-nox", "pvbatch": "paraview python3-paraview",
-            "xvfb-run": "xvfb", "xauth": "xauth", "gmsh": "gmsh",
+            "Xvfb": "xvfb", "gmsh": "gmsh",
             "mpirun": "openmpi-bin", "numdiff": "numdiff", "h5dump": "hdf5-tools"}
 
 

@@ -1,5 +1,5 @@
 """Render one figure of the paper with ParaView (run by scripts/render_figures
-through `xvfb-run -a pvbatch`): both layers of a bilayer result side by side,
+through `scripts/headless pvbatch`): both layers of a bilayer result side by side,
 deformed by the displacement times a magnification, coloured by the von Mises
 stress, with a colour bar.
 

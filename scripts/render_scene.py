@@ -1,5 +1,5 @@
 """Render a bilayer result of any geometry with ParaView (run by
-scripts/render_scenes through `xvfb-run -a pvbatch`): both layers side by
+scripts/render_scenes through `scripts/headless pvbatch`): both layers side by
 side (layer 2 shifted by 1.2 times the width of the specimen), deformed by
 the displacement times a magnification chosen so that the largest
 displacement appears as 8 % of the specimen's size, coloured by the von

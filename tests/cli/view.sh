@@ -12,7 +12,7 @@
 #    the result directory, a cycle out of range;
 #  - the result directory unchanged by all of it.
 # Exit status 77 (skipped) without pvbatch, or without a display and
-# xvfb-run. The exit status is the verdict otherwise.
+# Xvfb. The exit status is the verdict otherwise.
 # Usage: view.sh RESULT_DIR
 #        view.sh --run BILAYER PARAMETER_FILE   (first runs BILAYER on the
 #                                               file into a temporary directory)
@@ -29,8 +29,8 @@ fi
 command -v pvbatch > /dev/null || { echo "skipped: no pvbatch (Debian: paraview)"; exit 77; }
 runner=()
 if [[ -z ${DISPLAY:-} ]]; then
-  command -v xvfb-run > /dev/null || { echo "skipped: no display and no xvfb-run (Debian: xvfb)"; exit 77; }
-  runner=(xvfb-run -a)
+  command -v Xvfb > /dev/null || { echo "skipped: no display and no Xvfb (Debian: xvfb)"; exit 77; }
+  runner=("$root/scripts/headless")
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
