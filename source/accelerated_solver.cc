@@ -115,7 +115,12 @@ namespace bilayer
                                       SolverResult              &result) const
   {
     Solutions w_projected;
-    solve_subproblems(subproblems, interface, x, w_projected);
+    solve_subproblems(subproblems,
+                      interface,
+                      x,
+                      w_projected,
+                      parameters.iterates_on_sigma() ? SolveExtent::sigma :
+                                                       SolveExtent::whole);
     result.subdomain_solves += Layout::n_subproblems;
     bool accept = true;
     if (parameters.stopping_rule == StoppingRule::kkt)

@@ -145,6 +145,13 @@ namespace bilayer
     const BlockVector<double> &lower  = interface.space().lower_bounds();
     const BlockVector<double> &upper  = interface.space().upper_bounds();
     const auto                 finish = [&](const std::string &message) {
+      // The iterations solved on Sigma: the whole solutions of the last
+      // multipliers.
+      if (parameters.iterates_on_sigma())
+        {
+          solve_subproblems(subproblems, interface, mu, w);
+          result.subdomain_solves += Layout::n_subproblems;
+        }
       result.message = message;
       if (preconditioner.n_degraded_steps() > 0)
         result.message +=
@@ -162,7 +169,12 @@ namespace bilayer
 
     for (unsigned int k = 0;; ++k)
       {
-        solve_subproblems(subproblems, interface, mu, w);
+        solve_subproblems(subproblems,
+                          interface,
+                          mu,
+                          w,
+                          parameters.iterates_on_sigma() ? SolveExtent::sigma :
+                                                           SolveExtent::whole);
         result.subdomain_solves += Layout::n_subproblems;
         result.iterations = k;
         interface.jumps(w, g);

@@ -1,5 +1,6 @@
 #include <deal.II/base/config.h>
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/revision.h>
 
 #include <bilayer/build_info.h>
@@ -234,4 +235,38 @@ namespace bilayer
     return 1;
   }
 
+
+  unsigned int
+  blas_threads()
+  {
+    return set_blas_threads(0);
+  }
+
+
+  std::string
+  blas_threads_variable()
+  {
+    const char *value = std::getenv("BILAYER_BLAS_THREADS");
+    return value != nullptr && *value != '\0' ? "BILAYER_BLAS_THREADS" : "";
+  }
+
+
+  unsigned int
+  fit_blas_threads(const unsigned int threads, const unsigned int tasks)
+  {
+    unsigned int n = std::max(1u, threads / std::max(1u, tasks));
+    if (!blas_threads_variable().empty())
+      {
+        const char *value = std::getenv("BILAYER_BLAS_THREADS");
+        char       *end   = nullptr;
+        const long  asked = std::strtol(value, &end, 10);
+        AssertThrow(*end == '\0' && asked >= 1 && asked <= 1024,
+                    dealii::ExcMessage(
+                      std::string("BILAYER_BLAS_THREADS must be a whole "
+                                  "number from 1 to 1024, got '") +
+                      value + "'"));
+        n = static_cast<unsigned int>(asked);
+      }
+    return set_blas_threads(n);
+  }
 } // namespace bilayer

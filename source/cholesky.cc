@@ -44,11 +44,12 @@ namespace bilayer
   }
 
 
-  bool
-  SparseCholesky::try_initialize(const SparseMatrix<double> &matrix)
+  void *
+  SparseCholesky::copy_matrix(const SparseMatrix<double> &matrix)
   {
     if (data->factor)
       cholmod_free_factor(&data->factor, &data->common);
+    schur.reset();
     const std::size_t n = matrix.m();
     data->n             = n;
 
@@ -73,8 +74,14 @@ namespace bilayer
           }
       }
     p[n] = k;
+    return a;
+  }
 
-    data->factor = cholmod_analyze(a, &data->common);
+
+  bool
+  SparseCholesky::factorise(void *matrix)
+  {
+    auto *a = static_cast<cholmod_sparse *>(matrix);
     if (data->factor == nullptr)
       {
         cholmod_free_sparse(&a, &data->common);
@@ -88,6 +95,166 @@ namespace bilayer
     return status == CHOLMOD_OK;
   }
 
+
+  bool
+  SparseCholesky::try_initialize(const SparseMatrix<double> &matrix)
+  {
+    void *a = copy_matrix(matrix);
+    data->factor =
+      cholmod_analyze(static_cast<cholmod_sparse *>(a), &data->common);
+    return factorise(a);
+  }
+
+
+  bool
+  SparseCholesky::try_initialize(const SparseMatrix<double>      &matrix,
+                                 const std::vector<unsigned int> &last)
+  {
+    auto             *a = static_cast<cholmod_sparse *>(copy_matrix(matrix));
+    const std::size_t n = data->n, m = last.size();
+    if (m == 0 || m >= n)
+      {
+        data->factor = cholmod_analyze(a, &data->common);
+        return factorise(a);
+      }
+    // CAMD with the indices of T in the second constraint set: they come
+    // after all others. The elimination tree's postorder keeps them there
+    // (they are the ancestors of every other node that couples to them);
+    // checked below on the factor's permutation.
+    std::vector<int> member(n, 0), permutation(n);
+    for (const unsigned int i : last)
+      member[i] = 1;
+    const bool ordered = cholmod_camd(
+      a, nullptr, 0, member.data(), permutation.data(), &data->common);
+    if (!ordered)
+      {
+        data->factor = cholmod_analyze(a, &data->common);
+        return factorise(a);
+      }
+    // Supernodal always: the trailing block is read from the supernodes.
+    const int nmethods              = data->common.nmethods,
+              ordering              = data->common.method[0].ordering,
+              supernodal            = data->common.supernodal;
+    data->common.nmethods           = 1;
+    data->common.method[0].ordering = CHOLMOD_GIVEN;
+    data->common.supernodal         = CHOLMOD_SUPERNODAL;
+    data->factor =
+      cholmod_analyze_p(a, permutation.data(), nullptr, 0, &data->common);
+    data->common.nmethods           = nmethods;
+    data->common.method[0].ordering = ordering;
+    data->common.supernodal         = supernodal;
+    if (data->factor == nullptr)
+      {
+        cholmod_free_sparse(&a, &data->common);
+        throw std::bad_alloc();
+      }
+    // The dense block of |T|^2 entries must not outgrow the sparse factor.
+    const double sparse_entries = data->common.lnz;
+    if (static_cast<double>(m) * m > sparse_entries)
+      {
+        cholmod_free_factor(&data->factor, &data->common);
+        data->factor = cholmod_analyze(a, &data->common);
+        return factorise(a);
+      }
+    if (!factorise(a))
+      return false;
+
+    const cholmod_factor *f     = data->factor;
+    const int            *perm  = static_cast<const int *>(f->Perm);
+    const std::size_t     first = n - m;
+    for (std::size_t k = first; k < n; ++k)
+      if (member[perm[k]] != 1)
+        return true; // T not last after all: no Schur factor
+    if (!f->is_super || !f->is_ll)
+      return true;
+    schur = std::make_unique<SchurComplementFactor>();
+    schur->index.assign(perm + first, perm + n);
+    schur->factor.assign(m * m, 0.);
+    const auto *super = static_cast<const int *>(f->super);
+    const auto *pi    = static_cast<const int *>(f->pi);
+    const auto *px    = static_cast<const int *>(f->px);
+    const auto *rows  = static_cast<const int *>(f->s);
+    const auto *x     = static_cast<const double *>(f->x);
+    for (std::size_t s = 0; s < f->nsuper; ++s)
+      {
+        const std::size_t c0 = super[s], c1 = super[s + 1];
+        if (c1 <= first)
+          continue;
+        const std::size_t n_rows = pi[s + 1] - pi[s];
+        for (std::size_t c = std::max(c0, first); c < c1; ++c)
+          for (std::size_t r = c - c0; r < n_rows; ++r)
+            schur->factor[(c - first) * m + (rows[pi[s] + r] - first)] =
+              x[px[s] + (c - c0) * n_rows + r];
+      }
+    return true;
+  }
+
+
+  double
+  SparseCholesky::factor_entries() const
+  {
+    return data->factor ? data->common.lnz : 0.;
+  }
+
+
+  // The dense triangular products below are plain loops, not BLAS calls:
+  // their order of summation, and so their bits, do not depend on the BLAS
+  // or its threads (a threaded dtrsv sums in blocks per thread), and at the
+  // sizes of a Sigma (|T| of the order of 10^3) they cost about a
+  // millisecond.
+
+  void
+  SchurComplementFactor::solve(std::vector<double> &x) const
+  {
+    AssertDimension(x.size(), size());
+    const std::size_t n = size();
+    const double     *l = factor.data();
+    // L y = x, by columns.
+    for (std::size_t j = 0; j < n; ++j)
+      {
+        const double *column = l + j * n;
+        const double  y      = x[j] / column[j];
+        x[j]                 = y;
+        for (std::size_t i = j + 1; i < n; ++i)
+          x[i] -= column[i] * y;
+      }
+    // L^T z = y, by rows of L^T (columns of L).
+    for (std::size_t j = n; j-- > 0;)
+      {
+        const double *column = l + j * n;
+        double        sum    = x[j];
+        for (std::size_t i = j + 1; i < n; ++i)
+          sum -= column[i] * x[i];
+        x[j] = sum / column[j];
+      }
+  }
+
+
+  void
+  SchurComplementFactor::multiply(std::vector<double> &x) const
+  {
+    AssertDimension(x.size(), size());
+    const std::size_t n = size();
+    const double     *l = factor.data();
+    // z = L^T x ...
+    std::vector<double> z(n);
+    for (std::size_t j = 0; j < n; ++j)
+      {
+        const double *column = l + j * n;
+        double        sum    = 0;
+        for (std::size_t i = j; i < n; ++i)
+          sum += column[i] * x[i];
+        z[j] = sum;
+      }
+    // ... then L z.
+    std::fill(x.begin(), x.end(), 0.);
+    for (std::size_t j = 0; j < n; ++j)
+      {
+        const double *column = l + j * n;
+        for (std::size_t i = j; i < n; ++i)
+          x[i] += column[i] * z[j];
+      }
+  }
 
   void
   SparseCholesky::solve(Vector<double> &rhs_and_solution) const

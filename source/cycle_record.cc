@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <bilayer/build_info.h>
 #include <bilayer/cycle_record.h>
@@ -353,7 +354,12 @@ namespace bilayer
         << "\"bilayer\": " << json(version())
         << ", \"git_commit\": " << json(git_commit())
         << ", \"deal_ii\": " << json(deal_ii_version())
-        << ", \"blas\": " << json(blas_library()) << "},\n  \"cycles\": [";
+        << ", \"blas\": " << json(blas_library())
+        << ", \"threads\": {\"tasks\": " << MultithreadInfo::n_threads()
+        << ", \"blas\": " << blas_threads() << ", \"blas_set_by\": "
+        << json(blas_threads_variable().empty() ? "bilayer" :
+                                                  blas_threads_variable())
+        << "}},\n  \"cycles\": [";
     for (unsigned int i = 0; i < records.size(); ++i)
       {
         out << (i ? "," : "") << "\n    {";

@@ -232,6 +232,13 @@ namespace bilayer
     timer.restart();
     clock = IterationClock();
     iterate(subproblems, interface, mu, w, result);
+    // The iterations solved on Sigma: the whole solutions of the last
+    // multipliers.
+    if (parameters.iterates_on_sigma())
+      {
+        solve_subproblems(subproblems, interface, mu, w);
+        result.subdomain_solves += Layout::n_subproblems;
+      }
     result.iteration_seconds = timer.wall_time();
     return result;
   }
@@ -249,7 +256,12 @@ namespace bilayer
                              const double               last_increment,
                              SolverResult              &result) const
   {
-    solve_subproblems(subproblems, interface, mu, w);
+    solve_subproblems(subproblems,
+                      interface,
+                      mu,
+                      w,
+                      parameters.iterates_on_sigma() ? SolveExtent::sigma :
+                                                       SolveExtent::whole);
     result.iterations       = k;
     result.subdomain_solves = extra_solves + Layout::n_subproblems * (k + 1ul);
     interface.jumps(w, g);

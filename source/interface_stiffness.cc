@@ -21,7 +21,8 @@ namespace bilayer
     for (const auto i : on_sigma)
       if (!homogeneous.is_constrained(i))
         sigma_dofs.push_back(i);
-    if (!dirichlet)
+    // A condensed subproblem holds S already (its factor on Sigma).
+    if (!dirichlet || subproblem.condensed())
       return;
 
     dirichlet_constraints.merge(homogeneous);
@@ -52,6 +53,11 @@ namespace bilayer
   InterfaceStiffness::apply_schur_complement(const Vector<double> &x,
                                              Vector<double>       &y) const
   {
+    if (subproblem.condensed())
+      {
+        subproblem.apply_schur_complement(x, y);
+        return;
+      }
     Assert(dirichlet_factorisation || dirichlet_system, ExcInternalError());
     const unsigned int n = subproblem.n_dofs();
     // The Sigma values of x, extended by zero ...

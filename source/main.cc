@@ -215,10 +215,19 @@ main(int argc, char **argv)
   // The four subproblems are factorised and solved as parallel tasks, each
   // calling the BLAS: a threaded BLAS gets this process's threads divided
   // among them (one each on a machine with fewer than eight cores), so that
-  // the two kinds of threads do not compete for the cores.
-  bilayer::set_blas_threads(
-    std::max(1u,
-             MultithreadInfo::n_threads() / bilayer::Layout::n_subproblems));
+  // the two kinds of threads do not compete for the cores (docs/
+  // performance.md measures the choices; BILAYER_BLAS_THREADS overrides
+  // the count, OPENBLAS_NUM_THREADS and its kin do not).
+  unsigned int blas_threads = 1;
+  try
+    {
+      blas_threads = bilayer::fit_blas_threads(MultithreadInfo::n_threads(),
+                                               bilayer::Layout::n_subproblems);
+    }
+  catch (const ExceptionBase &e)
+    {
+      return refuse(bilayer::one_line_message(e));
+    }
 
   // The memory each process sees may differ a little: the processes decide
   // together whether the scene fits.
@@ -314,6 +323,23 @@ main(int argc, char **argv)
       const std::string requested = scene.output.directory;
       scene.output.directory      = problem;
 
+      if (processes.is_root() &&
+          scene.output.terminal == bilayer::TerminalOutput::full)
+        {
+          const std::string variable = bilayer::blas_threads_variable();
+          std::cout << "bilayer " << bilayer::version() << " (git commit "
+                    << bilayer::git_commit() << "), deal.II "
+                    << bilayer::deal_ii_version() << "; "
+                    << processes.n_processes() << " process"
+                    << (processes.n_processes() > 1 ? "es" : "") << " of "
+                    << MultithreadInfo::n_threads() << " thread"
+                    << (MultithreadInfo::n_threads() > 1 ? "s" : "")
+                    << " (the subproblems' tasks), " << blas_threads
+                    << " BLAS thread" << (blas_threads > 1 ? "s" : "")
+                    << " per call"
+                    << (variable.empty() ? "" : " (" + variable + ")")
+                    << "; BLAS " << bilayer::blas_library() << std::endl;
+        }
       bilayer::Study study(scene, std::cout, processes);
       bool           passed = false;
       std::string    failure;

@@ -4,6 +4,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <bilayer/output.h>
+#include <bilayer/tasks.h>
 
 #include <algorithm>
 #include <array>
@@ -151,105 +152,129 @@ namespace bilayer
     /// (subproblem, XDMF grid) of the pieces written here.
     std::vector<std::pair<unsigned int, std::string>> grids;
     // Declared before the DataOut objects that subscribe to them.
-    std::vector<std::unique_ptr<StressPostprocessor>> stresses;
-    PerSubproblem<DataOut<2>>                         data_outs;
-    PerSubproblem<Vector<float>>                      layers, subdomains;
+    PerSubproblem<std::unique_ptr<StressPostprocessor>> stresses;
+    PerSubproblem<DataOut<2>>                           data_outs;
+    PerSubproblem<Vector<float>>                        layers, subdomains;
+    PerSubproblem<std::string>                          piece_of;
+    PerSubproblem<bool>                                 simplex{};
+    DataOutBase::VtkFlags                               flags;
+    flags.compression_level =
+      parameters.compression == Compression::none ?
+        DataOutBase::VtkFlags::no_compression :
+      parameters.compression == Compression::best_speed ?
+        DataOutBase::VtkFlags::best_speed :
+      parameters.compression == Compression::standard ?
+        DataOutBase::VtkFlags::default_compression :
+        DataOutBase::VtkFlags::best_compression;
     for (const unsigned int s : Layout::subproblems)
       if (subproblems[s] != nullptr)
         {
           const ElasticSubproblem &sub = *subproblems[s];
-          const std::string        piece =
+          piece_of[s] =
             stem.str() + "-" + std::string(1, sub.name()[0]) +
             (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus");
           // A subproblem shared by a group of processes is written in one
           // piece per process of the group (its cells of the partition).
           const unsigned int group_size = processes.group_size(s);
           for (unsigned int k = 0; k < group_size; ++k)
-            pieces.push_back(
-              piece + (group_size > 1 ? "." + std::to_string(k) : "") + ".vtu");
-          if (!sub.owned())
-            continue;
-
-          DataOut<2> &data_out = data_outs[s];
-          data_out.attach_dof_handler(sub.dof_handler());
-          const std::vector<std::string> names(2, "displacement");
-          const std::vector<
-            DataComponentInterpretation::DataComponentInterpretation>
-            interpretation(
-              2, DataComponentInterpretation::component_is_part_of_vector);
-          data_out.add_data_vector(solutions[s],
-                                   names,
-                                   DataOut<2>::type_dof_data,
-                                   interpretation);
-          stresses.push_back(
-            std::make_unique<StressPostprocessor>(sub.material()));
-          data_out.add_data_vector(solutions[s], *stresses.back());
-
-          const unsigned int n_cells =
-            sub.dof_handler().get_triangulation().n_active_cells();
-          layers[s].reinit(n_cells);
-          subdomains[s].reinit(n_cells);
-          layers[s]     = sub.layer() == Layer::first ? 1.f : 2.f;
-          subdomains[s] = sub.subdomain() == Subdomain::minus ? -1.f : 1.f;
-          data_out.add_data_vector(layers[s],
-                                   "layer",
-                                   DataOut<2>::type_cell_data);
-          data_out.add_data_vector(subdomains[s],
-                                   "subdomain",
-                                   DataOut<2>::type_cell_data);
-          const MPI_Comm group =
-            sub.distributed() ? processes.group_communicator() : MPI_COMM_SELF;
-          std::string vtu = piece + ".vtu";
-          if (sub.distributed())
-            {
-              const DistributedSystem &system = sub.distributed_system();
-              data_out.set_cell_selection(
-                FilteredIterator<DataOut<2>::cell_iterator>(
-                  [&system](const DataOut<2>::cell_iterator &cell) {
-                    return cell->is_active() &&
-                           system.assembles(cell->active_cell_index());
-                  }));
-              vtu = piece + "." +
-                    std::to_string(Utilities::MPI::this_mpi_process(group)) +
-                    ".vtu";
-            }
-
-          const bool simplex = !sub.dof_handler()
-                                  .get_triangulation()
-                                  .all_reference_cells_are_hyper_cube();
-          data_out.build_patches(sub.mapping(), simplex ? 1 : sub.fe().degree);
-
-          if (parameters.write_vtu)
-            write_atomically(directory + "/" + vtu, [&](std::ostream &out) {
-              data_out.write_vtu(out);
-            });
-          if (parameters.write_hdf5)
-            {
-              DataOutBase::DataOutFilter filter(
-                DataOutBase::DataOutFilterFlags(true, true));
-              data_out.write_filtered_data(filter);
-              const std::string h5 = piece + ".h5";
-              data_out.write_hdf5_parallel(filter,
-                                           directory + "/" + h5 + ".part",
-                                           group);
-              const XDMFEntry entry =
-                data_out.create_xdmf_entry(filter, h5, cycle, group);
-              if (processes.process() != processes.root(s))
-                continue;
-              std::error_code error;
-              std::filesystem::rename(directory + "/" + h5 + ".part",
-                                      directory + "/" + h5,
-                                      error);
-              AssertThrow(!error,
-                          ExcMessage("cannot write '" + directory + "/" + h5 +
-                                     "': " + error.message()));
-              grids.emplace_back(s,
-                                 entry.get_xdmf_content(
-                                   4,
-                                   simplex ? ReferenceCells::Triangle :
-                                             ReferenceCells::Quadrilateral));
-            }
+            pieces.push_back(piece_of[s] +
+                             (group_size > 1 ? "." + std::to_string(k) : "") +
+                             ".vtu");
         }
+
+    // The patches of the pieces, and their VTU files, as parallel tasks.
+    const auto build_piece = [&](const unsigned int s) {
+      const ElasticSubproblem &sub      = *subproblems[s];
+      DataOut<2>              &data_out = data_outs[s];
+      data_out.attach_dof_handler(sub.dof_handler());
+      data_out.set_flags(flags);
+      const std::vector<std::string> names(2, "displacement");
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(
+          2, DataComponentInterpretation::component_is_part_of_vector);
+      data_out.add_data_vector(solutions[s],
+                               names,
+                               DataOut<2>::type_dof_data,
+                               interpretation);
+      stresses[s] = std::make_unique<StressPostprocessor>(sub.material());
+      data_out.add_data_vector(solutions[s], *stresses[s]);
+
+      const unsigned int n_cells =
+        sub.dof_handler().get_triangulation().n_active_cells();
+      layers[s].reinit(n_cells);
+      subdomains[s].reinit(n_cells);
+      layers[s]     = sub.layer() == Layer::first ? 1.f : 2.f;
+      subdomains[s] = sub.subdomain() == Subdomain::minus ? -1.f : 1.f;
+      data_out.add_data_vector(layers[s], "layer", DataOut<2>::type_cell_data);
+      data_out.add_data_vector(subdomains[s],
+                               "subdomain",
+                               DataOut<2>::type_cell_data);
+      std::string vtu = piece_of[s] + ".vtu";
+      if (sub.distributed())
+        {
+          const DistributedSystem &system = sub.distributed_system();
+          data_out.set_cell_selection(
+            FilteredIterator<DataOut<2>::cell_iterator>(
+              [&system](const DataOut<2>::cell_iterator &cell) {
+                return cell->is_active() &&
+                       system.assembles(cell->active_cell_index());
+              }));
+          vtu = piece_of[s] + "." +
+                std::to_string(Utilities::MPI::this_mpi_process(
+                  processes.group_communicator())) +
+                ".vtu";
+        }
+
+      simplex[s] = !sub.dof_handler()
+                      .get_triangulation()
+                      .all_reference_cells_are_hyper_cube();
+      data_out.build_patches(sub.mapping(), simplex[s] ? 1 : sub.fe().degree);
+
+      if (parameters.write_vtu)
+        write_atomically(directory + "/" + vtu,
+                         [&](std::ostream &out) { data_out.write_vtu(out); });
+    };
+    Tasks tasks;
+    for (const unsigned int s : Layout::subproblems)
+      if (subproblems[s] != nullptr && subproblems[s]->owned())
+        tasks.add([&, s]() { build_piece(s); });
+    tasks.join_all();
+
+    // HDF5 (collective in a group; the library is not used from threads).
+    if (parameters.write_hdf5)
+      for (const unsigned int s : Layout::subproblems)
+        if (subproblems[s] != nullptr && subproblems[s]->owned())
+          {
+            const ElasticSubproblem   &sub      = *subproblems[s];
+            DataOut<2>                &data_out = data_outs[s];
+            const MPI_Comm             group    = sub.distributed() ?
+                                                    processes.group_communicator() :
+                                                    MPI_COMM_SELF;
+            DataOutBase::DataOutFilter filter(
+              DataOutBase::DataOutFilterFlags(true, true));
+            data_out.write_filtered_data(filter);
+            const std::string h5 = piece_of[s] + ".h5";
+            data_out.write_hdf5_parallel(filter,
+                                         directory + "/" + h5 + ".part",
+                                         group);
+            const XDMFEntry entry =
+              data_out.create_xdmf_entry(filter, h5, cycle, group);
+            if (processes.process() != processes.root(s))
+              continue;
+            std::error_code error;
+            std::filesystem::rename(directory + "/" + h5 + ".part",
+                                    directory + "/" + h5,
+                                    error);
+            AssertThrow(!error,
+                        ExcMessage("cannot write '" + directory + "/" + h5 +
+                                   "': " + error.message()));
+            grids.emplace_back(s,
+                               entry.get_xdmf_content(
+                                 4,
+                                 simplex[s] ? ReferenceCells::Triangle :
+                                              ReferenceCells::Quadrilateral));
+          }
 
     // The grids of all pieces at the first process, in the order of the
     // subproblems.

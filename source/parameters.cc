@@ -841,13 +841,30 @@ namespace bilayer
                       "cycle's multipliers, interpolated onto the new "
                       "multiplier meshes and projected onto the multiplier "
                       "sets (false: from zero, as in the paper).");
+    prm.declare_entry(
+      "Solve on Sigma",
+      "true",
+      Patterns::Bool(),
+      "Iterate on Sigma alone: each subproblem's factorisation eliminates "
+      "its Sigma dofs last and keeps the dense Cholesky factor of its Schur "
+      "complement S on them, so that a solve for multiplier loads costs two "
+      "dense triangular solves on the Sigma dofs instead of a sparse forward "
+      "and back substitution, the Dirichlet preconditioner needs no "
+      "factorisation of its own (it applies S), and the whole solutions are "
+      "computed once, at the end. For the active set method, and for uzawa "
+      "and accelerated with the stopping rules kkt and relative (the paper's "
+      "energy-norm rules need whole solutions in every iteration). A "
+      "subproblem keeps S only where its |Sigma dofs|^2 entries are no more "
+      "than those of its sparse factor. false: sparse solves in every "
+      "iteration (the same solution, other rounding).");
     prm.enter_subsection("Active set");
     prm.declare_entry("Preconditioner",
                       "dirichlet",
                       Patterns::Selection("dirichlet|lumped|none"),
                       "Preconditioner of the conjugate gradients on the "
                       "dual operator: dirichlet (FETI Dirichlet: Schur "
-                      "complements of the subproblems on Sigma, one extra "
+                      "complements of the subproblems on Sigma; with Solve "
+                      "on Sigma the factors already kept, else one extra "
                       "factorisation and one Dirichlet solve per subproblem "
                       "and iteration), lumped (stiffness on Sigma, no "
                       "solves) or none.");
@@ -917,10 +934,11 @@ namespace bilayer
     AssertThrow(acceptance_tolerance > 0,
                 ExcMessage("Solver/Acceptance tolerance must be > 0, got " +
                            prm.get("Acceptance tolerance")));
-    warm_start    = prm.get_bool("Warm start");
-    shared_solver = prm.get("Shared subproblem solver") == "klu" ?
-                      "Amesos_Klu" :
-                      "Amesos_Mumps";
+    warm_start     = prm.get_bool("Warm start");
+    solve_on_sigma = prm.get_bool("Solve on Sigma");
+    shared_solver  = prm.get("Shared subproblem solver") == "klu" ?
+                       "Amesos_Klu" :
+                       "Amesos_Mumps";
     prm.enter_subsection("Active set");
     const std::string p = prm.get("Preconditioner");
     preconditioner      = p == "dirichlet" ? DualPreconditioner::dirichlet :
@@ -962,6 +980,22 @@ namespace bilayer
                       "(deal.II's HDF5 writer) and solution.xdmf over all "
                       "cycles, for ParaView's XDMF reader: compact binary "
                       "output for large meshes.");
+    prm.declare_entry("Written cycles",
+                      "every cycle",
+                      Patterns::Selection("every cycle|last cycle|none"),
+                      "The cycles whose solution fields (Write VTU, Write "
+                      "HDF5: the layers' displacements and stresses, the "
+                      "interface polyline) are written: every cycle, the "
+                      "last cycle (or the cycle whose checks fail, where the "
+                      "run ends), or none. The interface CSV, the table and "
+                      "summary.json are written for every cycle.");
+    prm.declare_entry("Compression",
+                      "best speed",
+                      Patterns::Selection(
+                        "none|best speed|default|best compression"),
+                      "zlib compression of the VTU data: none (largest files, "
+                      "fastest), best speed, default or best compression "
+                      "(smallest files, several times slower to write).");
     prm.declare_entry("Write interface CSV",
                       "true",
                       Patterns::Bool(),
@@ -990,10 +1024,19 @@ namespace bilayer
     directory = prm.get("Output directory");
     AssertThrow(!directory.empty(),
                 ExcMessage("Output/Output directory must not be empty"));
-    write_vtu         = prm.get_bool("Write VTU");
-    write_hdf5        = prm.get_bool("Write HDF5");
-    write_interface   = prm.get_bool("Write interface CSV");
-    progress_interval = prm.get_integer("Progress interval");
+    write_vtu                = prm.get_bool("Write VTU");
+    write_hdf5               = prm.get_bool("Write HDF5");
+    write_interface          = prm.get_bool("Write interface CSV");
+    const std::string cycles = prm.get("Written cycles");
+    written_cycles           = cycles == "every cycle" ? WrittenCycles::every :
+                               cycles == "last cycle"  ? WrittenCycles::last :
+                                                         WrittenCycles::none;
+    const std::string level  = prm.get("Compression");
+    compression              = level == "none"       ? Compression::none :
+                               level == "best speed" ? Compression::best_speed :
+                               level == "default"    ? Compression::standard :
+                                                       Compression::best;
+    progress_interval        = prm.get_integer("Progress interval");
     terminal = prm.get("Terminal output") == "checks" ? TerminalOutput::checks :
                                                         TerminalOutput::full;
     prm.leave_subsection();

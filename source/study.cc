@@ -261,7 +261,8 @@ namespace bilayer
                 target->setup(scene.geometry.clamped,
                               *prescribed[l],
                               traction[l],
-                              scene.solver.shared_solver);
+                              scene.solver.shared_solver,
+                              scene.solver.iterates_on_sigma());
               });
             }
         }
@@ -375,7 +376,10 @@ namespace bilayer
     if (distribution.is_root())
       writing([&]() { std::filesystem::create_directories(dir); });
     distribution.barrier();
-    if (scene.output.write_vtu || scene.output.write_hdf5)
+    const bool fields = scene.output.writes_fields(record.cycle,
+                                                   scene.mesh.n_cycles,
+                                                   record.accepted());
+    if (fields)
       writing([&]() {
         write_solution(
           dir, record.cycle, subproblem_views(), w, scene.output, outputs);
@@ -388,7 +392,7 @@ namespace bilayer
     cycle_records.push_back(record);
     add_to_table(table, record);
     if (distribution.is_root())
-      writing([&]() { write_records(record.cycle); });
+      writing([&]() { write_records(record.cycle, fields); });
     const std::string error = distribution.first_error(writing.message);
     if (!error.empty())
       throw CollectiveError("writing the results of cycle " +
@@ -397,10 +401,11 @@ namespace bilayer
 
 
   void
-  Study::write_records(const unsigned int cycle)
+  Study::write_records(const unsigned int cycle, const bool fields)
   {
-    const std::string &dir = scene.output.directory;
-    if (scene.output.write_interface || scene.output.write_vtu)
+    const std::string &dir           = scene.output.directory;
+    const bool         interface_vtu = fields && scene.output.write_vtu;
+    if (scene.output.write_interface || interface_vtu)
       {
         const std::vector<InterfaceNode> nodes =
           interface_nodes(coupling, w, mu, scene.solver.acceptance_tolerance);
@@ -409,7 +414,7 @@ namespace bilayer
                            [&](std::ostream &o) {
                              write_interface_csv(o, nodes);
                            });
-        if (scene.output.write_vtu)
+        if (interface_vtu)
           write_interface_vtu(dir, cycle, nodes, outputs);
       }
     write_atomically(dir + "/summary.json", [&](std::ostream &o) {

@@ -9,13 +9,15 @@ namespace bilayer
   {
     /// The solves with the multiplier loads of @p multipliers, as parallel
     /// tasks; @p homogeneous drops the tractions and the prescribed
-    /// displacement (the linear part of the solution map).
+    /// displacement (the linear part of the solution map); without
+    /// @p whole, a condensed subproblem solves on Sigma alone.
     void
     solve_all(const Subproblems         &subproblems,
               const Interface           &interface,
               const BlockVector<double> &multipliers,
               Solutions                 &solutions,
-              const bool                 homogeneous)
+              const bool                 homogeneous,
+              const bool                 whole)
     {
       Solutions loads;
       interface.apply(multipliers, loads);
@@ -23,7 +25,11 @@ namespace bilayer
       for (const unsigned int s : Layout::subproblems)
         if (subproblems[s] != nullptr && subproblems[s]->owned())
           tasks.add([&, s]() {
-            if (homogeneous)
+            if (!whole && subproblems[s]->condensed())
+              subproblems[s]->solve_on_sigma(loads[s],
+                                             solutions[s],
+                                             homogeneous);
+            else if (homogeneous)
               subproblems[s]->solve_homogeneous(loads[s], solutions[s]);
             else
               subproblems[s]->solve(loads[s], solutions[s]);
@@ -61,9 +67,15 @@ namespace bilayer
   solve_subproblems(const Subproblems         &subproblems,
                     const Interface           &interface,
                     const BlockVector<double> &multipliers,
-                    Solutions                 &solutions)
+                    Solutions                 &solutions,
+                    const SolveExtent          extent)
   {
-    solve_all(subproblems, interface, multipliers, solutions, false);
+    solve_all(subproblems,
+              interface,
+              multipliers,
+              solutions,
+              false,
+              extent == SolveExtent::whole);
   }
 
 
@@ -73,6 +85,6 @@ namespace bilayer
                                 const BlockVector<double> &multipliers,
                                 Solutions                 &solutions)
   {
-    solve_all(subproblems, interface, multipliers, solutions, true);
+    solve_all(subproblems, interface, multipliers, solutions, true, false);
   }
 } // namespace bilayer

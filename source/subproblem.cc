@@ -203,7 +203,8 @@ namespace bilayer
   ElasticSubproblem::setup(const std::vector<bool>                &clamped,
                            const Function<2>                      &prescribed,
                            const std::vector<const Function<2> *> &traction,
-                           const std::string &shared_solver_type)
+                           const std::string &shared_solver_type,
+                           const bool         condense_on_sigma)
   {
     shared_solver = shared_solver_type;
     shared.reset();
@@ -278,11 +279,112 @@ namespace bilayer
                                "(Loads) and the side lengths (Geometry) "
                                "leave the range of double; state them in "
                                "other units"));
-        factorisation.initialize(system_matrix,
-                                 "the stiffness matrix of subproblem " +
-                                   name());
+        const std::string what = "the stiffness matrix of subproblem " + name();
+        const std::vector<unsigned int> last =
+          condense_on_sigma ? schur_dofs() : std::vector<unsigned int>();
+        if (last.empty())
+          factorisation.initialize(system_matrix, what);
+        else
+          {
+            AssertThrow(factorisation.try_initialize(system_matrix, last),
+                        ExcMessage("the Cholesky factorisation of " + what +
+                                   " failed: it is not positive definite"));
+            if (condensed())
+              {
+                // Where each Sigma dof sits in the Schur complement.
+                const std::vector<unsigned int> &order =
+                  factorisation.schur_complement()->indices();
+                std::vector<int> position(n_dofs(), -1);
+                for (unsigned int a = 0; a < order.size(); ++a)
+                  position[order[a]] = a;
+                sigma_positions.clear();
+                constrained_sigma_dofs.clear();
+                for (const auto i : trace_dofs_)
+                  if (!homogeneous_constraints.is_constrained(i))
+                    sigma_positions.emplace_back(i, position[i]);
+                  else
+                    {
+                      ConstrainedSigmaDof dof{i, {}};
+                      for (const auto &[j, weight] :
+                           *homogeneous_constraints.get_constraint_entries(i))
+                        dof.entries.emplace_back(position[j], weight);
+                      constrained_sigma_dofs.push_back(std::move(dof));
+                    }
+                solve(Vector<double>(), particular);
+              }
+          }
       }
     factorisation_seconds = timer.wall_time();
+  }
+
+
+  std::vector<unsigned int>
+  ElasticSubproblem::schur_dofs() const
+  {
+    std::vector<unsigned int> last;
+    std::vector<bool>         on_sigma(n_dofs(), false);
+    for (const auto i : trace_dofs_)
+      if (!homogeneous_constraints.is_constrained(i))
+        {
+          last.push_back(i);
+          on_sigma[i] = true;
+        }
+    for (const auto i : trace_dofs_)
+      if (homogeneous_constraints.is_constrained(i))
+        for (const auto &entry :
+             *homogeneous_constraints.get_constraint_entries(i))
+          if (!on_sigma[entry.first])
+            return {};
+    return last;
+  }
+
+
+  void
+  ElasticSubproblem::solve_on_sigma(const Vector<double> &coupling,
+                                    Vector<double>       &solution,
+                                    const bool            homogeneous) const
+  {
+    Assert(condensed(), ExcInternalError());
+    const SchurComplementFactor &schur = *factorisation.schur_complement();
+    // The condensed load on the unconstrained Sigma dofs ...
+    std::vector<double> y(schur.size(), 0.);
+    if (coupling.size() > 0)
+      {
+        for (const auto &[i, a] : sigma_positions)
+          y[a] += coupling(i);
+        for (const auto &dof : constrained_sigma_dofs)
+          for (const auto &[a, weight] : dof.entries)
+            y[a] += weight * coupling(dof.dof);
+      }
+    // ... the Sigma part of K^{-1} of it ...
+    schur.solve(y);
+    // ... added to the solution without coupling, and distributed to the
+    // constrained Sigma dofs.
+    if (homogeneous)
+      solution.reinit(n_dofs());
+    else
+      solution = particular;
+    for (const auto &[i, a] : sigma_positions)
+      solution(i) += y[a];
+    for (const auto &dof : constrained_sigma_dofs)
+      for (const auto &[a, weight] : dof.entries)
+        solution(dof.dof) += weight * y[a];
+  }
+
+
+  void
+  ElasticSubproblem::apply_schur_complement(const Vector<double> &x,
+                                            Vector<double>       &y) const
+  {
+    Assert(condensed(), ExcInternalError());
+    const SchurComplementFactor &schur = *factorisation.schur_complement();
+    std::vector<double>          values(schur.size());
+    for (const auto &[i, a] : sigma_positions)
+      values[a] = x(i);
+    schur.multiply(values);
+    y.reinit(n_dofs());
+    for (const auto &[i, a] : sigma_positions)
+      y(i) = values[a];
   }
 
 

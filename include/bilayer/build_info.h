@@ -70,6 +70,31 @@ namespace bilayer
   unsigned int
   set_blas_threads(const unsigned int n);
 
+  /**
+   * The number of threads of the loaded BLAS now (set_blas_threads(0)).
+   */
+  unsigned int
+  blas_threads();
+
+  /**
+   * "BILAYER_BLAS_THREADS" if that environment variable is set (an
+   * override for benchmarks, docs/performance.md), else "". The BLAS's own
+   * variables (OPENBLAS_NUM_THREADS, OMP_NUM_THREADS, ...) are overridden:
+   * the program sets the count that fits its tasks.
+   */
+  std::string
+  blas_threads_variable();
+
+  /**
+   * Give the BLAS the threads that fit the subproblem tasks: the process's
+   * @p threads divided among @p tasks that call the BLAS at the same time
+   * (at least one each), or BILAYER_BLAS_THREADS where set (a whole number
+   * from 1 to 1024, else an exception naming it). Returns the BLAS threads
+   * in effect.
+   */
+  unsigned int
+  fit_blas_threads(const unsigned int threads, const unsigned int tasks);
+
   /** @} */
 } // namespace bilayer
 

@@ -6,9 +6,53 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace bilayer
 {
+  /**
+   * The dense Cholesky factor S = L_T L_T^T of the Schur complement S of a
+   * symmetric positive definite matrix A on an index set T: the trailing
+   * block of the sparse factor of A when T is eliminated last. Its order of
+   * T (indices()) is the factor's. With A = [A_RR A_RT; A_TR A_TT],
+   *   S = A_TT - A_TR A_RR^{-1} A_RT   and   (A^{-1})_TT = S^{-1},
+   * so the T part of A^{-1} b for b supported on T costs two dense
+   * triangular solves with L_T instead of a sparse forward and back
+   * substitution with the whole factor.
+   */
+  class SchurComplementFactor
+  {
+  public:
+    /// |T|.
+    unsigned int
+    size() const
+    {
+      return index.size();
+    }
+
+    /// The indices of T, in the order of the factor's rows.
+    const std::vector<unsigned int> &
+    indices() const
+    {
+      return index;
+    }
+
+    /// x := S^{-1} x (x in the order of indices()).
+    void
+    solve(std::vector<double> &x) const;
+
+    /// x := S x (x in the order of indices()).
+    void
+    multiply(std::vector<double> &x) const;
+
+  private:
+    friend class SparseCholesky;
+    std::vector<unsigned int> index;
+    /// L_T, column-major, lower triangle.
+    std::vector<double> factor;
+  };
+
+
   /**
    * Sparse Cholesky factorisation A = L L^T of a symmetric positive
    * definite matrix by CHOLMOD (SuiteSparse, supernodal, with its fill-
@@ -39,13 +83,44 @@ namespace bilayer
     bool
     try_initialize(const dealii::SparseMatrix<double> &matrix);
 
+    /**
+     * As try_initialize(), with the indices @p last ordered after all
+     * others (CAMD with two constraint sets) and the factor of the Schur
+     * complement on them kept (schur_complement()), provided that its
+     * dense block of |last|^2 entries is no larger than the sparse factor
+     * (else the order is CHOLMOD's usual one and there is no Schur factor).
+     */
+    bool
+    try_initialize(const dealii::SparseMatrix<double> &matrix,
+                   const std::vector<unsigned int>    &last);
+
+    /// The factor of the Schur complement on the indices given to
+    /// try_initialize() (nullptr if none was kept).
+    const SchurComplementFactor *
+    schur_complement() const
+    {
+      return schur.get();
+    }
+
+    /// Entries of the sparse factor L (0 before initialisation).
+    double
+    factor_entries() const;
+
     /// Overwrite @p rhs_and_solution with A^{-1} rhs.
     void
     solve(dealii::Vector<double> &rhs_and_solution) const;
 
   private:
     struct Data;
-    std::unique_ptr<Data> data;
+    std::unique_ptr<Data>                  data;
+    std::unique_ptr<SchurComplementFactor> schur;
+
+    /// The CHOLMOD copy of @p matrix's upper triangle (rows as columns).
+    void *
+    copy_matrix(const dealii::SparseMatrix<double> &matrix);
+    /// Factorise the copy @p a (freed) with the analysis done.
+    bool
+    factorise(void *a);
   };
 } // namespace bilayer
 

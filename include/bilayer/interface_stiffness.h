@@ -19,7 +19,9 @@ namespace bilayer
    * FETI-type preconditioners of the dual problem (FetiPreconditioner):
    *  - the Schur complement S = K_SS - K_SI K_II^{-1} K_IS of the stiffness
    *    matrix on the Sigma dofs S (Steklov-Poincare operator), one solve of
-   *    the "Dirichlet" subproblem (the Sigma dofs held at zero) each;
+   *    the "Dirichlet" subproblem (the Sigma dofs held at zero) each, or,
+   *    for a condensed subproblem (ElasticSubproblem::condensed()), two
+   *    dense triangular products with the factor of S that it holds;
    *  - its cheap stand-in K_SS (no solve).
    * Built from a subproblem that it only reads, by the processes that own
    * it; it holds its own factorisation, as large as the subproblem's, and

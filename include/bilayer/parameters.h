@@ -397,6 +397,19 @@ namespace bilayer
     double acceptance_tolerance = 1e-6;
     /// Start each cycle from the previous cycle's multipliers.
     bool warm_start = false;
+    /// Iterate on Sigma alone (Schur complements, SolveExtent::sigma).
+    bool solve_on_sigma = true;
+
+    /// Whether the outer solver's iterations need the solutions on Sigma
+    /// only (with solve_on_sigma): the active set method, and the
+    /// first-order methods with a stopping rule that reads no energy norm.
+    bool
+    iterates_on_sigma() const
+    {
+      return solve_on_sigma && (method == SolverMethod::active_set ||
+                                stopping_rule == StoppingRule::kkt ||
+                                stopping_rule == StoppingRule::relative);
+    }
     /// Solver/Active set: preconditioner, relative tolerance of the linear
     /// solves while the active set changes, limit of their iterations.
     DualPreconditioner preconditioner        = DualPreconditioner::dirichlet;
@@ -410,14 +423,54 @@ namespace bilayer
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  /// The cycles whose solution fields (VTU, HDF5) are written.
+  enum class WrittenCycles
+  {
+    every,
+    last,
+    none
+  };
+
+  /// zlib's effort on the VTU data (deal.II's VtkFlags).
+  enum class Compression
+  {
+    none,
+    best_speed,
+    standard,
+    best
+  };
+
   struct OutputParameters
   {
     std::string    directory         = "results";
     bool           write_vtu         = true;
     bool           write_hdf5        = false;
     bool           write_interface   = true;
+    WrittenCycles  written_cycles    = WrittenCycles::every;
+    Compression    compression       = Compression::best_speed;
     unsigned int   progress_interval = 100;
     TerminalOutput terminal          = TerminalOutput::full;
+
+    /// Whether the solution fields of @p cycle of @p n_cycles are written
+    /// (with the last cycle, also a cycle that fails its checks: the run
+    /// ends there).
+    bool
+    writes_fields(const unsigned int cycle,
+                  const unsigned int n_cycles,
+                  const bool         accepted) const
+    {
+      if (!write_vtu && !write_hdf5)
+        return false;
+      switch (written_cycles)
+        {
+          case WrittenCycles::every:
+            return true;
+          case WrittenCycles::last:
+            return cycle + 1 >= n_cycles || !accepted;
+          default:
+            return false;
+        }
+    }
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

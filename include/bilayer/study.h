@@ -123,10 +123,11 @@ namespace bilayer
     /// memory.
     void
     write(CycleRecord &record, const dealii::Timer &total);
-    /// The interface-NN.csv of this cycle, and summary.json, table.txt,
-    /// table.tex and table.csv of all cycles so far (first process).
+    /// The interface-NN.csv of this cycle (and, with @p fields, its
+    /// interface-NN.vtu), and summary.json, table.txt, table.tex and
+    /// table.csv of all cycles so far (first process).
     void
-    write_records(const unsigned int cycle);
+    write_records(const unsigned int cycle, const bool fields);
     void
     print_report(const CycleRecord &record) const;
 

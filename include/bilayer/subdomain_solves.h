@@ -37,6 +37,18 @@ namespace bilayer
   share_values(const Subproblems                         &subproblems,
                const std::function<double(unsigned int)> &value);
 
+  /// What a solve computes.
+  enum class SolveExtent
+  {
+    /// The whole solutions.
+    whole,
+    /// Only their values on the dofs of the Sigma faces, which is all that
+    /// the interface reads, where a subproblem is
+    /// ElasticSubproblem::condensed() (two dense triangular solves); the
+    /// whole solutions elsewhere.
+    sigma
+  };
+
   /**
    * The subdomain solves that every outer solver repeats: the multiplier
    * terms of the interface as loads, then the independent solves of the
@@ -46,11 +58,13 @@ namespace bilayer
   solve_subproblems(const Subproblems                 &subproblems,
                     const Interface                   &interface,
                     const dealii::BlockVector<double> &multipliers,
-                    Solutions                         &solutions);
+                    Solutions                         &solutions,
+                    const SolveExtent extent = SolveExtent::whole);
 
   /// The solves with the multiplier loads of @p multipliers only (no
   /// tractions, zero prescribed displacement): the linear part of the map
-  /// from multipliers to solutions.
+  /// from multipliers to solutions, on Sigma only where a subproblem is
+  /// condensed (SolveExtent::sigma): every user reads the traces only.
   void
   solve_homogeneous_subproblems(const Subproblems                 &subproblems,
                                 const Interface                   &interface,

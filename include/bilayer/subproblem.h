@@ -66,7 +66,54 @@ namespace bilayer
     setup(const std::vector<bool>                        &clamped,
           const dealii::Function<2>                      &prescribed,
           const std::vector<const dealii::Function<2> *> &traction,
-          const std::string &shared_solver = "Amesos_Mumps");
+          const std::string &shared_solver     = "Amesos_Mumps",
+          const bool         condense_on_sigma = false);
+
+    /**
+     * Whether setup() kept the Schur complement of the stiffness matrix on
+     * the Sigma dofs (asked for with @p condense_on_sigma; not for a
+     * subproblem shared by a group, nor where its dense factor would be
+     * larger than the sparse one, nor where a constrained Sigma dof depends
+     * on dofs off Sigma): then solve_on_sigma() and
+     * apply_schur_complement() are available. Only on the owners.
+     */
+    bool
+    condensed() const
+    {
+      return factorisation.schur_complement() != nullptr;
+    }
+
+    /// The number of Sigma dofs of the Schur complement (0 if not
+    /// condensed()).
+    unsigned int
+    n_schur_dofs() const
+    {
+      return condensed() ? factorisation.schur_complement()->size() : 0;
+    }
+
+    /**
+     * With condensed(): the values on the dofs of the Sigma faces of
+     * solve() (or, with @p homogeneous, of solve_homogeneous()) for a load
+     * @p coupling that is zero off the Sigma dofs, as the interface's
+     * multiplier terms are. Two dense triangular solves with the factor of
+     * the Schur complement S: the Sigma part of K^{-1} c is S^{-1} c. The
+     * other entries of @p solution are those of the solution without
+     * coupling (or zero): not the solution there.
+     */
+    void
+    solve_on_sigma(const dealii::Vector<double> &coupling,
+                   dealii::Vector<double>       &solution,
+                   const bool                    homogeneous) const;
+
+    /**
+     * With condensed(): y = S x on the unconstrained Sigma dofs (zero
+     * elsewhere), S = K_SS - K_SI K_II^{-1} K_IS the Schur complement of
+     * the stiffness matrix (the reaction on Sigma of the discrete-harmonic
+     * extension of the Sigma values of @p x).
+     */
+    void
+    apply_schur_complement(const dealii::Vector<double> &x,
+                           dealii::Vector<double>       &y) const;
 
     /// Whether a group of processes shares it (DistributedSystem).
     bool
@@ -231,6 +278,25 @@ namespace bilayer
     dealii::Vector<double>                       system_rhs;
     dealii::Vector<double>                       traction_load;
     SparseCholesky                               factorisation;
+    /// With condensed(): the solution without coupling (tractions and
+    /// prescribed displacement), and for the Sigma dofs their position in
+    /// the Schur complement's order: unconstrained ones directly,
+    /// constrained ones (hanging nodes, Gamma_D) through the positions and
+    /// weights of their constraint.
+    dealii::Vector<double> particular;
+    std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>
+      sigma_positions;
+    struct ConstrainedSigmaDof
+    {
+      dealii::types::global_dof_index              dof;
+      std::vector<std::pair<unsigned int, double>> entries;
+    };
+    std::vector<ConstrainedSigmaDof> constrained_sigma_dofs;
+
+    /// The Sigma dofs to eliminate last for the Schur complement, or none
+    /// if a constrained Sigma dof depends on dofs off Sigma.
+    std::vector<unsigned int>
+    schur_dofs() const;
   };
 } // namespace bilayer
 

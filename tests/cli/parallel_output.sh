@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The bilayer program under mpirun: 2 and 4 processes give the serial run's
-# summary.json numbers bit for bit (the wall times, memory, process count
-# and exchange volume aside), and the outputs of every run (PVTU pieces and
+# summary.json numbers bit for bit (the wall times, memory, process and
+# thread counts and exchange volume aside), and the outputs of every run (PVTU pieces and
 # HDF5/XDMF, two cycles; with 6 processes u- and u+ are shared by two
 # processes each, which write a piece each and one HDF5 file together) open
 # with ParaView's readers and agree with each other and with summary.json
@@ -17,7 +17,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 strip() {
-  sed -E 's/, "wall_seconds": \{[^}]*\}//; s/, "memory_mib": \[[^]]*\]//; s/, "processes": [0-9]+//; s/, "shared_values": [0-9]+//; s/, "shared_seconds": [^,]+//' "$1"
+  sed -E 's/, "threads": \{[^}]*\}//; s/, "wall_seconds": \{[^}]*\}//; s/, "memory_mib": \[[^]]*\]//; s/, "processes": [0-9]+//; s/, "shared_values": [0-9]+//; s/, "shared_seconds": [^,]+//' "$1"
 }
 for n in 0 2 4 6; do
   launcher=()
