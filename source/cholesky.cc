@@ -131,18 +131,18 @@ namespace bilayer
         data->factor = cholmod_analyze(a, &data->common);
         return factorise(a);
       }
-    // Supernodal always: the trailing block is read from the supernodes.
+    // The factor as L L^T (a simplicial one is LDL^T otherwise), supernodal
+    // or simplicial as CHOLMOD chooses (simplicial for small matrices).
     const int nmethods              = data->common.nmethods,
               ordering              = data->common.method[0].ordering,
-              supernodal            = data->common.supernodal;
+              final_ll              = data->common.final_ll;
     data->common.nmethods           = 1;
     data->common.method[0].ordering = CHOLMOD_GIVEN;
-    data->common.supernodal         = CHOLMOD_SUPERNODAL;
+    data->common.final_ll           = 1;
     data->factor =
       cholmod_analyze_p(a, permutation.data(), nullptr, 0, &data->common);
     data->common.nmethods           = nmethods;
     data->common.method[0].ordering = ordering;
-    data->common.supernodal         = supernodal;
     if (data->factor == nullptr)
       {
         cholmod_free_sparse(&a, &data->common);
@@ -156,7 +156,9 @@ namespace bilayer
         data->factor = cholmod_analyze(a, &data->common);
         return factorise(a);
       }
-    if (!factorise(a))
+    const bool factorised = factorise(a);
+    data->common.final_ll = final_ll;
+    if (!factorised)
       return false;
 
     const cholmod_factor *f     = data->factor;
@@ -165,16 +167,27 @@ namespace bilayer
     for (std::size_t k = first; k < n; ++k)
       if (member[perm[k]] != 1)
         return true; // T not last after all: no Schur factor
-    if (!f->is_super || !f->is_ll)
+    if (!f->is_ll)
       return true;
     schur = std::make_unique<SchurComplementFactor>();
     schur->index.assign(perm + first, perm + n);
     schur->factor.assign(m * m, 0.);
+    const auto *x = static_cast<const double *>(f->x);
+    if (!f->is_super)
+      {
+        // Compressed columns: rows i[p[c] .. p[c] + nz[c]), diagonal first.
+        const auto *p  = static_cast<const int *>(f->p);
+        const auto *i  = static_cast<const int *>(f->i);
+        const auto *nz = static_cast<const int *>(f->nz);
+        for (std::size_t c = first; c < n; ++c)
+          for (int k = p[c]; k < p[c] + nz[c]; ++k)
+            schur->factor[(c - first) * m + (i[k] - first)] = x[k];
+        return true;
+      }
     const auto *super = static_cast<const int *>(f->super);
     const auto *pi    = static_cast<const int *>(f->pi);
     const auto *px    = static_cast<const int *>(f->px);
     const auto *rows  = static_cast<const int *>(f->s);
-    const auto *x     = static_cast<const double *>(f->x);
     for (std::size_t s = 0; s < f->nsuper; ++s)
       {
         const std::size_t c0 = super[s], c1 = super[s + 1];

@@ -19,7 +19,8 @@
 //  6. a Sigma dof on the clamped side (prescribed displacement, no entries)
 //     takes its prescribed value in the whole problem and zero in the
 //     homogeneous one.
-// Meshes: Q1 and Q2 quadrilaterals, P2 triangles, Q1 refined towards a
+// Meshes (8 x 8 cells, simplicial factors, and 48 x 48, supernodal): Q1
+// and Q2 quadrilaterals, P2 triangles, Q1 refined towards a
 // point of Sigma (hanging nodes next to Sigma whose constraints name Sigma
 // dofs; a boundary face has no hanging node), and Q2 with the left side
 // clamped as well, so that Sigma ends on Gamma_D.
@@ -104,23 +105,31 @@ main()
     unsigned int degree;
     bool         hanging;
     bool         clamped_left;
+    unsigned int cells = 8;
   };
   for (const Case &c :
        {Case{"Q1", false, 1, false, false},
         Case{"Q2", false, 2, false, false},
         Case{"P2", true, 2, false, false},
         Case{"Q1 with hanging nodes next to Sigma", false, 1, true, false},
-        Case{
-          "Q2 with Sigma ending on the clamped side", false, 2, false, true}})
+        Case{"Q2 with Sigma ending on the clamped side", false, 2, false, true},
+        // Large enough for CHOLMOD's supernodal factor (the others are
+        // simplicial): both layouts of the factor are read.
+        Case{"Q2, 48 x 48 cells, Sigma ending on the clamped side",
+             false,
+             2,
+             false,
+             true,
+             48}})
     {
       const std::vector<bool> clamped = {c.clamped_left, false, true, false};
       Triangulation<2>        tria;
       if (c.simplex)
         GridGenerator::subdivided_hyper_rectangle_with_simplices(
-          tria, {8, 8}, Point<2>(0, 0), Point<2>(1, 1));
+          tria, {c.cells, c.cells}, Point<2>(0, 0), Point<2>(1, 1));
       else
         GridGenerator::subdivided_hyper_rectangle(tria,
-                                                  {8, 8},
+                                                  {c.cells, c.cells},
                                                   Point<2>(0, 0),
                                                   Point<2>(1, 1));
       if (c.hanging)
