@@ -5,6 +5,7 @@
 #include <bilayer/estimator.h>
 #include <bilayer/geometry.h>
 #include <bilayer/material.h>
+#include <bilayer/tasks.h>
 
 #include <algorithm>
 
@@ -28,9 +29,11 @@ namespace bilayer
     const std::vector<ContactSegment> contact =
       interface_terms ? contact_residual(interface, w, mu) :
                         std::vector<ContactSegment>();
+    // The subproblems as parallel tasks (each writes its own squared[s]).
+    Tasks tasks;
     for (const unsigned int s : Layout::subproblems)
       if (subproblems[s] != nullptr && subproblems[s]->owned())
-        {
+        tasks.add([&, s]() {
           const ElasticSubproblem &sub  = *subproblems[s];
           const auto              &tria = sub.dof_handler().get_triangulation();
           Vector<double>          &eta2 = squared[s];
@@ -45,7 +48,7 @@ namespace bilayer
           for (unsigned int i = 0; i < kelly.size(); ++i)
             eta2[i] = double(kelly[i]) * kelly[i];
           if (!interface_terms)
-            continue;
+            return;
 
           // The residual of the multiplier load on the Sigma faces.
           FEFaceValues<2>                    fe_face(sub.mapping(),
@@ -113,7 +116,8 @@ namespace bilayer
                     }
                   eta2[cell->active_cell_index()] += term;
                 }
-        }
+        });
+    tasks.join_all();
 
     std::array<Vector<float>, Layout::n_subdomains> eta;
     double                                          energy_estimate = 0;
