@@ -203,13 +203,6 @@ namespace bilayer
   }
 
 
-  double
-  SparseCholesky::factor_entries() const
-  {
-    return data->factor ? data->common.lnz : 0.;
-  }
-
-
   // The dense triangular products below are plain loops, not BLAS calls:
   // their order of summation, and so their bits, do not depend on the BLAS
   // or its threads (a threaded dtrsv sums in blocks per thread), and at the

@@ -102,9 +102,6 @@ namespace bilayer
       return schur.get();
     }
 
-    /// Entries of the sparse factor L (0 before initialisation).
-    double
-    factor_entries() const;
 
     /// Overwrite @p rhs_and_solution with A^{-1} rhs.
     void
