@@ -277,21 +277,11 @@ namespace
     void
     assemble()
     {
-      const auto          tractions = traction_functions();
-      const unsigned int  n         = fe->n_dofs_per_cell();
-      const Quadrature<2> quadrature =
-        fe->reference_cell().get_gauss_type_quadrature<2>(fe->degree + 1);
-      const Quadrature<1> face_quadrature =
-        ReferenceCells::Line.get_gauss_type_quadrature<1>(fe->degree + 1);
-      FEValues<2>               fe_values(mapping(),
-                            *fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-      FEFaceValues<2>           fe_face_values(mapping(),
-                                     *fe,
-                                     face_quadrature,
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
+      const auto                tractions = traction_functions();
+      const unsigned int        n         = fe->n_dofs_per_cell();
+      Integration               integration(mapping(), *fe);
+      FEValues<2>              &fe_values      = integration.cell;
+      FEFaceValues<2>          &fe_face_values = integration.face;
       std::vector<unsigned int> layer_of(n);
       for (unsigned int i = 0; i < n; ++i)
         layer_of[i] = fe->system_to_component_index(i).first / 2;
@@ -371,22 +361,12 @@ namespace
     double
     energy() const
     {
-      const auto          tractions = traction_functions();
-      const Quadrature<2> quadrature =
-        fe->reference_cell().get_gauss_type_quadrature<2>(fe->degree + 1);
-      const Quadrature<1> face_quadrature =
-        ReferenceCells::Line.get_gauss_type_quadrature<1>(fe->degree + 1);
-      FEValues<2>                        fe_values(mapping(),
-                            *fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-      FEFaceValues<2>                    fe_face_values(mapping(),
-                                     *fe,
-                                     face_quadrature,
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
-      std::vector<SymmetricTensor<2, 2>> eps(quadrature.size());
-      std::vector<Tensor<1, 2>>          w(face_quadrature.size());
+      const auto                         tractions = traction_functions();
+      Integration                        integration(mapping(), *fe);
+      FEValues<2>                       &fe_values      = integration.cell;
+      FEFaceValues<2>                   &fe_face_values = integration.face;
+      std::vector<SymmetricTensor<2, 2>> eps(integration.quadrature.size());
+      std::vector<Tensor<1, 2>>          w(integration.face_quadrature.size());
       Vector<double>                     t(2);
       double                             pi = 0;
       for (const auto &cell : dofs.active_cell_iterators())
@@ -454,6 +434,28 @@ namespace
     }
 
   private:
+    /// The quadratures and the cell and face values of the assembly and of
+    /// energy() (Gauss rules of degree + 1 points per direction).
+    struct Integration
+    {
+      Integration(const Mapping<2> &mapping, const FiniteElement<2> &fe)
+        : quadrature(
+            fe.reference_cell().get_gauss_type_quadrature<2>(fe.degree + 1))
+        , face_quadrature(
+            ReferenceCells::Line.get_gauss_type_quadrature<1>(fe.degree + 1))
+        , cell(mapping, fe, quadrature, update_gradients | update_JxW_values)
+        , face(mapping,
+               fe,
+               face_quadrature,
+               update_values | update_quadrature_points | update_JxW_values)
+      {}
+
+      const Quadrature<2> quadrature;
+      const Quadrature<1> face_quadrature;
+      FEValues<2>         cell;
+      FEFaceValues<2>     face;
+    };
+
     double
     width() const
     {
