@@ -18,15 +18,7 @@ set -u
 bilayer=$1 prm=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-failures=0
-verdict() { # NAME WHY (empty: passed)
-  if [[ -z $2 ]]; then
-    echo "$1: yes"
-  else
-    echo "$1: no (${2#; })"
-    failures=$((failures + 1))
-  fi
-}
+source "$(dirname "${BASH_SOURCE[0]}")/verdict.sh"
 run() { # DIRECTORY SETTING...
   local dir=$1
   shift

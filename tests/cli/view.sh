@@ -45,15 +45,7 @@ else
 fi
 listing() { (cd "$result" && find . -printf '%p %s %T@\n' | sort); }
 before=$(listing)
-failures=0
-verdict() { # NAME WHY (empty: passed)
-  if [[ -z $2 ]]; then
-    echo "$1: yes"
-  else
-    echo "$1: no (${2#; })"
-    failures=$((failures + 1))
-  fi
-}
+source "$root/tests/cli/verdict.sh"
 png_size() { # FILE -> "WIDTHxHEIGHT", or nothing if not a PNG
   python3 - "$1" << 'PY'
 import struct, sys
