@@ -381,7 +381,24 @@ namespace bilayer
                 << json(field.value(records[i]));
             first = false;
           }
-        out << (object.empty() ? "" : "}") << "}";
+        out << (object.empty() ? "" : "}");
+        // The crack tips, ordered by s.
+        out << ", \"crack_tips\": [";
+        for (unsigned int t = 0; t < records[i].release.size(); ++t)
+          {
+            const EnergyReleaseRate &g = records[i].release[t];
+            out << (t ? ", " : "") << "{\"s\": " << json(g.tip.s)
+                << ", \"x\": " << json(g.tip.point[0])
+                << ", \"y\": " << json(g.tip.point[1])
+                << ", \"direction\": [" << json(g.tip.direction[0] + 0.)
+                << ", " << json(g.tip.direction[1] + 0.)
+                << "], \"support_radius\": " << json(g.tip.support_radius)
+                << ", \"G\": " << json(g.G)
+                << ", \"G_layer_1\": " << json(g.layer[0])
+                << ", \"G_layer_2\": " << json(g.layer[1])
+                << ", \"G_contact\": " << json(g.contact) << "}";
+          }
+        out << "]}";
       }
     out << "\n  ]\n}\n";
   }
@@ -391,13 +408,21 @@ namespace bilayer
   write_csv_table(std::ostream &out, const std::vector<CycleRecord> &records)
   {
     const std::vector<const RecordField *> columns = csv_fields();
+    // The fields, then G at each tip (the tips are the same in every cycle).
+    const unsigned int n_tips = records.empty() ? 0 : records[0].release.size();
     for (unsigned int c = 0; c < columns.size(); ++c)
       out << (c ? "," : "") << columns[c]->csv_key;
+    for (unsigned int t = 0; t < n_tips; ++t)
+      out << ",G_tip" << t + 1;
     out << '\n';
     for (const CycleRecord &record : records)
       {
         for (unsigned int c = 0; c < columns.size(); ++c)
           out << (c ? "," : "") << csv(columns[c]->value(record));
+        for (unsigned int t = 0; t < n_tips; ++t)
+          out << ","
+              << (t < record.release.size() ? json(record.release[t].G) :
+                                              std::string("null"));
         out << '\n';
       }
   }
@@ -424,6 +449,13 @@ namespace bilayer
           table.set_precision(column.header, *column.precision);
         if (column.scientific)
           table.set_scientific(column.header, true);
+      }
+    for (unsigned int t = 0; t < record.release.size(); ++t)
+      {
+        const std::string header = "G tip " + std::to_string(t + 1);
+        table.add_value(header, record.release[t].G);
+        table.set_precision(header, 4);
+        table.set_scientific(header, true);
       }
   }
 } // namespace bilayer

@@ -5,6 +5,7 @@
 
 #include <bilayer/geometry.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -182,6 +183,7 @@ namespace bilayer
                             for (const unsigned int n : valid)
                               msg << " " << n;
                           }
+                        msg << " (or Mesh/Fit crack tips = true)";
                       }
                     else
                       msg << "Mesh/Mesh files: the crack end point x = " << c
@@ -370,7 +372,62 @@ namespace bilayer
                                                                {n_x, n_y},
                                                                p1,
                                                                p2);
+    if (mesh.fit_crack_tips && geometry.has_crack())
+      fit_crack_tips(n_x, tria);
     assign_boundary_ids(tria);
+  }
+
+
+  void
+  Geometry::fit_crack_tips(const unsigned int n_x, Triangulation<2> &tria) const
+  {
+    // Knots of a piecewise linear map of x: the ends of Sigma stay, the
+    // vertex column nearest to each crack end point inside Omega moves
+    // onto it (neighbouring columns where two would share one).
+    const double        width = geometry.x_max - geometry.x_min;
+    const double        h     = width / n_x;
+    std::vector<double> tips;
+    for (const double c : {geometry.crack_start, geometry.crack_end})
+      if (c > geometry.x_min + 1e-10 * width &&
+          c < geometry.x_max - 1e-10 * width)
+        tips.push_back(c);
+    std::vector<long> column(tips.size());
+    for (unsigned int i = 0; i < tips.size(); ++i)
+      {
+        column[i] = std::lround((tips[i] - geometry.x_min) / h);
+        if (i > 0)
+          column[i] = std::max(column[i], column[i - 1] + 1);
+      }
+    for (unsigned int i = tips.size(); i-- > 0;)
+      column[i] = std::min(column[i],
+                           i + 1 < tips.size() ? column[i + 1] - 1 :
+                                                 long(n_x) - 1);
+    AssertThrow(tips.empty() || column[0] >= 1,
+                ExcMessage("Mesh/Fit crack tips: Mesh/Cells along Sigma = " +
+                           std::to_string(n_x) +
+                           " has too few vertices inside Sigma for the crack "
+                           "end points; allowed: at least " +
+                           std::to_string(tips.size() + 1)));
+    std::vector<double> from = {geometry.x_min}, to = {geometry.x_min};
+    for (unsigned int i = 0; i < tips.size(); ++i)
+      {
+        from.push_back(geometry.x_min + column[i] * h);
+        to.push_back(tips[i]);
+      }
+    from.push_back(geometry.x_max);
+    to.push_back(geometry.x_max);
+    GridTools::transform(
+      [&](const Point<2> &p) {
+        unsigned int k = 1;
+        while (k + 1 < from.size() && p[0] > from[k])
+          ++k;
+        const double t = (p[0] - from[k - 1]) / (from[k] - from[k - 1]);
+        return Point<2>(k + 1 == from.size() && t >= 1 ?
+                          to[k] :
+                          to[k - 1] + t * (to[k] - to[k - 1]),
+                        p[1]);
+      },
+      tria);
   }
 
 

@@ -320,9 +320,12 @@ namespace bilayer
 
   void
   write_interface_csv(std::ostream                     &out,
-                      const std::vector<InterfaceNode> &nodes)
+                      const std::vector<InterfaceNode> &nodes,
+                      const std::vector<std::string>   &notes)
   {
     using Layout::u_minus, Layout::u_plus, Layout::v_minus, Layout::v_plus;
+    for (const std::string &note : notes)
+      out << "# " << note << '\n';
     out << "x,on_crack,jump_normal,jump_tangential,mu_c,mu_g_x,mu_g_y,"
            "mu_minus_x,mu_minus_y,mu_plus_x,mu_plus_y,gap_minus_x,"
            "gap_minus_y,gap_plus_x,gap_plus_y,u_minus_x,u_minus_y,u_plus_x,"

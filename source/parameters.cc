@@ -317,6 +317,15 @@ namespace bilayer
                       "Number of cells between Sigma and the top (bottom) side "
                       "of each subdomain on the coarsest mesh [-]; 0 chooses "
                       "the number that makes the cells closest to squares.");
+    prm.declare_entry("Fit crack tips",
+                      "false",
+                      Patterns::Bool(),
+                      "Structured meshes: true moves the column of vertices "
+                      "nearest to each crack end point onto it (the cells in "
+                      "between stretched piecewise linearly), so that any crack "
+                      "interval can be meshed, e.g. for crack-length sweeps "
+                      "(scripts/crack_growth); false refuses crack end points "
+                      "that are not vertices.");
     prm.declare_entry("Polynomial degree of layer 1",
                       "1",
                       Patterns::Integer(1, 4),
@@ -412,6 +421,7 @@ namespace bilayer
                           ElementShape::quadrilateral;
     cells_along_sigma = prm.get_integer("Cells along Sigma");
     cells_across      = prm.get_integer("Cells across each subdomain");
+    fit_crack_tips    = prm.get_bool("Fit crack tips");
     degree_first      = prm.get_integer("Polynomial degree of layer 1");
     degree_second     = prm.get_integer("Polynomial degree of layer 2");
     n_cycles          = prm.get_integer("Number of cycles");
@@ -722,6 +732,45 @@ namespace bilayer
       "more points) or coarser trace (fewer constraints, a better "
       "conditioned dual problem). The layer-gluing multipliers always live "
       "on their own side's trace (docs/multipliers.md).");
+    prm.leave_subsection();
+  }
+
+
+  void
+  FractureParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Fracture");
+    prm.declare_entry("Energy release rate",
+                      "true",
+                      Patterns::Bool(),
+                      "true: compute the energy release rate G = -dPi/dl at "
+                      "every crack tip of every cycle (both layers, and each "
+                      "layer's share) by the domain integral of "
+                      "docs/fracture.md [stress x length].");
+    prm.declare_entry("Support radius",
+                      "0",
+                      Patterns::Double(0),
+                      "Outer radius R of the support of the velocity field "
+                      "theta around each tip [length]: theta moves the tip "
+                      "rigidly for r <= R/2 and falls smoothly to zero at r = "
+                      "R. 0 chooses half the distance from the tip to the "
+                      "nearest other crack tip, corner of Sigma or point of "
+                      "the outer boundary; a given R must be smaller than that "
+                      "distance.");
+    prm.leave_subsection();
+  }
+
+
+  void
+  FractureParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Fracture");
+    energy_release_rate = prm.get_bool("Energy release rate");
+    support_radius      = get_double(prm, "Fracture", "Support radius");
+    AssertThrow(std::isfinite(support_radius) && support_radius >= 0,
+                ExcMessage("Fracture/Support radius must be >= 0 (0: "
+                           "automatic), got " +
+                           prm.get("Support radius")));
     prm.leave_subsection();
   }
 
@@ -1052,6 +1101,7 @@ namespace bilayer
     LoadParameters::declare_parameters(prm, parts);
     ContactParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
+    FractureParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
   }
 
@@ -1065,6 +1115,7 @@ namespace bilayer
     loads.parse_parameters(prm, materials, parts);
     contact.parse_parameters(prm);
     solver.parse_parameters(prm);
+    fracture.parse_parameters(prm);
     output.parse_parameters(prm);
 
     AssertThrow(solver.method != SolverMethod::active_set ||

@@ -196,6 +196,16 @@ namespace bilayer
     record.plus  = domain.statistics(Subdomain::plus);
     record.P     = domain.n_sigma_vertices();
     record.M     = domain.n_outer_vertices();
+    // The tips (and a refusal of Fracture/Support radius) before anything
+    // is computed or written.
+    if (!tips_found && scene.fracture.energy_release_rate)
+      {
+        tips       = crack_tips(domain.interface_curve(),
+                          {{&domain.triangulation(Subdomain::minus),
+                            &domain.triangulation(Subdomain::plus)}},
+                          scene.fracture.support_radius);
+        tips_found = true;
+      }
   }
 
 
@@ -354,6 +364,9 @@ namespace bilayer
          }))
       record.energy += e;
     record.report = bilayer::assess(coupling, w, mu);
+    if (!tips.empty())
+      record.release =
+        energy_release_rates(subproblem_views(), coupling, w, mu, tips);
     check(record);
     // The indicators mark the next adaptive cycle; their global sum is
     // reported on every mesh.
@@ -412,7 +425,11 @@ namespace bilayer
         if (scene.output.write_interface)
           write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
                            [&](std::ostream &o) {
-                             write_interface_csv(o, nodes);
+                             write_interface_csv(
+                               o,
+                               nodes,
+                               release_notes(cycle_records.back().release,
+                                             scene.geometry.gmsh_file.empty()));
                            });
         if (interface_vtu)
           write_interface_vtu(dir, cycle, nodes, outputs);
@@ -506,8 +523,28 @@ namespace bilayer
           << "  smallest mu_c                " << r.min_contact_multiplier
           << "\n"
           << "  complementarity              " << r.complementarity << "\n"
-          << "  KKT residual (relative)      " << r.kkt.value() << "\n"
-          << std::defaultfloat << std::setprecision(3)
+          << "  KKT residual (relative)      " << r.kkt.value() << "\n";
+    for (unsigned int t = 0; t < record.release.size(); ++t)
+      {
+        const EnergyReleaseRate &g = record.release[t];
+        pcout << "  energy release rate G, tip " << t + 1 << " ("
+              << tip_position(g.tip, scene.geometry.gmsh_file.empty())
+              << "): ";
+        if (!g.tip.defined())
+          pcout << "not defined (the tip is at a corner of Sigma)\n";
+        else
+          {
+            pcout << g.G << " (layer 1 " << g.layer[0];
+            if (subproblems[Layout::v_minus] != nullptr)
+              pcout << ", layer 2 " << g.layer[1];
+            if (g.tip.arc)
+              pcout << ", contact " << g.contact;
+            pcout << std::defaultfloat << std::setprecision(3)
+                  << "; support radius " << g.tip.support_radius << ")"
+                  << std::scientific << std::setprecision(4) << "\n";
+          }
+      }
+    pcout << std::defaultfloat << std::setprecision(3)
           << "  processes                    " << record.processes
           << ", traces sent " << record.shared_values << " values in "
           << record.shared_seconds << " s, peak memory per process [MiB]";

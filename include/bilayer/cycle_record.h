@@ -3,6 +3,7 @@
 
 #include <deal.II/base/convergence_table.h>
 
+#include <bilayer/fracture.h>
 #include <bilayer/geometry.h>
 #include <bilayer/interface.h>
 #include <bilayer/outer_solver.h>
@@ -47,6 +48,9 @@ namespace bilayer
     /// (2 |Pi_h - Pi|)^1/2.
     double          eta = 0;
     InterfaceReport report;
+    /// The energy release rate at each crack tip, ordered by s (empty
+    /// without a crack or with Fracture/Energy release rate = false).
+    std::vector<EnergyReleaseRate> release;
     /// Acceptance checks: (description, passed).
     std::vector<std::pair<std::string, bool>> checks;
     double setup_seconds = 0, solve_seconds = 0, total_seconds = 0;

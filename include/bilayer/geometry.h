@@ -128,6 +128,11 @@ namespace bilayer
                    const std::string        &pattern,
                    dealii::Triangulation<2> &tria) const;
 
+    /// Mesh/Fit crack tips: move the vertex columns of a structured mesh
+    /// with @p n_x cells along Sigma onto the crack end points.
+    void
+    fit_crack_tips(const unsigned int n_x, dealii::Triangulation<2> &tria) const;
+
     /// Side ids on the outer boundary, glued/crack ids on Sigma, from the
     /// face centres.
     void

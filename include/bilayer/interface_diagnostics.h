@@ -185,11 +185,13 @@ namespace bilayer
   /**
    * One row per node of mu_1: x, jumps, multipliers, gaps, traces (frame
    * components), s, y, the normal, the contact pressure, the normal traction
-   * and the state (0 open, 1 closed, 2 glued) of interface_nodes().
+   * and the state (0 open, 1 closed, 2 glued) of interface_nodes(). Each
+   * of @p notes goes before the header as a line starting with "# ".
    */
   void
   write_interface_csv(std::ostream                     &out,
-                      const std::vector<InterfaceNode> &nodes);
+                      const std::vector<InterfaceNode> &nodes,
+                      const std::vector<std::string>   &notes = {});
 } // namespace bilayer
 
 #endif

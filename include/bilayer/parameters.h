@@ -248,6 +248,12 @@ namespace bilayer
     unsigned int cells_along_sigma      = 16;
     /// Cells across each subdomain; 0 chooses square-ish cells.
     unsigned int cells_across  = 0;
+    /**
+     * Structured meshes: move the vertex column nearest to each crack end
+     * point onto it (the cells between stretched piecewise linearly), so
+     * that any crack interval can be meshed (crack-length sweeps).
+     */
+    bool fit_crack_tips = false;
     unsigned int degree_first  = 1;
     unsigned int degree_second = 1;
     unsigned int n_cycles      = 1;
@@ -440,6 +446,29 @@ namespace bilayer
     best
   };
 
+  /**
+   * The energy release rate at the crack tips (docs/fracture.md): the
+   * domain integral of the shape derivative of the energy under a velocity
+   * field theta that moves one tip along Sigma.
+   */
+  struct FractureParameters
+  {
+    /// Compute G at every crack tip of every cycle.
+    bool energy_release_rate = true;
+    /**
+     * Outer radius R of the support of theta [length]; theta = its
+     * direction for r <= R/2 and falls smoothly to 0 at r = R. 0: half the
+     * distance from the tip to the nearest other tip, corner of Sigma or
+     * point of the outer boundary.
+     */
+    double support_radius = 0;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
   struct OutputParameters
   {
     std::string    directory         = "results";
@@ -491,6 +520,7 @@ namespace bilayer
     LoadParameters     loads;
     ContactParameters  contact;
     SolverParameters   solver;
+    FractureParameters fracture;
     OutputParameters   output;
     /// The parameter file and the files it includes (not the mesh files).
     std::vector<std::string> input_files;

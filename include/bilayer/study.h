@@ -8,6 +8,7 @@
 
 #include <bilayer/cycle_record.h>
 #include <bilayer/distribution.h>
+#include <bilayer/fracture.h>
 #include <bilayer/geometry.h>
 #include <bilayer/interface.h>
 #include <bilayer/layout.h>
@@ -151,6 +152,10 @@ namespace bilayer
     SolutionRecords                                   outputs;
     /// The mesh-size table of the cycles so far.
     dealii::ConvergenceTable table;
+    /// The crack tips and the supports of their velocity fields (from the
+    /// meshes of cycle 0).
+    std::vector<CrackTip> tips;
+    bool                  tips_found = false;
     /// Error indicators of the last cycle, per subdomain (adaptive
     /// refinement).
     std::array<dealii::Vector<float>, Layout::n_subdomains> indicators;

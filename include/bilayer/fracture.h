@@ -1,0 +1,157 @@
+#ifndef bilayer_fracture_h
+#define bilayer_fracture_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/block_vector.h>
+
+#include <bilayer/interface.h>
+#include <bilayer/interface_curve.h>
+#include <bilayer/layout.h>
+#include <bilayer/subproblem.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+/**
+ * @file
+ * The energy release rate G = -dPi/dl at the crack tips (docs/fracture.md):
+ * the derivative of the equilibrium energy with respect to the position of
+ * one tip moving along Sigma, written as a domain integral over a
+ * neighbourhood of the tip (the shape derivative of the energy under a
+ * velocity field theta that moves the tip along Sigma),
+ *
+ *   G = sum over the layers and subdomains of
+ *         int ( sigma : (grad u grad theta) - W div theta ) dx
+ *       - s_d int_{gamma_c} psi kappa mu_c [u].tau ds,
+ *
+ * W = sigma : eps / 2, s_d = +-1 the direction of growth along tau, kappa
+ * the curvature of Sigma (the last term exists on a curved Sigma only).
+ */
+namespace bilayer
+{
+  /**
+   * A crack tip: an end of a crack piece inside Omega (an end of a piece on
+   * the outer boundary is none), the direction in which the crack grows
+   * and the support of its velocity field theta.
+   */
+  struct CrackTip
+  {
+    /// Parameter on Sigma, the point, and the unit tangent of Sigma that
+    /// points away from the crack (the direction of growth).
+    double               s = 0;
+    dealii::Point<2>     point;
+    dealii::Tensor<1, 2> direction;
+    /// +1 if the crack grows in the direction of growing s, else -1.
+    double sign = 1;
+    /// Sigma near the tip is a circular arc (centre, radius), else straight.
+    bool             arc = false;
+    dealii::Point<2> centre;
+    double           radius = 0;
+    /**
+     * Distance from the tip to the nearest point that theta must not move:
+     * another tip, a corner of Sigma or a piece of Sigma of another shape,
+     * the outer boundary. 0: the tip sits on a corner of Sigma and G (a
+     * derivative along a smooth Sigma) is not defined.
+     */
+    double free_distance = 0;
+    /// Outer radius R of the support of theta (0 where not defined).
+    double support_radius = 0;
+
+    bool
+    defined() const
+    {
+      return support_radius > 0;
+    }
+  };
+
+  /**
+   * The tips of the crack of @p curve, ordered by s, with the outer
+   * boundary of @p meshes (their boundary faces off Sigma) as an obstacle.
+   * @p support_radius (Fracture/Support radius): 0 chooses half the free
+   * distance; a given radius must be smaller than the free distance of
+   * every tip (else an exception names the entry and the allowed range).
+   */
+  std::vector<CrackTip>
+  crack_tips(const InterfaceCurve                            &curve,
+             const std::array<const dealii::Triangulation<2> *, 2> &meshes,
+             const double support_radius);
+
+  /**
+   * The velocity field theta of a tip: theta(x) = psi(|x - tip|) T(x), with
+   * T the direction of growth (straight Sigma) or the rotation about the
+   * arc's centre that is that direction at the tip (tangent to the arc
+   * everywhere), and psi = 1 for r <= R/2, falling to 0 at r = R as a
+   * quintic with two continuous derivatives.
+   */
+  class ThetaField
+  {
+  public:
+    explicit ThetaField(const CrackTip &tip);
+
+    /// psi at distance @p r from the tip.
+    double
+    cutoff(const double r) const;
+
+    dealii::Tensor<1, 2>
+    value(const dealii::Point<2> &x) const;
+
+    /// grad theta: entry (k, j) = d theta_k / d x_j.
+    dealii::Tensor<2, 2>
+    gradient(const dealii::Point<2> &x) const;
+
+    /// Whether the disc of radius @p radius around @p x meets the support.
+    bool
+    reaches(const dealii::Point<2> &x, const double radius) const
+    {
+      return (x - tip.point).norm() < tip.support_radius + radius;
+    }
+
+  private:
+    const CrackTip tip;
+    /// Rotation of the arc field: grad T = omega J / radius.
+    double omega = 0;
+  };
+
+  /// G at one tip, in total and its parts [stress x length].
+  struct EnergyReleaseRate
+  {
+    CrackTip tip;
+    double   G = 0;
+    /// The domain integrals over each layer (both subdomains).
+    std::array<double, 2> layer = {{0, 0}};
+    /// The contact term on a curved crack (0 on a straight one).
+    double contact = 0;
+  };
+
+  /**
+   * G at every tip of @p tips for the solutions @p w and the multipliers
+   * @p mu (collective: each subproblem's integral is computed by its owner,
+   * as a parallel task, and sent to every process). Tips that are not
+   * defined() get NaN.
+   */
+  std::vector<EnergyReleaseRate>
+  energy_release_rates(
+    const PerSubproblem<const ElasticSubproblem *> &subproblems,
+    const Interface                                &interface,
+    const Solutions                                &w,
+    const dealii::BlockVector<double>              &mu,
+    const std::vector<CrackTip>                    &tips);
+
+  /// "x = 0.5" on a straight horizontal Sigma along x, else "s = ..., (x,
+  /// y) = (..., ...)": where a tip is, for the terminal and the notes.
+  std::string
+  tip_position(const CrackTip &tip, const bool along_x);
+
+  /**
+   * One line per tip for the head of interface-NN.csv: where the tip is,
+   * its direction of growth, G and its parts, the support radius.
+   */
+  std::vector<std::string>
+  release_notes(const std::vector<EnergyReleaseRate> &release,
+                const bool                            along_x);
+} // namespace bilayer
+
+#endif

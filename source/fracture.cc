@@ -1,0 +1,469 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <bilayer/fracture.h>
+#include <bilayer/geometry.h>
+#include <bilayer/material.h>
+#include <bilayer/tasks.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  namespace
+  {
+    using Piece = InterfaceCurve::Piece;
+
+    /// Whether two pieces of Sigma are parts of one straight line or one
+    /// circle (theta can move a tip across their junction).
+    bool
+    same_shape(const Piece &a, const Piece &b, const double tol)
+    {
+      if (a.kind != b.kind)
+        return false;
+      if (a.kind == Piece::Kind::segment)
+        return std::abs(a.tau[0] * b.tau[1] - a.tau[1] * b.tau[0]) < 1e-12 &&
+               a.tau * b.tau > 0;
+      return (a.centre - b.centre).norm() < tol &&
+             std::abs(a.radius - b.radius) < tol && a.sweep * b.sweep > 0;
+    }
+
+    double
+    distance_to_segment(const Point<2> &p, const Point<2> &a, const Point<2> &b)
+    {
+      const Tensor<1, 2> ab = b - a;
+      const double       t =
+        ab.norm_square() > 0 ?
+                std::clamp(((p - a) * ab) / ab.norm_square(), 0., 1.) :
+                0.;
+      return (p - (a + t * ab)).norm();
+    }
+
+    /// Distance of @p p from a piece of Sigma.
+    double
+    distance_to_piece(const Point<2> &p, const Piece &piece)
+    {
+      if (piece.kind == Piece::Kind::segment)
+        return distance_to_segment(p, piece.a, piece.b);
+      // On the arc if the direction of p from the centre lies within the
+      // sweep, else at an end.
+      const Tensor<1, 2> d = p - piece.centre;
+      double angle = std::atan2(d[1], d[0]) - piece.phi0;
+      if (piece.sweep < 0)
+        angle = -angle;
+      angle = std::fmod(angle, 2 * M_PI);
+      if (angle < 0)
+        angle += 2 * M_PI;
+      if (d.norm() > 0 && angle <= std::abs(piece.sweep))
+        return std::abs(d.norm() - piece.radius);
+      return std::min((p - piece.a).norm(), (p - piece.b).norm());
+    }
+
+    /// Smallest distance of @p p from the boundary faces of @p tria that
+    /// are not on Sigma.
+    double
+    distance_to_outer_boundary(const Point<2> &p, const Triangulation<2> &tria)
+    {
+      double d = std::numeric_limits<double>::max();
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() != BoundaryIds::glued &&
+              face->boundary_id() != BoundaryIds::crack)
+            d = std::min(d,
+                         distance_to_segment(p, face->vertex(0), face->vertex(1)));
+      return d;
+    }
+
+    /**
+     * A Gauss rule with @p n points per direction on each of the m x m
+     * (quadrilateral) or m^2 (triangle) congruent pieces of the reference
+     * cell: cells much larger than the support of theta see its fall from
+     * 1 to 0 with enough points.
+     */
+    Quadrature<2>
+    subdivided_quadrature(const ReferenceCell &cell,
+                          const unsigned int   n,
+                          const unsigned int   m)
+    {
+      if (cell == ReferenceCells::Quadrilateral)
+        return QIterated<2>(QGauss<1>(n), m);
+      const QGaussSimplex<2>     base(std::min(n, 4u));
+      std::vector<Point<2>>      points;
+      std::vector<double>        weights;
+      const auto                 add = [&](const Point<2>     &origin,
+                           const Tensor<1, 2> &e0,
+                           const Tensor<1, 2> &e1) {
+        for (unsigned int q = 0; q < base.size(); ++q)
+          {
+            points.push_back(origin + base.point(q)[0] * e0 +
+                             base.point(q)[1] * e1);
+            weights.push_back(base.weight(q) / (m * m));
+          }
+      };
+      const double h = 1. / m;
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int j = 0; i + j < m; ++j)
+          {
+            add(Point<2>(i * h, j * h),
+                Tensor<1, 2>({h, 0}),
+                Tensor<1, 2>({0, h}));
+            if (i + j + 1 < m)
+              add(Point<2>((i + 1) * h, (j + 1) * h),
+                  Tensor<1, 2>({-h, 0}),
+                  Tensor<1, 2>({0, -h}));
+          }
+      return Quadrature<2>(points, weights);
+    }
+  } // namespace
+
+
+  std::vector<CrackTip>
+  crack_tips(const InterfaceCurve                            &curve,
+             const std::array<const Triangulation<2> *, 2> &meshes,
+             const double                                   support_radius)
+  {
+    const double          tol    = curve.tolerance();
+    const auto           &pieces = curve.pieces();
+    std::vector<CrackTip> tips;
+    for (const auto &crack : curve.crack().pieces())
+      for (const double sign : {-1., 1.})
+        {
+          const double s = sign < 0 ? crack.start : crack.end;
+          // An end of Sigma: the crack reaches the outer boundary there.
+          if (std::abs(s - curve.s_begin()) <= tol ||
+              std::abs(s - curve.s_end()) <= tol)
+            continue;
+          CrackTip tip;
+          tip.s         = s;
+          tip.sign      = sign;
+          tip.point     = curve.point(s);
+          tip.direction = sign * tangent_of(curve.normal(s));
+          tips.push_back(tip);
+        }
+    std::sort(tips.begin(), tips.end(), [](const auto &a, const auto &b) {
+      return a.s < b.s;
+    });
+
+    for (CrackTip &tip : tips)
+      {
+        // The chain of pieces of one shape that holds the tip.
+        unsigned int k = 0;
+        while (k + 1 < pieces.size() &&
+               tip.s > pieces[k].s0 + pieces[k].length - tol)
+          ++k;
+        unsigned int first = k, last = k;
+        while (first > 0 && same_shape(pieces[first - 1], pieces[k], tol))
+          --first;
+        while (last + 1 < pieces.size() &&
+               same_shape(pieces[last + 1], pieces[k], tol))
+          ++last;
+        if (pieces[k].kind == Piece::Kind::arc)
+          {
+            tip.arc    = true;
+            tip.centre = pieces[k].centre;
+            tip.radius = pieces[k].radius;
+          }
+        // Obstacles: the ends of the chain, the other pieces, the other
+        // tips, the outer boundary.
+        double d = std::min((tip.point - pieces[first].a).norm(),
+                            (tip.point - pieces[last].b).norm());
+        for (unsigned int j = 0; j < pieces.size(); ++j)
+          if (j < first || j > last)
+            d = std::min(d, distance_to_piece(tip.point, pieces[j]));
+        for (const CrackTip &other : tips)
+          if (&other != &tip)
+            d = std::min(d, (other.point - tip.point).norm());
+        for (const auto *tria : meshes)
+          if (tria != nullptr)
+            d = std::min(d, distance_to_outer_boundary(tip.point, *tria));
+        tip.free_distance = d > tol ? d : 0.;
+        if (tip.free_distance == 0)
+          continue;
+        if (support_radius == 0)
+          tip.support_radius = 0.5 * tip.free_distance;
+        else
+          {
+            std::ostringstream range;
+            range << std::setprecision(6) << "Fracture/Support radius = "
+                  << support_radius << " reaches another tip, a corner of "
+                  << "Sigma or the outer boundary from the crack tip at (x, "
+                  << "y) = (" << tip.point[0] << ", " << tip.point[1]
+                  << "); allowed: (0, " << tip.free_distance
+                  << "), or 0 (automatic)";
+            AssertThrow(support_radius < tip.free_distance,
+                        ExcMessage(range.str()));
+            tip.support_radius = support_radius;
+          }
+      }
+    return tips;
+  }
+
+
+  ThetaField::ThetaField(const CrackTip &tip)
+    : tip(tip)
+  {
+    if (tip.arc)
+      {
+        // J (tip - centre) / radius is the counter-clockwise unit tangent.
+        const Tensor<1, 2> r = tip.point - tip.centre;
+        const Tensor<1, 2> t({-r[1], r[0]});
+        omega = (t * tip.direction) > 0 ? 1. : -1.;
+      }
+  }
+
+
+  double
+  ThetaField::cutoff(const double r) const
+  {
+    const double R = tip.support_radius, r0 = 0.5 * R;
+    if (r <= r0)
+      return 1;
+    if (r >= R)
+      return 0;
+    const double t = (r - r0) / (R - r0);
+    return 1 - t * t * t * (10 - 15 * t + 6 * t * t);
+  }
+
+
+  Tensor<1, 2>
+  ThetaField::value(const Point<2> &x) const
+  {
+    const double psi = cutoff((x - tip.point).norm());
+    if (psi == 0)
+      return Tensor<1, 2>();
+    if (!tip.arc)
+      return psi * tip.direction;
+    const Tensor<1, 2> r = x - tip.centre;
+    return psi * omega / tip.radius * Tensor<1, 2>({-r[1], r[0]});
+  }
+
+
+  Tensor<2, 2>
+  ThetaField::gradient(const Point<2> &x) const
+  {
+    const Tensor<1, 2> d  = x - tip.point;
+    const double       r  = d.norm();
+    const double       R  = tip.support_radius, r0 = 0.5 * R;
+    Tensor<2, 2>       g;
+    if (r >= R)
+      return g;
+    Tensor<1, 2> T = tip.direction;
+    if (tip.arc)
+      {
+        const Tensor<1, 2> c = x - tip.centre;
+        T                    = omega / tip.radius * Tensor<1, 2>({-c[1], c[0]});
+        const double psi     = cutoff(r);
+        g[0][1]              = -psi * omega / tip.radius;
+        g[1][0]              = psi * omega / tip.radius;
+      }
+    if (r > r0)
+      {
+        const double t     = (r - r0) / (R - r0);
+        const double dpsi  = -30 * t * t * (1 - t) * (1 - t) / (R - r0);
+        const auto   e_r   = d / r;
+        g += outer_product(T, dpsi * e_r);
+      }
+    return g;
+  }
+
+
+  std::vector<EnergyReleaseRate>
+  energy_release_rates(const PerSubproblem<const ElasticSubproblem *> &subproblems,
+                       const Interface                                &interface,
+                       const Solutions                                &w,
+                       const BlockVector<double>                      &mu,
+                       const std::vector<CrackTip>                    &tips)
+  {
+    const unsigned int             n = tips.size();
+    std::vector<EnergyReleaseRate> result(n);
+    std::vector<ThetaField>        fields;
+    for (unsigned int t = 0; t < n; ++t)
+      {
+        result[t].tip = tips[t];
+        fields.emplace_back(tips[t]);
+      }
+
+    // The domain integral of each subproblem at each tip, by its owner.
+    PerSubproblem<Vector<double>> integrals;
+    Tasks                         tasks;
+    for (const unsigned int s : Layout::subproblems)
+      if (subproblems[s] != nullptr && subproblems[s]->owned())
+        tasks.add([&, s]() {
+          const ElasticSubproblem &sub = *subproblems[s];
+          integrals[s].reinit(n);
+          // FEValues with the rule subdivided m x m times, by m.
+          std::map<unsigned int, std::unique_ptr<FEValues<2>>> by_pieces;
+          const FEValuesExtractors::Vector displacement(0);
+          const PlaneStrainLaw             law(sub.material());
+          std::vector<Tensor<2, 2>>        grad_u;
+          for (const auto &cell : sub.dof_handler().active_cell_iterators())
+            {
+              const double half_diameter = 0.5 * cell->diameter();
+              double       smallest_R    = 0;
+              for (unsigned int t = 0; t < n; ++t)
+                if (tips[t].defined() &&
+                    fields[t].reaches(cell->center(), half_diameter * 1.01))
+                  smallest_R = smallest_R == 0 ?
+                                 tips[t].support_radius :
+                                 std::min(smallest_R, tips[t].support_radius);
+              if (smallest_R == 0)
+                continue;
+              // Pieces no larger than 1/8 of R: at least four across the
+              // fall of theta (R/2 < r < R).
+              const unsigned int m = std::clamp<unsigned int>(
+                std::ceil(16 * half_diameter / smallest_R), 1, 32);
+              auto &fe_values_m = by_pieces[m];
+              if (!fe_values_m)
+                fe_values_m = std::make_unique<FEValues<2>>(
+                  sub.mapping(),
+                  sub.fe(),
+                  subdivided_quadrature(sub.fe().reference_cell(),
+                                        sub.fe().degree + 3,
+                                        m),
+                  update_gradients | update_quadrature_points |
+                    update_JxW_values);
+              FEValues<2> &fe_values = *fe_values_m;
+              fe_values.reinit(cell);
+              grad_u.resize(fe_values.n_quadrature_points);
+              fe_values[displacement].get_function_gradients(w[s], grad_u);
+              for (unsigned int t = 0; t < n; ++t)
+                if (tips[t].defined() &&
+                    fields[t].reaches(cell->center(), half_diameter * 1.01))
+                  {
+                    double sum = 0;
+                    for (const unsigned int q :
+                         fe_values.quadrature_point_indices())
+                      {
+                        const Tensor<2, 2> grad_theta =
+                          fields[t].gradient(fe_values.quadrature_point(q));
+                        const SymmetricTensor<2, 2> eps = symmetrize(grad_u[q]);
+                        const SymmetricTensor<2, 2> stress = law.stress(eps);
+                        const double energy_density = 0.5 * (stress * eps);
+                        sum += (scalar_product(Tensor<2, 2>(stress),
+                                               grad_u[q] * grad_theta) -
+                                energy_density * trace(grad_theta)) *
+                               fe_values.JxW(q);
+                      }
+                    integrals[s](t) += sum;
+                  }
+            }
+        });
+    tasks.join_all();
+    for (const unsigned int s : Layout::subproblems)
+      if (subproblems[s] != nullptr)
+        {
+          if (!subproblems[s]->owned())
+            integrals[s].reinit(n);
+          subproblems[s]->processes().share(s, integrals[s]);
+          for (unsigned int t = 0; t < n; ++t)
+            result[t].layer[static_cast<unsigned int>(Layout::layer(s))] +=
+              integrals[s](t);
+        }
+
+    // The contact term on a curved crack: -sign int psi kappa mu_c [u].tau
+    // over the segments of the mesh of mu_1 (Gauss quadrature, the
+    // multiplier and the jump interpolated from its nodes).
+    bool curved_contact = false;
+    for (const CrackTip &tip : tips)
+      curved_contact = curved_contact || (tip.defined() && tip.arc);
+    if (curved_contact && interface.contact_parameters().non_penetration)
+      {
+        const MultiplierSpace &space = interface.space();
+        const InterfaceCurve  &curve = interface.curve();
+        Vector<double>         tm, tp;
+        interface.coupling().trace_at_nodes(Layout::u_minus,
+                                            w[Layout::u_minus],
+                                            tm);
+        interface.coupling().trace_at_nodes(Layout::u_plus,
+                                            w[Layout::u_plus],
+                                            tp);
+        const auto         &bp = space.breakpoints(Layout::across_sigma);
+        const QGauss<1>     gauss(space.degree() + 2);
+        std::vector<double> shape;
+        for (unsigned int t = 0; t < n; ++t)
+          if (tips[t].defined() && tips[t].arc)
+            for (unsigned int e = 0; e + 1 < bp.size(); ++e)
+              {
+                const double mid = 0.5 * (bp[e] + bp[e + 1]);
+                if (!curve.crack().contains(mid) ||
+                    !fields[t].reaches(curve.point(mid),
+                                       0.5 * (bp[e + 1] - bp[e]) * 1.6))
+                  continue;
+                for (unsigned int q = 0; q < gauss.size(); ++q)
+                  {
+                    const double s_q =
+                      bp[e] + gauss.point(q)[0] * (bp[e + 1] - bp[e]);
+                    space.shape_values(Layout::across_sigma, s_q, shape);
+                    double mu_c = 0, jump = 0;
+                    for (unsigned int i = 0; i < shape.size(); ++i)
+                      {
+                        const unsigned int a = space.node(e, i);
+                        mu_c += shape[i] * space.contact_multiplier(mu, a);
+                        jump +=
+                          shape[i] *
+                          (tp(Layout::entry(a, Layout::tangential)) -
+                           tm(Layout::entry(a, Layout::tangential)));
+                      }
+                    const Point<2> x = curve.point(s_q);
+                    // kappa: d tau / ds = kappa nu, towards the centre.
+                    const double kappa = ((tips[t].centre - x) *
+                                          curve.normal(s_q)) /
+                                         (tips[t].radius * tips[t].radius);
+                    result[t].contact -=
+                      tips[t].sign * fields[t].cutoff((x - tips[t].point).norm()) *
+                      kappa * mu_c * jump * gauss.weight(q) *
+                      (bp[e + 1] - bp[e]);
+                  }
+              }
+      }
+
+    for (EnergyReleaseRate &r : result)
+      r.G = r.tip.defined() ? r.layer[0] + r.layer[1] + r.contact :
+                              std::numeric_limits<double>::quiet_NaN();
+    return result;
+  }
+
+
+  std::string
+  tip_position(const CrackTip &tip, const bool along_x)
+  {
+    std::ostringstream x;
+    x << std::setprecision(6);
+    if (along_x)
+      x << "x = " << tip.point[0];
+    else
+      x << "s = " << tip.s << ", (x, y) = (" << tip.point[0] << ", "
+        << tip.point[1] << ")";
+    return x.str();
+  }
+
+
+  std::vector<std::string>
+  release_notes(const std::vector<EnergyReleaseRate> &release,
+                const bool                            along_x)
+  {
+    std::vector<std::string> notes;
+    for (unsigned int t = 0; t < release.size(); ++t)
+      {
+        const EnergyReleaseRate &g = release[t];
+        std::ostringstream       line;
+        line << std::setprecision(10) << "crack tip " << t + 1 << " at "
+             << tip_position(g.tip, along_x) << ", growing along ("
+             << g.tip.direction[0] + 0. << ", " << g.tip.direction[1] + 0.
+             << "): energy release rate G = " << g.G
+             << " [stress x length] (layer 1 " << g.layer[0] << ", layer 2 "
+             << g.layer[1] << ", contact " << g.contact
+             << "), support radius " << g.tip.support_radius;
+        notes.push_back(line.str());
+      }
+    return notes;
+  }
+} // namespace bilayer
