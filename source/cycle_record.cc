@@ -389,9 +389,9 @@ namespace bilayer
             const EnergyReleaseRate &g = records[i].release[t];
             out << (t ? ", " : "") << "{\"s\": " << json(g.tip.s)
                 << ", \"x\": " << json(g.tip.point[0])
-                << ", \"y\": " << json(g.tip.point[1])
-                << ", \"direction\": [" << json(g.tip.direction[0] + 0.)
-                << ", " << json(g.tip.direction[1] + 0.)
+                << ", \"y\": " << json(g.tip.point[1]) << ", \"direction\": ["
+                << json(g.tip.direction[0] + 0.) << ", "
+                << json(g.tip.direction[1] + 0.)
                 << "], \"support_radius\": " << json(g.tip.support_radius)
                 << ", \"G\": " << json(g.G)
                 << ", \"G_layer_1\": " << json(g.layer[0])

@@ -7,8 +7,8 @@
 #include <bilayer/tasks.h>
 
 #include <algorithm>
-#include <iomanip>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <map>
 #include <memory>
@@ -40,10 +40,9 @@ namespace bilayer
     distance_to_segment(const Point<2> &p, const Point<2> &a, const Point<2> &b)
     {
       const Tensor<1, 2> ab = b - a;
-      const double       t =
-        ab.norm_square() > 0 ?
-                std::clamp(((p - a) * ab) / ab.norm_square(), 0., 1.) :
-                0.;
+      const double       t  = ab.norm_square() > 0 ?
+                                std::clamp(((p - a) * ab) / ab.norm_square(), 0., 1.) :
+                                0.;
       return (p - (a + t * ab)).norm();
     }
 
@@ -55,8 +54,8 @@ namespace bilayer
         return distance_to_segment(p, piece.a, piece.b);
       // On the arc if the direction of p from the centre lies within the
       // sweep, else at an end.
-      const Tensor<1, 2> d = p - piece.centre;
-      double angle = std::atan2(d[1], d[0]) - piece.phi0;
+      const Tensor<1, 2> d     = p - piece.centre;
+      double             angle = std::atan2(d[1], d[0]) - piece.phi0;
       if (piece.sweep < 0)
         angle = -angle;
       angle = std::fmod(angle, 2 * M_PI);
@@ -75,10 +74,11 @@ namespace bilayer
       double d = std::numeric_limits<double>::max();
       for (const auto &cell : tria.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && face->boundary_id() != BoundaryIds::glued &&
+          if (face->at_boundary() &&
+              face->boundary_id() != BoundaryIds::glued &&
               face->boundary_id() != BoundaryIds::crack)
-            d = std::min(d,
-                         distance_to_segment(p, face->vertex(0), face->vertex(1)));
+            d = std::min(
+              d, distance_to_segment(p, face->vertex(0), face->vertex(1)));
       return d;
     }
 
@@ -95,10 +95,10 @@ namespace bilayer
     {
       if (cell == ReferenceCells::Quadrilateral)
         return QIterated<2>(QGauss<1>(n), m);
-      const QGaussSimplex<2>     base(std::min(n, 4u));
-      std::vector<Point<2>>      points;
-      std::vector<double>        weights;
-      const auto                 add = [&](const Point<2>     &origin,
+      const QGaussSimplex<2> base(std::min(n, 4u));
+      std::vector<Point<2>>  points;
+      std::vector<double>    weights;
+      const auto             add = [&](const Point<2>     &origin,
                            const Tensor<1, 2> &e0,
                            const Tensor<1, 2> &e1) {
         for (unsigned int q = 0; q < base.size(); ++q)
@@ -126,7 +126,7 @@ namespace bilayer
 
 
   std::vector<CrackTip>
-  crack_tips(const InterfaceCurve                            &curve,
+  crack_tips(const InterfaceCurve                          &curve,
              const std::array<const Triangulation<2> *, 2> &meshes,
              const double                                   support_radius)
   {
@@ -192,8 +192,9 @@ namespace bilayer
         else
           {
             std::ostringstream range;
-            range << std::setprecision(6) << "Fracture/Support radius = "
-                  << support_radius << " reaches another tip, a corner of "
+            range << std::setprecision(6)
+                  << "Fracture/Support radius = " << support_radius
+                  << " reaches another tip, a corner of "
                   << "Sigma or the outer boundary from the crack tip at (x, "
                   << "y) = (" << tip.point[0] << ", " << tip.point[1]
                   << "); allowed: (0, " << tip.free_distance
@@ -249,9 +250,9 @@ namespace bilayer
   Tensor<2, 2>
   ThetaField::gradient(const Point<2> &x) const
   {
-    const Tensor<1, 2> d  = x - tip.point;
-    const double       r  = d.norm();
-    const double       R  = tip.support_radius, r0 = 0.5 * R;
+    const Tensor<1, 2> d = x - tip.point;
+    const double       r = d.norm();
+    const double       R = tip.support_radius, r0 = 0.5 * R;
     Tensor<2, 2>       g;
     if (r >= R)
       return g;
@@ -266,9 +267,9 @@ namespace bilayer
       }
     if (r > r0)
       {
-        const double t     = (r - r0) / (R - r0);
-        const double dpsi  = -30 * t * t * (1 - t) * (1 - t) / (R - r0);
-        const auto   e_r   = d / r;
+        const double t    = (r - r0) / (R - r0);
+        const double dpsi = -30 * t * t * (1 - t) * (1 - t) / (R - r0);
+        const auto   e_r  = d / r;
         g += outer_product(T, dpsi * e_r);
       }
     return g;
@@ -276,11 +277,12 @@ namespace bilayer
 
 
   std::vector<EnergyReleaseRate>
-  energy_release_rates(const PerSubproblem<const ElasticSubproblem *> &subproblems,
-                       const Interface                                &interface,
-                       const Solutions                                &w,
-                       const BlockVector<double>                      &mu,
-                       const std::vector<CrackTip>                    &tips)
+  energy_release_rates(
+    const PerSubproblem<const ElasticSubproblem *> &subproblems,
+    const Interface                                &interface,
+    const Solutions                                &w,
+    const BlockVector<double>                      &mu,
+    const std::vector<CrackTip>                    &tips)
   {
     const unsigned int             n = tips.size();
     std::vector<EnergyReleaseRate> result(n);
@@ -292,7 +294,7 @@ namespace bilayer
       }
 
     // The domain integral of each subproblem at each tip, by its owner.
-    PerSubproblem<Vector<double>> integrals;
+    PerSubproblem<Vector<double>> integrals, line_work;
     Tasks                         tasks;
     for (const unsigned int s : Layout::subproblems)
       if (subproblems[s] != nullptr && subproblems[s]->owned())
@@ -301,6 +303,9 @@ namespace bilayer
           integrals[s].reinit(n);
           // FEValues with the rule subdivided m x m times, by m.
           std::map<unsigned int, std::unique_ptr<FEValues<2>>> by_pieces;
+          std::map<unsigned int, std::unique_ptr<FEFaceValues<2>>>
+            face_by_pieces;
+          line_work[s].reinit(n);
           const FEValuesExtractors::Vector displacement(0);
           const PlaneStrainLaw             law(sub.material());
           std::vector<Tensor<2, 2>>        grad_u;
@@ -354,6 +359,41 @@ namespace bilayer
                       }
                     integrals[s](t) += sum;
                   }
+
+              // The work of the multiplier tractions on Sigma.
+              for (const auto f : cell->face_indices())
+                if (cell->face(f)->at_boundary() &&
+                    (cell->face(f)->boundary_id() == BoundaryIds::glued ||
+                     cell->face(f)->boundary_id() == BoundaryIds::crack))
+                  {
+                    auto &fe_face_m = face_by_pieces[m];
+                    if (!fe_face_m)
+                      fe_face_m = std::make_unique<FEFaceValues<2>>(
+                        sub.mapping(),
+                        sub.fe(),
+                        QIterated<1>(QGauss<1>(sub.fe().degree + 3), m),
+                        update_gradients | update_quadrature_points |
+                          update_JxW_values);
+                    FEFaceValues<2> &fe_face = *fe_face_m;
+                    fe_face.reinit(cell, f);
+                    grad_u.resize(fe_face.n_quadrature_points);
+                    fe_face[displacement].get_function_gradients(w[s], grad_u);
+                    for (unsigned int t = 0; t < n; ++t)
+                      if (tips[t].defined())
+                        for (const unsigned int q :
+                             fe_face.quadrature_point_indices())
+                          {
+                            const Point<2>     x = fe_face.quadrature_point(q);
+                            const Tensor<1, 2> theta = fields[t].value(x);
+                            if (theta.norm_square() == 0)
+                              continue;
+                            line_work[s](t) +=
+                              (grad_u[q] * theta) *
+                              interface.multiplier_traction(
+                                mu, s, interface.curve().parameter(x)) *
+                              fe_face.JxW(q);
+                          }
+                  }
             }
         });
     tasks.join_all();
@@ -361,11 +401,18 @@ namespace bilayer
       if (subproblems[s] != nullptr)
         {
           if (!subproblems[s]->owned())
-            integrals[s].reinit(n);
+            {
+              integrals[s].reinit(n);
+              line_work[s].reinit(n);
+            }
           subproblems[s]->processes().share(s, integrals[s]);
+          subproblems[s]->processes().share(s, line_work[s]);
           for (unsigned int t = 0; t < n; ++t)
-            result[t].layer[static_cast<unsigned int>(Layout::layer(s))] +=
-              integrals[s](t);
+            {
+              result[t].bulk += integrals[s](t);
+              if (Layout::layer(s) == Layer::second)
+                result[t].layer[1] += integrals[s](t) - line_work[s](t);
+            }
         }
 
     // The contact term on a curved crack: -sign int psi kappa mu_c [u].tau
@@ -408,26 +455,31 @@ namespace bilayer
                         const unsigned int a = space.node(e, i);
                         mu_c += shape[i] * space.contact_multiplier(mu, a);
                         jump +=
-                          shape[i] *
-                          (tp(Layout::entry(a, Layout::tangential)) -
-                           tm(Layout::entry(a, Layout::tangential)));
+                          shape[i] * (tp(Layout::entry(a, Layout::tangential)) -
+                                      tm(Layout::entry(a, Layout::tangential)));
                       }
                     const Point<2> x = curve.point(s_q);
                     // kappa: d tau / ds = kappa nu, towards the centre.
-                    const double kappa = ((tips[t].centre - x) *
-                                          curve.normal(s_q)) /
-                                         (tips[t].radius * tips[t].radius);
+                    const double kappa =
+                      ((tips[t].centre - x) * curve.normal(s_q)) /
+                      (tips[t].radius * tips[t].radius);
                     result[t].contact -=
-                      tips[t].sign * fields[t].cutoff((x - tips[t].point).norm()) *
-                      kappa * mu_c * jump * gauss.weight(q) *
-                      (bp[e + 1] - bp[e]);
+                      tips[t].sign *
+                      fields[t].cutoff((x - tips[t].point).norm()) * kappa *
+                      mu_c * jump * gauss.weight(q) * (bp[e + 1] - bp[e]);
                   }
               }
       }
 
     for (EnergyReleaseRate &r : result)
-      r.G = r.tip.defined() ? r.layer[0] + r.layer[1] + r.contact :
-                              std::numeric_limits<double>::quiet_NaN();
+      if (r.tip.defined())
+        {
+          r.G        = r.bulk + r.contact;
+          r.layer[0] = r.G - r.layer[1];
+        }
+      else
+        r.G = r.layer[0] = r.layer[1] =
+          std::numeric_limits<double>::quiet_NaN();
     return result;
   }
 
@@ -460,8 +512,8 @@ namespace bilayer
              << g.tip.direction[0] + 0. << ", " << g.tip.direction[1] + 0.
              << "): energy release rate G = " << g.G
              << " [stress x length] (layer 1 " << g.layer[0] << ", layer 2 "
-             << g.layer[1] << ", contact " << g.contact
-             << "), support radius " << g.tip.support_radius;
+             << g.layer[1] << ", contact " << g.contact << "), support radius "
+             << g.tip.support_radius;
         notes.push_back(line.str());
       }
     return notes;

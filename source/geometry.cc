@@ -399,9 +399,9 @@ namespace bilayer
           column[i] = std::max(column[i], column[i - 1] + 1);
       }
     for (unsigned int i = tips.size(); i-- > 0;)
-      column[i] = std::min(column[i],
-                           i + 1 < tips.size() ? column[i + 1] - 1 :
-                                                 long(n_x) - 1);
+      column[i] =
+        std::min(column[i],
+                 i + 1 < tips.size() ? column[i + 1] - 1 : long(n_x) - 1);
     AssertThrow(tips.empty() || column[0] >= 1,
                 ExcMessage("Mesh/Fit crack tips: Mesh/Cells along Sigma = " +
                            std::to_string(n_x) +

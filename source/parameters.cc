@@ -317,15 +317,16 @@ namespace bilayer
                       "Number of cells between Sigma and the top (bottom) side "
                       "of each subdomain on the coarsest mesh [-]; 0 chooses "
                       "the number that makes the cells closest to squares.");
-    prm.declare_entry("Fit crack tips",
-                      "false",
-                      Patterns::Bool(),
-                      "Structured meshes: true moves the column of vertices "
-                      "nearest to each crack end point onto it (the cells in "
-                      "between stretched piecewise linearly), so that any crack "
-                      "interval can be meshed, e.g. for crack-length sweeps "
-                      "(scripts/crack_growth); false refuses crack end points "
-                      "that are not vertices.");
+    prm.declare_entry(
+      "Fit crack tips",
+      "false",
+      Patterns::Bool(),
+      "Structured meshes: true moves the column of vertices "
+      "nearest to each crack end point onto it (the cells in "
+      "between stretched piecewise linearly), so that any crack "
+      "interval can be meshed, e.g. for crack-length sweeps "
+      "(scripts/crack_growth); false refuses crack end points "
+      "that are not vertices.");
     prm.declare_entry("Polynomial degree of layer 1",
                       "1",
                       Patterns::Integer(1, 4),

@@ -202,7 +202,7 @@ namespace bilayer
       {
         tips       = crack_tips(domain.interface_curve(),
                           {{&domain.triangulation(Subdomain::minus),
-                            &domain.triangulation(Subdomain::plus)}},
+                                  &domain.triangulation(Subdomain::plus)}},
                           scene.fracture.support_radius);
         tips_found = true;
       }
@@ -528,8 +528,7 @@ namespace bilayer
       {
         const EnergyReleaseRate &g = record.release[t];
         pcout << "  energy release rate G, tip " << t + 1 << " ("
-              << tip_position(g.tip, scene.geometry.gmsh_file.empty())
-              << "): ";
+              << tip_position(g.tip, scene.geometry.gmsh_file.empty()) << "): ";
         if (!g.tip.defined())
           pcout << "not defined (the tip is at a corner of Sigma)\n";
         else

@@ -131,13 +131,19 @@ main()
   std::string   header;
   std::getline(csv, header);
   std::cout << "table.csv header: " << header << std::endl;
+  // The fields, then G at each of the two crack tips.
   std::string keys_csv;
   for (const std::string &key : CycleRecord::csv_keys())
     keys_csv += (keys_csv.empty() ? "" : ",") + key;
+  keys_csv += ",G_tip1,G_tip2";
   if (header != keys_csv)
     std::cout << "table.csv header is not CycleRecord::csv_keys(): " << keys_csv
               << std::endl;
+  // Notes (one per crack tip) start with "# ", then the header.
   std::ifstream interface_csv("results/interface-00.csv");
-  std::getline(interface_csv, header);
+  unsigned int  notes = 0;
+  while (std::getline(interface_csv, header) && header.rfind("# ", 0) == 0)
+    ++notes;
+  std::cout << "interface-00.csv notes: " << notes << std::endl;
   std::cout << "interface-00.csv header: " << header << std::endl;
 }

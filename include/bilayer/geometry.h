@@ -131,7 +131,8 @@ namespace bilayer
     /// Mesh/Fit crack tips: move the vertex columns of a structured mesh
     /// with @p n_x cells along Sigma onto the crack end points.
     void
-    fit_crack_tips(const unsigned int n_x, dealii::Triangulation<2> &tria) const;
+    fit_crack_tips(const unsigned int        n_x,
+                   dealii::Triangulation<2> &tria) const;
 
     /// Side ids on the outer boundary, glued/crack ids on Sigma, from the
     /// face centres.

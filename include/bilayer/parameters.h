@@ -247,16 +247,16 @@ namespace bilayer
     ElementShape shape                  = ElementShape::quadrilateral;
     unsigned int cells_along_sigma      = 16;
     /// Cells across each subdomain; 0 chooses square-ish cells.
-    unsigned int cells_across  = 0;
+    unsigned int cells_across = 0;
     /**
      * Structured meshes: move the vertex column nearest to each crack end
      * point onto it (the cells between stretched piecewise linearly), so
      * that any crack interval can be meshed (crack-length sweeps).
      */
-    bool fit_crack_tips = false;
-    unsigned int degree_first  = 1;
-    unsigned int degree_second = 1;
-    unsigned int n_cycles      = 1;
+    bool         fit_crack_tips = false;
+    unsigned int degree_first   = 1;
+    unsigned int degree_second  = 1;
+    unsigned int n_cycles       = 1;
     /**
      * Gmsh meshes of the two subdomains, one entry per cycle, "{side}"
      * standing for "minus" and "plus". Empty: structured meshes. Relative

@@ -44,7 +44,8 @@ for c in cycles:
     field = {name: vtk_to_numpy(pd.GetArray(name)) for name in
              ("contact_pressure", "normal_traction", "mu_c", "jump_normal",
               "state", "crack_tip", "s", "mu_g", "normal")}
-    rows = list(csv.DictReader(open("%s/interface-%02d.csv" % (directory, k))))
+    rows = list(csv.DictReader(l for l in open("%s/interface-%02d.csv" % (directory, k))
+                               if not l.startswith("#")))
     by_s = {round(float(r["s"]), 9): r for r in rows}
     n_cells = data.GetNumberOfCells()
     check("cycle %d: %d line cells join the %d nodes" % (k, n_cells, len(rows)),
