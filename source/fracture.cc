@@ -4,6 +4,7 @@
 #include <bilayer/fracture.h>
 #include <bilayer/geometry.h>
 #include <bilayer/material.h>
+#include <bilayer/similarity_breaker.h>
 #include <bilayer/tasks.h>
 
 #include <algorithm>
@@ -306,6 +307,7 @@ namespace bilayer
           std::map<unsigned int, std::unique_ptr<FEFaceValues<2>>>
             face_by_pieces;
           line_work[s].reinit(n);
+          const SimilarityBreaker          fresh(sub.fe().reference_cell());
           const FEValuesExtractors::Vector displacement(0);
           const PlaneStrainLaw             law(sub.material());
           std::vector<Tensor<2, 2>>        grad_u;
@@ -336,6 +338,7 @@ namespace bilayer
                   update_gradients | update_quadrature_points |
                     update_JxW_values);
               FEValues<2> &fe_values = *fe_values_m;
+              fresh.apply(fe_values);
               fe_values.reinit(cell);
               grad_u.resize(fe_values.n_quadrature_points);
               fe_values[displacement].get_function_gradients(w[s], grad_u);

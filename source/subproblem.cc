@@ -12,6 +12,7 @@
 
 #include <bilayer/geometry.h>
 #include <bilayer/material.h>
+#include <bilayer/similarity_breaker.h>
 #include <bilayer/subproblem.h>
 
 #include <cmath>
@@ -65,39 +66,6 @@ namespace bilayer
 
   namespace
   {
-    /**
-     * Single-threaded, deal.II 9.4's FEValues reuses the mapping data of
-     * the previous cell when the next one is a translation of it; with more
-     * threads it recomputes them. The two differ in the last bits, which
-     * would make results depend on the number of threads. Reinitialising
-     * on a cell that is no translation of any mesh cell (a distorted
-     * reference cell of a mesh of its own) before each cell makes every
-     * run recompute, so that the assembled matrices are the same bits for
-     * any number of threads.
-     */
-    class SimilarityBreaker
-    {
-    public:
-      explicit SimilarityBreaker(const ReferenceCell cell_type)
-      {
-        GridGenerator::reference_cell(tria, cell_type);
-        GridTools::transform(
-          [](const Point<2> &p) {
-            return Point<2>(p[0] + 0.37 * p[0] * p[1] + 0.11 * p[1],
-                            1.3 * p[1] + 0.07 * p[0]);
-          },
-          tria);
-      }
-
-      void
-      apply(FEValues<2> &fe_values) const
-      {
-        fe_values.reinit(tria.begin_active());
-      }
-
-    private:
-      Triangulation<2> tria;
-    };
 
 
     /// The element matrix and the traction load of one cell.
