@@ -313,11 +313,13 @@ namespace bilayer
           std::vector<Tensor<2, 2>>        grad_u;
           for (const auto &cell : sub.dof_handler().active_cell_iterators())
             {
-              const double half_diameter = 0.5 * cell->diameter();
-              double       smallest_R    = 0;
+              // No point of a cell is farther from its centre than its
+              // diameter (the vertex mean lies inside the cell).
+              const double diameter   = cell->diameter();
+              double       smallest_R = 0;
               for (unsigned int t = 0; t < n; ++t)
                 if (tips[t].defined() &&
-                    fields[t].reaches(cell->center(), half_diameter * 1.01))
+                    fields[t].reaches(cell->center(), diameter))
                   smallest_R = smallest_R == 0 ?
                                  tips[t].support_radius :
                                  std::min(smallest_R, tips[t].support_radius);
@@ -325,8 +327,10 @@ namespace bilayer
                 continue;
               // Pieces no larger than 1/8 of R: at least four across the
               // fall of theta (R/2 < r < R).
-              const unsigned int m = std::clamp<unsigned int>(
-                std::ceil(16 * half_diameter / smallest_R), 1, 32);
+              const unsigned int m =
+                std::clamp<unsigned int>(std::ceil(8 * diameter / smallest_R),
+                                         1,
+                                         32);
               auto &fe_values_m = by_pieces[m];
               if (!fe_values_m)
                 fe_values_m = std::make_unique<FEValues<2>>(
@@ -344,7 +348,7 @@ namespace bilayer
               fe_values[displacement].get_function_gradients(w[s], grad_u);
               for (unsigned int t = 0; t < n; ++t)
                 if (tips[t].defined() &&
-                    fields[t].reaches(cell->center(), half_diameter * 1.01))
+                    fields[t].reaches(cell->center(), diameter))
                   {
                     double sum = 0;
                     for (const unsigned int q :
