@@ -132,6 +132,10 @@ namespace bilayer
         record_field("message", [](const R &r) { return r.result.message; }),
         record_field("energy", [](const R &r) { return r.energy; })
           .csv(17, "energy").column("energy", 8, true),
+        record_field("layer_1", [](const R &r) { return r.layer_energy[0]; })
+          .in("energy_of"),
+        record_field("layer_2", [](const R &r) { return r.layer_energy[1]; })
+          .in("energy_of"),
         record_field("constraint_violation",
                      [](const R &r) { return r.report.constraint_violation; })
           .csv(18, "constraint_violation").column("violation", 2, true),
@@ -394,8 +398,6 @@ namespace bilayer
                 << json(g.tip.direction[1] + 0.)
                 << "], \"support_radius\": " << json(g.tip.support_radius)
                 << ", \"G\": " << json(g.G)
-                << ", \"G_layer_1\": " << json(g.layer[0])
-                << ", \"G_layer_2\": " << json(g.layer[1])
                 << ", \"G_contact\": " << json(g.contact) << "}";
           }
         out << "]}";

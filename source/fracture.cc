@@ -295,7 +295,7 @@ namespace bilayer
       }
 
     // The domain integral of each subproblem at each tip, by its owner.
-    PerSubproblem<Vector<double>> integrals, line_work;
+    PerSubproblem<Vector<double>> integrals;
     Tasks                         tasks;
     for (const unsigned int s : Layout::subproblems)
       if (subproblems[s] != nullptr && subproblems[s]->owned())
@@ -304,9 +304,6 @@ namespace bilayer
           integrals[s].reinit(n);
           // FEValues with the rule subdivided m x m times, by m.
           std::map<unsigned int, std::unique_ptr<FEValues<2>>> by_pieces;
-          std::map<unsigned int, std::unique_ptr<FEFaceValues<2>>>
-            face_by_pieces;
-          line_work[s].reinit(n);
           const SimilarityBreaker          fresh(sub.fe().reference_cell());
           const FEValuesExtractors::Vector displacement(0);
           const PlaneStrainLaw             law(sub.material());
@@ -366,41 +363,6 @@ namespace bilayer
                       }
                     integrals[s](t) += sum;
                   }
-
-              // The work of the multiplier tractions on Sigma.
-              for (const auto f : cell->face_indices())
-                if (cell->face(f)->at_boundary() &&
-                    (cell->face(f)->boundary_id() == BoundaryIds::glued ||
-                     cell->face(f)->boundary_id() == BoundaryIds::crack))
-                  {
-                    auto &fe_face_m = face_by_pieces[m];
-                    if (!fe_face_m)
-                      fe_face_m = std::make_unique<FEFaceValues<2>>(
-                        sub.mapping(),
-                        sub.fe(),
-                        QIterated<1>(QGauss<1>(sub.fe().degree + 3), m),
-                        update_gradients | update_quadrature_points |
-                          update_JxW_values);
-                    FEFaceValues<2> &fe_face = *fe_face_m;
-                    fe_face.reinit(cell, f);
-                    grad_u.resize(fe_face.n_quadrature_points);
-                    fe_face[displacement].get_function_gradients(w[s], grad_u);
-                    for (unsigned int t = 0; t < n; ++t)
-                      if (tips[t].defined())
-                        for (const unsigned int q :
-                             fe_face.quadrature_point_indices())
-                          {
-                            const Point<2>     x = fe_face.quadrature_point(q);
-                            const Tensor<1, 2> theta = fields[t].value(x);
-                            if (theta.norm_square() == 0)
-                              continue;
-                            line_work[s](t) +=
-                              (grad_u[q] * theta) *
-                              interface.multiplier_traction(
-                                mu, s, interface.curve().parameter(x)) *
-                              fe_face.JxW(q);
-                          }
-                  }
             }
         });
     tasks.join_all();
@@ -408,18 +370,10 @@ namespace bilayer
       if (subproblems[s] != nullptr)
         {
           if (!subproblems[s]->owned())
-            {
-              integrals[s].reinit(n);
-              line_work[s].reinit(n);
-            }
+            integrals[s].reinit(n);
           subproblems[s]->processes().share(s, integrals[s]);
-          subproblems[s]->processes().share(s, line_work[s]);
           for (unsigned int t = 0; t < n; ++t)
-            {
-              result[t].bulk += integrals[s](t);
-              if (Layout::layer(s) == Layer::second)
-                result[t].layer[1] += integrals[s](t) - line_work[s](t);
-            }
+            result[t].bulk += integrals[s](t);
         }
 
     // The contact term on a curved crack: -sign int psi kappa mu_c [u].tau
@@ -480,13 +434,9 @@ namespace bilayer
 
     for (EnergyReleaseRate &r : result)
       if (r.tip.defined())
-        {
-          r.G        = r.bulk + r.contact;
-          r.layer[0] = r.G - r.layer[1];
-        }
+        r.G = r.bulk + r.contact;
       else
-        r.G = r.layer[0] = r.layer[1] =
-          std::numeric_limits<double>::quiet_NaN();
+        r.G = std::numeric_limits<double>::quiet_NaN();
     return result;
   }
 
@@ -518,9 +468,8 @@ namespace bilayer
              << tip_position(g.tip, along_x) << ", growing along ("
              << g.tip.direction[0] + 0. << ", " << g.tip.direction[1] + 0.
              << "): energy release rate G = " << g.G
-             << " [stress x length] (layer 1 " << g.layer[0] << ", layer 2 "
-             << g.layer[1] << ", contact " << g.contact << "), support radius "
-             << g.tip.support_radius;
+             << " [stress x length] (contact term " << g.contact
+             << "), support radius " << g.tip.support_radius;
         notes.push_back(line.str());
       }
     return notes;

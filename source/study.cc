@@ -358,11 +358,16 @@ namespace bilayer
   {
     // Energies (whole solutions: evaluated by the owners), summed in the
     // order of the subproblems as in a serial run.
-    for (const double e :
-         share_values(subproblem_views(), [&](const unsigned int s) {
-           return subproblems[s]->energy(w[s]);
-         }))
-      record.energy += e;
+    const PerSubproblem<double> energies =
+      share_values(subproblem_views(), [&](const unsigned int s) {
+        return subproblems[s]->energy(w[s]);
+      });
+    for (const unsigned int s : Layout::subproblems)
+      {
+        record.energy += energies[s];
+        record.layer_energy[static_cast<unsigned int>(Layout::layer(s))] +=
+          energies[s];
+      }
     record.report = bilayer::assess(coupling, w, mu);
     if (!tips.empty())
       record.release =
@@ -533,13 +538,11 @@ namespace bilayer
           pcout << "not defined (the tip is at a corner of Sigma)\n";
         else
           {
-            pcout << g.G << " (layer 1 " << g.layer[0];
-            if (subproblems[Layout::v_minus] != nullptr)
-              pcout << ", layer 2 " << g.layer[1];
+            pcout << g.G << " (";
             if (g.tip.arc)
-              pcout << ", contact " << g.contact;
+              pcout << "contact term " << g.contact << "; ";
             pcout << std::defaultfloat << std::setprecision(3)
-                  << "; support radius " << g.tip.support_radius << ")"
+                  << "support radius " << g.tip.support_radius << ")"
                   << std::scientific << std::setprecision(4) << "\n";
           }
       }

@@ -8,6 +8,7 @@
 #include <bilayer/interface.h>
 #include <bilayer/outer_solver.h>
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -43,6 +44,9 @@ namespace bilayer
     /// steps; zero when not estimated).
     DualSpectrum spectrum;
     double       energy = 0;
+    /// The energy of each layer (both subdomains; its strain energy minus
+    /// the work of its own loads): energy = their sum.
+    std::array<double, 2> layer_energy = {{0, 0}};
     /// The global a-posteriori error estimate in the energy norm
     /// (estimate_error(), estimator.h), [energy^1/2]: compare with
     /// (2 |Pi_h - Pi|)^1/2.

@@ -122,15 +122,6 @@ namespace bilayer
     double   G = 0;
     /// The domain integral over both layers and subdomains.
     double bulk = 0;
-    /**
-     * Each layer's share: the energy that flows into the tip through the
-     * layer (the limit of its domain integral as the support shrinks to
-     * the tip). Layer 2's is its domain integral minus the work of the
-     * multiplier tractions on Sigma along theta, int_Sigma (grad v theta).
-     * mu+- ds, which makes it independent of the support; layer 1's is the
-     * rest, G minus layer 2's.
-     */
-    std::array<double, 2> layer = {{0, 0}};
     /// The contact term on a curved crack (0 on a straight one).
     double contact = 0;
   };
