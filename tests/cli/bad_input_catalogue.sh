@@ -163,6 +163,10 @@ run "theta = 0" "Solver/Uzawa step theta must be > 0 or 'auto', got 0" "Solver/U
 run "bound p <= 0" "Contact/Multiplier bound p must be > 0, got 0" "Contact/Multiplier bound p=0"
 run "crack end not a vertex, plus side" "Mesh/Cells along Sigma on the plus side = 3 does not make the crack end point" "Mesh/Cells along Sigma on the plus side=3"
 run "crack end not a vertex, proposals" "numbers of cells that do: 4 8 12" "Mesh/Cells along Sigma=6"
+check "crack tips that cannot be fitted" "Mesh/Fit crack tips: Mesh/Cells along Sigma = 2 has too few vertices inside Sigma for the crack end points; allowed: at least 3" "$prm" --set "Output/Output directory=fresh/out" --set "Mesh/Fit crack tips=true" --set "Mesh/Cells along Sigma=2"
+[[ ! -e fresh ]] || fail "crack tips that cannot be fitted" "'fresh' left behind"
+run "support of theta beyond the outer boundary" "Fracture/Support radius = 5 reaches another tip, a corner of Sigma or the outer boundary from the crack tip at (x, y) = (-0.5, 0); allowed: (0, 0.5), or 0 (automatic)" "Fracture/Support radius=5"
+run "negative support radius" "Fracture/Support radius=-1" "Fracture/Support radius=-1"
 
 # Constants and expressions that clash with the parser's names or sizes.
 for name in x y t sin E1 mu2; do
