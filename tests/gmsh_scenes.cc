@@ -7,7 +7,9 @@
 // with the body) are the same mechanical problem, so the energy must equal
 // that of the built-in rectangle to solver tolerance and the opening
 // profile [u].nu against arc length to 1e-8 relative (the parameter s runs
-// from 0 on the rotated Sigma, from x = -1 on the rectangle).
+// from 0 on the rotated Sigma, from x = -1 on the rectangle), and so must
+// the energy release rate at both crack tips (G is invariant under rigid
+// motions: a domain integral of invariants of the fields).
 //
 // Patch tests: both layers clamped on the whole outer boundary to the
 // uniform compression u = -e (x, y): the stress is a pressure in both
@@ -69,6 +71,8 @@ namespace
     double              energy;
     std::vector<double> s, opening, mu_c;
     bool                accepted;
+    /// The energy release rate at each crack tip, in the order of s.
+    std::vector<double> G;
   };
 
   Result
@@ -76,9 +80,11 @@ namespace
   {
     Study              study(scene_from_string(text + solver, "scene"), quiet);
     const CycleRecord &record = study.run_cycle(0);
-    Result             r{record.energy, {}, {}, {}, record.accepted()};
-    const auto        &space = study.interface().space();
-    r.opening = normal_opening(study.interface(), study.solutions());
+    Result             r{record.energy, {}, {}, {}, record.accepted(), {}};
+    for (const EnergyReleaseRate &tip : record.release)
+      r.G.push_back(tip.G);
+    const auto &space = study.interface().space();
+    r.opening         = normal_opening(study.interface(), study.solutions());
     for (unsigned int a = 0; a < space.n_nodes(Layout::across_sigma); ++a)
       {
         r.s.push_back(space.node_position(a, Layout::across_sigma));
@@ -135,6 +141,14 @@ namespace
               << "; opening profile equal to 1e-8: "
               << (same_nodes && profile <= 1e-8 * max_abs(plain.opening) &&
                       max_abs(plain.opening) > 0 ?
+                    "yes" :
+                    "NO")
+              << "; energy release rate at both tips equal to 1e-8: "
+              << (plain.G.size() == 2 && rotated.G.size() == 2 &&
+                      std::abs(rotated.G[0] - plain.G[0]) <=
+                        1e-8 * max_abs(plain.G) &&
+                      std::abs(rotated.G[1] - plain.G[1]) <=
+                        1e-8 * max_abs(plain.G) ?
                     "yes" :
                     "NO")
               << std::endl;
@@ -268,8 +282,10 @@ namespace
                       "solvers"),
                     quiet);
         const CycleRecord &record = study.run_cycle(0);
-        Result             r{record.energy, {}, {}, {}, record.accepted()};
-        const auto        &space = study.interface().space();
+        Result             r{record.energy, {}, {}, {}, record.accepted(), {}};
+        for (const EnergyReleaseRate &tip : record.release)
+          r.G.push_back(tip.G);
+        const auto &space = study.interface().space();
         for (unsigned int a = 0; a < space.n_nodes(Layout::across_sigma); ++a)
           r.mu_c.push_back(space.on_crack(a) ?
                              space.contact_multiplier(study.multipliers(), a) :
