@@ -47,26 +47,6 @@ namespace bilayer
       return (p - (a + t * ab)).norm();
     }
 
-    /// Distance of @p p from a piece of Sigma.
-    double
-    distance_to_piece(const Point<2> &p, const Piece &piece)
-    {
-      if (piece.kind == Piece::Kind::segment)
-        return distance_to_segment(p, piece.a, piece.b);
-      // On the arc if the direction of p from the centre lies within the
-      // sweep, else at an end.
-      const Tensor<1, 2> d     = p - piece.centre;
-      double             angle = std::atan2(d[1], d[0]) - piece.phi0;
-      if (piece.sweep < 0)
-        angle = -angle;
-      angle = std::fmod(angle, 2 * M_PI);
-      if (angle < 0)
-        angle += 2 * M_PI;
-      if (d.norm() > 0 && angle <= std::abs(piece.sweep))
-        return std::abs(d.norm() - piece.radius);
-      return std::min((p - piece.a).norm(), (p - piece.b).norm());
-    }
-
     /// Smallest distance of @p p from the boundary faces of @p tria that
     /// are not on Sigma.
     double
@@ -178,18 +158,19 @@ namespace bilayer
                             (tip.point - pieces[last].b).norm());
         for (unsigned int j = 0; j < pieces.size(); ++j)
           if (j < first || j > last)
-            d = std::min(d, distance_to_piece(tip.point, pieces[j]));
+            d = std::min(d, InterfaceCurve::distance(pieces[j], tip.point));
         for (const CrackTip &other : tips)
           if (&other != &tip)
             d = std::min(d, (other.point - tip.point).norm());
         for (const auto *tria : meshes)
           if (tria != nullptr)
             d = std::min(d, distance_to_outer_boundary(tip.point, *tria));
-        tip.free_distance = d > tol ? d : 0.;
-        if (tip.free_distance == 0)
+        // 0: the tip sits on a corner of Sigma, G is not defined.
+        const double free_distance = d > tol ? d : 0.;
+        if (free_distance == 0)
           continue;
         if (support_radius == 0)
-          tip.support_radius = 0.5 * tip.free_distance;
+          tip.support_radius = 0.5 * free_distance;
         else
           {
             std::ostringstream range;
@@ -198,9 +179,9 @@ namespace bilayer
                   << " reaches another tip, a corner of "
                   << "Sigma or the outer boundary from the crack tip at (x, "
                   << "y) = (" << tip.point[0] << ", " << tip.point[1]
-                  << "); allowed: (0, " << tip.free_distance
+                  << "); allowed: (0, " << free_distance
                   << "), or 0 (automatic)";
-            AssertThrow(support_radius < tip.free_distance,
+            AssertThrow(support_radius < free_distance,
                         ExcMessage(range.str()));
             tip.support_radius = support_radius;
           }
@@ -373,7 +354,7 @@ namespace bilayer
             integrals[s].reinit(n);
           subproblems[s]->processes().share(s, integrals[s]);
           for (unsigned int t = 0; t < n; ++t)
-            result[t].bulk += integrals[s](t);
+            result[t].G += integrals[s](t);
         }
 
     // The contact term on a curved crack: -sign int psi kappa mu_c [u].tau
@@ -402,8 +383,7 @@ namespace bilayer
               {
                 const double mid = 0.5 * (bp[e] + bp[e + 1]);
                 if (!curve.crack().contains(mid) ||
-                    !fields[t].reaches(curve.point(mid),
-                                       0.5 * (bp[e + 1] - bp[e]) * 1.6))
+                    !fields[t].reaches(curve.point(mid), bp[e + 1] - bp[e]))
                   continue;
                 for (unsigned int q = 0; q < gauss.size(); ++q)
                   {
@@ -434,7 +414,7 @@ namespace bilayer
 
     for (EnergyReleaseRate &r : result)
       if (r.tip.defined())
-        r.G = r.bulk + r.contact;
+        r.G += r.contact;
       else
         r.G = std::numeric_limits<double>::quiet_NaN();
     return result;

@@ -421,10 +421,9 @@ namespace bilayer
         unsigned int k = 1;
         while (k + 1 < from.size() && p[0] > from[k])
           ++k;
+        // Exact at the knots: the crack tips and the ends of Sigma.
         const double t = (p[0] - from[k - 1]) / (from[k] - from[k - 1]);
-        return Point<2>(k + 1 == from.size() && t >= 1 ?
-                          to[k] :
-                          to[k - 1] + t * (to[k] - to[k - 1]),
+        return Point<2>(t >= 1 ? to[k] : to[k - 1] + t * (to[k] - to[k - 1]),
                         p[1]);
       },
       tria);

@@ -140,6 +140,13 @@ namespace bilayer
   }
 
 
+  double
+  InterfaceCurve::distance(const Piece &piece, const Point<2> &p)
+  {
+    return project(piece, p).second;
+  }
+
+
   Point<2>
   InterfaceCurve::point(const double s) const
   {

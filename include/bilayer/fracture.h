@@ -51,13 +51,10 @@ namespace bilayer
     dealii::Point<2> centre;
     double           radius = 0;
     /**
-     * Distance from the tip to the nearest point that theta must not move:
-     * another tip, a corner of Sigma or a piece of Sigma of another shape,
-     * the outer boundary. 0: the tip sits on a corner of Sigma and G (a
-     * derivative along a smooth Sigma) is not defined.
+     * Outer radius R of the support of theta; 0 where G is not defined:
+     * the tip sits on a corner of Sigma (G is a derivative along a smooth
+     * Sigma).
      */
-    double free_distance = 0;
-    /// Outer radius R of the support of theta (0 where not defined).
     double support_radius = 0;
 
     bool
@@ -119,9 +116,8 @@ namespace bilayer
   struct EnergyReleaseRate
   {
     CrackTip tip;
-    double   G = 0;
-    /// The domain integral over both layers and subdomains.
-    double bulk = 0;
+    /// The domain integral over both layers and subdomains plus contact.
+    double G = 0;
     /// The contact term on a curved crack (0 on a straight one).
     double contact = 0;
   };

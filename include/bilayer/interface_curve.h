@@ -106,6 +106,10 @@ namespace bilayer
     double
     distance(const dealii::Point<2> &p) const;
 
+    /// Distance of @p p from one @p piece of the curve.
+    static double
+    distance(const Piece &piece, const dealii::Point<2> &p);
+
     dealii::Point<2>
     point(const double s) const;
 
