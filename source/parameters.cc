@@ -1385,6 +1385,24 @@ namespace bilayer
 
 
     /**
+     * "; did you mean 'a', 'b' or 'c'?" for @p names, "" for none.
+     */
+    std::string
+    suggestion(const std::vector<std::string> &names)
+    {
+      if (names.empty())
+        return "";
+      std::string text = "; did you mean ";
+      for (std::size_t i = 0; i < names.size(); ++i)
+        text += (i == 0                ? "'" :
+                 i + 1 == names.size() ? " or '" :
+                                         ", '") +
+                names[i] + "'";
+      return text + "?";
+    }
+
+
+    /**
      * "; did you mean ...?" naming the declared paths closest to @p name
      * (compared as a whole path when @p name contains '/', else by their
      * last part) when they differ from it by a few letters (at most a third
@@ -1410,15 +1428,55 @@ namespace bilayer
         }
       // (A whole path that is declared: the error is about something else;
       // a name that is declared elsewhere: that place.)
-      if (closest.empty() || (whole && best == 0))
+      if (whole && best == 0)
         return "";
-      std::string text = "; did you mean ";
-      for (std::size_t i = 0; i < closest.size(); ++i)
-        text += (i == 0                  ? "'" :
-                 i + 1 == closest.size() ? " or '" :
-                                           ", '") +
-                closest[i] + "'";
-      return text + "?";
+      return suggestion(closest);
+    }
+
+
+    /**
+     * "; did you mean 'VALUE'?" for a value that a Selection pattern refuses:
+     * @p message holds the value between @p before and @p after and the
+     * pattern "[Selection a|b|c ]"; the choices closest to the value (at most a
+     * third of its length apart, at least 2; case and blanks, '-' and '_'
+     * not counted), else "".
+     */
+    std::string
+    closest_choice(const std::string &message,
+                   const std::string &before,
+                   const std::string &after)
+    {
+      const auto a = message.find(before);
+      const auto p = message.find("[Selection ");
+      if (a == std::string::npos || p == std::string::npos)
+        return "";
+      const auto b = message.find(after, a + before.size());
+      const auto q = message.find(']', p);
+      if (b == std::string::npos || q == std::string::npos || b > p)
+        return "";
+      const auto normal = [](const std::string &text) {
+        std::string result;
+        for (const char c : text)
+          if (std::isalnum(static_cast<unsigned char>(c)))
+            result +=
+              static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return result;
+      };
+      const std::string value =
+        normal(message.substr(a + before.size(), b - a - before.size()));
+      std::size_t best = std::max<std::size_t>(2, value.size() / 3) + 1;
+      std::vector<std::string> closest;
+      for (const auto &choice :
+           Utilities::split_string_list(message.substr(p + 11, q - p - 11),
+                                        '|'))
+        {
+          const std::size_t d = edit_distance(value, normal(choice));
+          if (d < best)
+            best = d, closest.clear();
+          if (d == best)
+            closest.push_back(choice);
+        }
+      return suggestion(closest);
     }
 
 
@@ -1448,11 +1506,21 @@ namespace bilayer
       const std::string marker = "no such subsection to be entered: ";
       const auto        at     = message.find(marker);
       if (at != std::string::npos)
-        return message +
-               did_you_mean(prm,
-                            Utilities::trim(message.substr(at + marker.size())),
-                            true);
-      return message;
+        {
+          // (deal.II's text of this error leaves the file name's '<' open.)
+          const std::string suggestion =
+            did_you_mean(prm,
+                         Utilities::trim(message.substr(at + marker.size())),
+                         true);
+          const auto file = message.find(" of file <");
+          const auto end  = message.find(": There is", file);
+          if (file != std::string::npos && end != std::string::npos &&
+              message.find('>', file) > end)
+            message.insert(end, ">");
+          return message + suggestion;
+        }
+      return message +
+             closest_choice(message, "The entry value ", " for the entry");
     }
   } // namespace
 
@@ -1513,7 +1581,10 @@ namespace bilayer
               message.pop_back();
             AssertThrow(false,
                         ExcMessage("--set " + assignment + ": " + message +
-                                   did_you_mean(prm, joined, false)));
+                                   did_you_mean(prm, joined, false) +
+                                   closest_choice(message,
+                                                  "The string <",
+                                                  "> does not match")));
           }
         for (; entered > 0; --entered)
           prm.leave_subsection();

@@ -72,6 +72,7 @@ printf 'subsection Mesh\n  sett Cells along Sigma = 8\nend\n' > malformed.prm
 printf 'subsection Mesh\n  set Cels along Sigma = 8\nend\n' > unknown_entry.prm
 printf 'subsection Meshes\n  set Cells along Sigma = 8\nend\n' > unknown_subsection.prm
 printf 'subsection Mesh\n  set Cells along Sigma = 8\n' > unterminated.prm
+printf 'subsection Solver\n  set Method = Active-Set\nend\n' > misspelled_value.prm
 printf 'include self.prm\n' > self.prm
 printf 'include b.prm\n' > a.prm
 printf 'include a.prm\n' > b.prm
@@ -81,8 +82,11 @@ mkfifo a_fifo.prm
 before=$(snapshot)
 check "malformed line" "Line <2> of file <malformed.prm>" malformed.prm
 check "unknown entry" "Line <2> of file <unknown_entry.prm>: No entry with name <Cels along Sigma>" unknown_entry.prm
-check "unknown subsection" "Line <1> of file <unknown_subsection.prm: There is no such subsection to be entered: Meshes" unknown_subsection.prm
+check "unknown subsection" "Line <1> of file <unknown_subsection.prm>: There is no such subsection to be entered: Meshes; did you mean 'Mesh'?" unknown_subsection.prm
 check "unterminated subsection" "unterminated.prm" unterminated.prm
+check "misspelled choice" "Line <2> of file <misspelled_value.prm>: The entry value Active-Set for the entry named Method does not match the given pattern: [Selection uzawa|accelerated|active set ]; did you mean 'active set'?" misspelled_value.prm
+check "misspelled choice in --set" "--set Solver/Method=uzawaa: The string <uzawaa> does not match the given pattern <[Selection uzawa|accelerated|active set ]>; did you mean 'uzawa'?" "$prm" --set "Solver/Method=uzawaa"
+check "choice far from every allowed one" "pattern <[Selection uzawa|accelerated|active set ]>" "$prm" --set "Solver/Method=newton"
 check "missing parameter file" "cannot open parameter file 'no-such-file.prm': no such file" no-such-file.prm
 check "parameter file is a directory" "parameter file 'a_directory.prm': it is a directory" a_directory.prm
 check "parameter file is a device" "parameter file '/dev/null': it is not a regular file" /dev/null
@@ -275,7 +279,7 @@ before=$(snapshot)
 # (Open MPI's PMIx keeps its data in a shared file unless told otherwise,
 # which the limit would stop.)
 (trap '' XFSZ; ulimit -f 600; PMIX_MCA_gds=hash exec "$bilayer" "$prm" --set "Output/Output directory=out" \
-  --set "Mesh/Cells along Sigma=128" > stdout 2> stderr)
+  --set "Mesh/Cells along Sigma=128" --set "Solver/Method=active set" > stdout 2> stderr)
 rc=$?
 if [[ $rc -eq 1 && $(wc -l < stderr) -eq 1 ]] && grep -qE "bilayer: error: writing the results of cycle 0 failed: cannot write '.*': File too large" stderr \
   && [[ "$(snapshot)" == "$before" && -z $(find . \( -name '*.partial' -o -name '*.lock' \) ! -path ./empty.lock) ]]; then
