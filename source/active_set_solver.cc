@@ -163,8 +163,9 @@ namespace bilayer
       return result;
     };
     BlockVector<double> g, mask(lower), previous_mask(lower), older_mask(lower),
-      r, delta;
+      r, delta, gradient, previous_gradient, previous_mu;
     unsigned int inner_iterations = 0, n_cycling = 0;
+    bool         exact_steps = false;
     interface.space().project(mu);
 
     for (unsigned int k = 0;; ++k)
@@ -180,6 +181,35 @@ namespace bilayer
         interface.jumps(w, g);
         const KKTResidual kkt = kkt_residual(interface, w, g, mu);
         result.stopping_value = kkt.value();
+
+        // A Newton step must not decrease the dual function
+        // D(mu) = min_w L(w, mu), a concave quadratic with gradient D g:
+        // D(mu + s) - D(mu) = s . (D g(mu) + D g(mu + s)) / 2 exactly.
+        // Inexact steps (conjugate gradients to Inner tolerance) on an
+        // ill-conditioned F_II can decrease it and then cycle through a
+        // chain of active sets (seen with Young's moduli 5e5 apart): after
+        // the first decrease every following step is solved exactly.
+        gradient = g;
+        interface.space().scale_by_weights(gradient);
+        if (k > 0 && !exact_steps && kkt.value() > parameters.tolerance)
+          {
+            BlockVector<double> step(mu);
+            step -= previous_mu;
+            const double before = step * previous_gradient,
+                         after  = step * gradient;
+            const double change = 0.5 * (before + after);
+            if (change < -1e-12 * (std::abs(before) + std::abs(after)))
+              {
+                exact_steps = true;
+                if (output.progress_interval > 0)
+                  pcout << "    the inexact Newton step decreased the dual "
+                           "function by "
+                        << std::scientific << std::setprecision(3) << -change
+                        << std::defaultfloat
+                        << ": the following steps are solved exactly"
+                        << std::endl;
+              }
+          }
 
         // The active set at mu: components held at a bound.
         older_mask = previous_mask;
@@ -257,7 +287,7 @@ namespace bilayer
         r.scale(mask);
         const double scale  = displacement_scale(interface, w);
         const double start  = largest_jump(interface, r);
-        const double target = std::max(settled || n_cycling > 0 ?
+        const double target = std::max(settled || n_cycling > 0 || exact_steps ?
                                          0. :
                                          parameters.inner_tolerance * start,
                                        0.1 * parameters.tolerance * scale);
@@ -284,6 +314,8 @@ namespace bilayer
             return finish(msg.str());
           }
         result.linear_iterations += inner_iterations;
+        previous_mu       = mu;
+        previous_gradient = gradient;
         mu.add(cycling && n_cycling > 2 ? 0.5 : 1., delta);
         interface.space().project(mu);
       }

@@ -14,10 +14,16 @@
 //  - a bound p below the contact pressure: the run is refused, with a note
 //    naming the parameter, and the constraint violation falls as p grows
 //    (estimate (12) of docs/problem.md).
+//  - Young's moduli 5e5 apart with the settings of
+//    parameter_files/template.prm (adaptive Q2, warm starts, inexact Newton
+//    steps): every cycle converges, to the energy that exact Newton steps
+//    give (the discrete problem has one solution).
 
 #include <bilayer/parameters.h>
 #include <bilayer/study.h>
 
+#include <cmath>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -171,4 +177,43 @@ main()
             << ", violation falls as p grows: "
             << yes(violation[0] > violation[1] && violation[1] > violation[2])
             << std::endl;
+
+  {
+    std::ifstream     file(SOURCE_DIR "/../parameter_files/template.prm");
+    std::stringstream text;
+    text << file.rdbuf();
+    const std::string scene =
+      text.str() +
+      materials(" subsection Layer 2\n  set Young's modulus = 1e8\n end\n") +
+      "subsection Output\n set Write VTU = false\n set Write interface CSV = "
+      "false\n set Terminal output = checks\nend\n";
+    const auto energies = [&](const std::string &inner, bool &accepted) {
+      Study study(scene_from_string(scene +
+                                      "subsection Solver\n subsection Active "
+                                      "set\n  set Inner tolerance = " +
+                                      inner + "\n end\nend\n",
+                                    "contrast"),
+                  quiet);
+      std::vector<double> pi;
+      accepted = true;
+      for (unsigned int cycle = 0; cycle < 3; ++cycle)
+        {
+          const CycleRecord r = study.run_cycle(cycle);
+          accepted            = accepted && r.accepted();
+          pi.push_back(r.energy);
+        }
+      return pi;
+    };
+    bool       inexact_accepted, exact_accepted;
+    const auto inexact = energies("1e-2", inexact_accepted);
+    const auto exact   = energies("1e-14", exact_accepted);
+    bool       same    = true;
+    for (unsigned int c = 0; c < 3; ++c)
+      same = same && std::abs(inexact[c] / exact[c] - 1) < 1e-8;
+    std::cout << "moduli 5e5 apart, the template's settings, 3 adaptive "
+                 "cycles: accepted: "
+              << yes(inexact_accepted && exact_accepted)
+              << ", the energies of exact Newton steps (1e-8): " << yes(same)
+              << std::endl;
+  }
 }
