@@ -188,9 +188,9 @@ main()
       "subsection Output\n set Write VTU = false\n set Write interface CSV = "
       "false\n set Terminal output = checks\nend\n";
     const auto energies = [&](const std::string &inner, bool &accepted) {
-      Study study(scene_from_string(scene +
+      Study               study(scene_from_string(scene +
                                       "subsection Solver\n subsection Active "
-                                      "set\n  set Inner tolerance = " +
+                                                    "set\n  set Inner tolerance = " +
                                       inner + "\n end\nend\n",
                                     "contrast"),
                   quiet);
