@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace bilayer
@@ -164,8 +165,9 @@ namespace bilayer
     };
     BlockVector<double> g, mask(lower), previous_mask(lower), older_mask(lower),
       r, delta, gradient, previous_gradient, previous_mu;
-    unsigned int inner_iterations = 0, n_cycling = 0;
-    bool         exact_steps = false;
+    unsigned int inner_iterations = 0, n_cycling = 0, n_stalled = 0;
+    bool         exact_steps  = false;
+    double       best_settled = std::numeric_limits<double>::infinity();
     interface.space().project(mu);
 
     for (unsigned int k = 0;; ++k)
@@ -266,6 +268,26 @@ namespace bilayer
                 << " conjugate-gradient iterations";
             return finish(msg.str());
           }
+        // Round-off floor: with the active set settled every step is solved
+        // exactly and should meet the tolerance. Five settled steps in a row
+        // that do not halve the smallest residual seen mean the tolerance lies
+        // below what the arithmetic resolves on this problem.
+        if (settled && kkt.value() < 0.5 * best_settled)
+          best_settled = kkt.value(), n_stalled = 0;
+        else if (settled && ++n_stalled >= 5)
+          {
+            std::ostringstream msg;
+            msg << "the KKT residual stagnates at " << std::setprecision(3)
+                << best_settled << " > Solver/Tolerance "
+                << parameters.tolerance << " with the active set settled (5 "
+                << "exact Newton steps did not halve it, " << k
+                << " steps in all): the tolerance is below the round-off "
+                   "of this ill-conditioned problem (material contrast, "
+                   "stretched cells); raise Solver/Tolerance";
+            return finish(msg.str());
+          }
+        else if (!settled)
+          best_settled = std::numeric_limits<double>::infinity(), n_stalled = 0;
         if (k >= parameters.max_newton_iterations)
           {
             std::ostringstream msg;

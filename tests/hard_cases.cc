@@ -14,6 +14,9 @@
 //  - a bound p below the contact pressure: the run is refused, with a note
 //    naming the parameter, and the constraint violation falls as p grows
 //    (estimate (12) of docs/problem.md).
+//  - a KKT tolerance of 1e-16, below the round-off of the relative residual
+//    (about the machine epsilon): the run is refused within 15 Newton steps
+//    (not at the 50-step limit), the message naming the stagnation;
 //  - Young's moduli 5e5 apart with the settings of
 //    parameter_files/template.prm (adaptive Q2, warm starts, inexact Newton
 //    steps): every cycle converges, to the energy that exact Newton steps
@@ -177,6 +180,19 @@ main()
             << ", violation falls as p grows: "
             << yes(violation[0] > violation[1] && violation[1] > violation[2])
             << std::endl;
+
+  {
+    const CycleRecord r =
+      run("subsection Solver\n set Tolerance = 1e-16\nend\n");
+    std::cout << "tolerance 1e-16 below round-off: refused: "
+              << yes(!r.accepted())
+              << ", within 15 Newton steps: " << yes(r.result.iterations <= 15)
+              << ", stagnation named: "
+              << yes(r.failure().find("stagnates") != std::string::npos &&
+                     r.failure().find("raise Solver/Tolerance") !=
+                       std::string::npos)
+              << std::endl;
+  }
 
   {
     std::ifstream     file(SOURCE_DIR "/../parameter_files/template.prm");
