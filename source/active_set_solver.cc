@@ -185,8 +185,8 @@ namespace bilayer
         result.stopping_value = kkt.value();
 
         // A Newton step must not decrease the dual function
-        // D(mu) = min_w L(w, mu), a concave quadratic with gradient D g:
-        // D(mu + s) - D(mu) = s . (D g(mu) + D g(mu + s)) / 2 exactly.
+        // Phi(mu) = min_w L(w, mu), a concave quadratic with gradient D g:
+        // Phi(mu + s) - Phi(mu) = s . (D g(mu) + D g(mu + s)) / 2 exactly.
         // Inexact steps (conjugate gradients to Inner tolerance) on an
         // ill-conditioned F_II can decrease it and then cycle through a
         // chain of active sets (seen with Young's moduli 5e5 apart): after
