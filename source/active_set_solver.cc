@@ -304,8 +304,7 @@ namespace bilayer
         // jump while the active set changes, else to the tolerance.
         if (k == 0 || n_changed > 0)
           preconditioner.reinit(mask);
-        r = g;
-        interface.space().scale_by_weights(r);
+        r = gradient;
         r.scale(mask);
         const double scale  = displacement_scale(interface, w);
         const double start  = largest_jump(interface, r);

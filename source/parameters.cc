@@ -1385,6 +1385,25 @@ namespace bilayer
 
 
     /**
+     * The text of @p message between the first @p before and the next
+     * @p after, "" where either is missing.
+     */
+    std::string
+    text_between(const std::string &message,
+                 const std::string &before,
+                 const std::string &after)
+    {
+      const auto a = message.find(before);
+      if (a == std::string::npos)
+        return "";
+      const auto b = message.find(after, a + before.size());
+      return b == std::string::npos ?
+               "" :
+               message.substr(a + before.size(), b - a - before.size());
+    }
+
+
+    /**
      * "; did you mean 'a', 'b' or 'c'?" for @p names, "" for none.
      */
     std::string
@@ -1446,13 +1465,8 @@ namespace bilayer
                    const std::string &before,
                    const std::string &after)
     {
-      const auto a = message.find(before);
-      const auto p = message.find("[Selection ");
-      if (a == std::string::npos || p == std::string::npos)
-        return "";
-      const auto b = message.find(after, a + before.size());
-      const auto q = message.find(']', p);
-      if (b == std::string::npos || q == std::string::npos || b > p)
+      const std::string choices = text_between(message, "[Selection ", "]");
+      if (choices.empty() || message.find(before) == std::string::npos)
         return "";
       const auto normal = [](const std::string &text) {
         std::string result;
@@ -1462,13 +1476,10 @@ namespace bilayer
               static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         return result;
       };
-      const std::string value =
-        normal(message.substr(a + before.size(), b - a - before.size()));
-      std::size_t best = std::max<std::size_t>(2, value.size() / 3) + 1;
+      const std::string value = normal(text_between(message, before, after));
+      std::size_t       best  = std::max<std::size_t>(2, value.size() / 3) + 1;
       std::vector<std::string> closest;
-      for (const auto &choice :
-           Utilities::split_string_list(message.substr(p + 11, q - p - 11),
-                                        '|'))
+      for (const auto &choice : Utilities::split_string_list(choices, '|'))
         {
           const std::size_t d = edit_distance(value, normal(choice));
           if (d < best)
@@ -1490,17 +1501,8 @@ namespace bilayer
       std::string message = one_line_message(e);
       if (!message.empty() && message.back() == '.')
         message.pop_back();
-      const auto between = [&](const std::string &before,
-                               const std::string &after) -> std::string {
-        const auto a = message.find(before);
-        if (a == std::string::npos)
-          return "";
-        const auto b = message.find(after, a + before.size());
-        return b == std::string::npos ?
-                 "" :
-                 message.substr(a + before.size(), b - a - before.size());
-      };
-      std::string entry = between("No entry with name <", ">");
+      const std::string entry =
+        text_between(message, "No entry with name <", ">");
       if (!entry.empty())
         return message + did_you_mean(prm, entry, false);
       const std::string marker = "no such subsection to be entered: ";
@@ -1508,7 +1510,7 @@ namespace bilayer
       if (at != std::string::npos)
         {
           // (deal.II's text of this error leaves the file name's '<' open.)
-          const std::string suggestion =
+          const std::string closest =
             did_you_mean(prm,
                          Utilities::trim(message.substr(at + marker.size())),
                          true);
@@ -1517,7 +1519,7 @@ namespace bilayer
           if (file != std::string::npos && end != std::string::npos &&
               message.find('>', file) > end)
             message.insert(end, ">");
-          return message + suggestion;
+          return message + closest;
         }
       return message +
              closest_choice(message, "The entry value ", " for the entry");

@@ -195,7 +195,8 @@ main()
   }
 
   {
-    std::ifstream     file(SOURCE_DIR "/../parameter_files/template.prm");
+    std::ifstream file(SOURCE_DIR "/../parameter_files/template.prm");
+    AssertThrow(file, ExcMessage("cannot read parameter_files/template.prm"));
     std::stringstream text;
     text << file.rdbuf();
     const std::string scene =
