@@ -618,9 +618,12 @@ namespace bilayer
   {
     const std::string file  = geometry.gmsh_file;
     const std::string where = "Geometry/Gmsh file '" + file + "'";
-    const auto        mesh_ptr =
-      std::make_shared<GmshMesh>(read_gmsh(file, this->mesh.gmsh_size_factor));
-    const GmshMesh &g = *mesh_ptr;
+    GmshOptions       options;
+    options.allow_commands = geometry.allow_gmsh_commands;
+    options.time_limit     = this->mesh.gmsh_time_limit;
+    options.size_factor    = this->mesh.gmsh_size_factor;
+    const auto mesh_ptr = std::make_shared<GmshMesh>(read_gmsh(file, options));
+    const GmshMesh &g   = *mesh_ptr;
 
     // The groups by name.
     std::array<int, 2> surface;
@@ -647,6 +650,70 @@ namespace bilayer
                   ExcMessage(where + ": the physical curve '" + name +
                              "' is not among the boundary parts read from "
                              "the file"));
+
+    // Every cell in exactly one of Omega- and Omega+, every line element
+    // of a physical curve in exactly one named group.
+    const auto mid_point = [&](const GmshMesh::Element &e) {
+      Point<2> centre;
+      for (const unsigned int n : e.nodes)
+        centre += g.nodes[n] / double(e.nodes.size());
+      return at(centre);
+    };
+    const auto group = [&](const GmshMesh::Element &e) {
+      const auto &names = e.type == 1 ? g.curve_names : g.surface_names;
+      return names.count(e.physical) > 0 ?
+               "'" + names.at(e.physical) + "'" :
+               "number " + std::to_string(e.physical) + " (without a name)";
+    };
+    std::map<std::vector<unsigned int>, const GmshMesh::Element *> seen;
+    for (const auto &e : g.elements)
+      {
+        const bool cell = e.type == 2 || e.type == 3;
+        if (!cell && e.physical == 0)
+          continue;
+        const std::string entity =
+          std::string(cell ? "Gmsh surface " : "Gmsh curve ") +
+          std::to_string(e.entity);
+        if (cell)
+          {
+            AssertThrow(
+              e.physical != 0,
+              ExcMessage(
+                where + ": the cells of " + entity + " (e.g. at " +
+                mid_point(e) +
+                ") are in no physical surface: add the surface to "
+                "Physical Surface(\"Omega-\") or (\"Omega+\"), or remove it"));
+            AssertThrow(e.physical == surface[0] || e.physical == surface[1],
+                        ExcMessage(where + ": the cells of " + entity +
+                                   " (e.g. at " + mid_point(e) +
+                                   ") are in the physical surface " + group(e) +
+                                   "; bilayer reads only 'Omega-' and "
+                                   "'Omega+': put the surface into one of "
+                                   "them"));
+          }
+        else
+          AssertThrow(g.curve_names.count(e.physical) > 0,
+                      ExcMessage(where + ": the line elements of " + entity +
+                                 " (e.g. at " + mid_point(e) +
+                                 ") are in the physical curve " + group(e) +
+                                 "; give the group a name (Physical "
+                                 "Curve(\"NAME\")) or remove it"));
+        std::vector<unsigned int> key = e.nodes;
+        std::sort(key.begin(), key.end());
+        key.push_back(cell ? 2 : 1);
+        const auto [it, added] = seen.emplace(key, &e);
+        AssertThrow(added,
+                    ExcMessage(
+                      where + ": the " + (cell ? "cell" : "edge") + " at " +
+                      mid_point(e) + " (" + entity + ") is in two physical " +
+                      (cell ? "surfaces" : "curves") + ", " +
+                      group(*it->second) + " and " + group(e) +
+                      (cell ? std::string() :
+                              std::string("; a curve must be in one of "
+                                          "'Sigma', 'crack' or one "
+                                          "boundary part")) +
+                      ": remove it from all but one"));
+      }
 
     // Sigma and the crack are the edges the two surfaces share, and
     // nothing else is shared; every other edge of a surface belongs to one
@@ -690,6 +757,27 @@ namespace bilayer
                   ExcMessage(where + ": Omega- and Omega+ share the edge at " +
                              at(0.5 * (g.nodes[e.first] + g.nodes[e.second])) +
                              ", which is in neither 'Sigma' nor 'crack'"));
+    // The named boundary parts lie on the outer boundary: each edge is an
+    // edge of one cell.
+    for (const auto &e : g.elements)
+      if (e.type == 1 && e.physical != sigma && e.physical != crack &&
+          g.curve_names.count(e.physical) > 0)
+        {
+          const Edge         k = edge(e.nodes[0], e.nodes[1]);
+          const auto         m = minus.find(k), p = plus.find(k);
+          const unsigned int cells = (m == minus.end() ? 0 : m->second) +
+                                     (p == plus.end() ? 0 : p->second);
+          AssertThrow(cells == 1,
+                      ExcMessage(
+                        where + ": the '" + g.curve_names.at(e.physical) +
+                        "' edge at " +
+                        at(0.5 * (g.nodes[k.first] + g.nodes[k.second])) +
+                        " (Gmsh curve " + std::to_string(e.entity) +
+                        ") is an edge of " + std::to_string(cells) +
+                        " cells, not of the outer boundary: a boundary "
+                        "part must lie on the boundary of Omega- or "
+                        "Omega+"));
+        }
     // Non-conforming meshes: a boundary edge along another boundary edge
     // (a hanging node, or cells that do not share their nodes).
     std::vector<Edge> boundary;
@@ -948,8 +1036,10 @@ namespace bilayer
                   ", but " + where + " has " +
                   (triangles ? "triangles" : "quadrilaterals")));
     // Degenerate cells are broken meshes; inverted ones are only
-    // oriented the other way.
-    for (const auto &cell : cells)
+    // oriented the other way: each is turned around on its own (vertices 1
+    // and 2 swapped: a triangle's order reversed, a quadrilateral's
+    // lexicographic order mirrored), so that all cells are positive.
+    for (auto &cell : cells)
       {
         const unsigned int              n = cell.vertices.size();
         const std::vector<unsigned int> around =
@@ -967,8 +1057,9 @@ namespace bilayer
                     ExcMessage(where + ": '" + name +
                                "' has a degenerate cell at " +
                                at(vertices[cell.vertices[0]])));
+        if (area < 0)
+          std::swap(cell.vertices[1], cell.vertices[2]);
       }
-    GridTools::invert_all_negative_measure_cells(vertices, cells);
     if (quads)
       GridTools::consistently_order_cells(cells);
     try

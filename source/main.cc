@@ -41,7 +41,13 @@ namespace
            "       bilayer --help               print this message\n\n"
            "--set overrides an entry of the file, e.g.\n"
            "  --set \"Solver/Uzawa step theta=70\" --set "
-           "\"Materials/Layer 1/Young's modulus=210\"\n\n"
+           "\"Materials/Layer 1/Young's modulus=210\"\n"
+           "--allow-gmsh-commands lets a Gmsh scene (Geometry/Gmsh file, "
+           ".geo) run programs\n"
+           "  and write files (SystemCall, Printf > file, Save, ...): only "
+           "for files you\n"
+           "  trust; without it such scenes are refused (docs/geometry.md)\n"
+           "\n"
            "Computes the equilibrium of a two-layer elastic structure with a "
            "through\ncrack whose faces must not penetrate each other "
            "(domain decomposition\nand Uzawa iteration). Results go to the "
@@ -60,6 +66,7 @@ namespace
     } action = Action::run;
     std::string              parameter_file;
     std::vector<std::string> overrides;
+    bool                     allow_gmsh_commands = false;
   };
 
   /// An environment variable of the MPI launcher as a number, or -1.
@@ -108,6 +115,8 @@ namespace
           }
         else if (arg.rfind("--set=", 0) == 0)
           command.overrides.emplace_back(arg.substr(6));
+        else if (arg == "--allow-gmsh-commands")
+          command.allow_gmsh_commands = true;
         else if (arg.size() > 1 && arg[0] == '-')
           {
             AssertThrow(false,
@@ -217,8 +226,10 @@ main(int argc, char **argv)
             prm.print_parameters(std::cout, ParameterHandler::PRM);
           return 0;
         }
-      scene =
-        bilayer::read_scene(prm, command.parameter_file, command.overrides);
+      scene = bilayer::read_scene(prm,
+                                  command.parameter_file,
+                                  command.overrides,
+                                  command.allow_gmsh_commands);
     }
   catch (const ExceptionBase &e)
     {

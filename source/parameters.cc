@@ -355,6 +355,13 @@ namespace bilayer
                       "-clscale [-], > 0: the coarsest mesh, which the cycles "
                       "refine (globally or adaptively) with deal.II, curved "
                       "boundaries and Sigma staying on their circles.");
+    prm.declare_entry("Gmsh time limit",
+                      "600",
+                      Patterns::Double(0),
+                      "Seconds gmsh may run on a Gmsh geometry (Geometry/"
+                      "Gmsh file, .geo) before bilayer stops it and refuses "
+                      "the scene [s], in [1, 1e6]: a scene that loops "
+                      "forever or a gmsh that hangs ends with a message.");
     prm.declare_entry("Number of cycles",
                       "1",
                       Patterns::Integer(1, 40),
@@ -432,6 +439,11 @@ namespace bilayer
                 ExcMessage("Mesh/Gmsh mesh size factor must lie in [1e-3, "
                            "1e3], got " +
                            prm.get("Gmsh mesh size factor")));
+    gmsh_time_limit = get_double(prm, "Mesh", "Gmsh time limit");
+    AssertThrow(gmsh_time_limit >= 1 && gmsh_time_limit <= 1e6,
+                ExcMessage("Mesh/Gmsh time limit must lie in [1, 1e6] "
+                           "seconds, got " +
+                           prm.get("Gmsh time limit")));
     if (!mesh_files.empty())
       shape = ElementShape::triangle;
     cells_along_sigma_plus =
@@ -1282,11 +1294,15 @@ namespace bilayer
     boundary_parts(const std::function<void(ParameterHandler &)> &parse,
                    const std::vector<std::string>                &overrides,
                    const std::filesystem::path                   &base,
-                   std::string                                   &gmsh_file)
+                   std::string                                   &gmsh_file,
+                   const bool allow_gmsh_commands)
     {
       ParameterHandler first;
       first.enter_subsection("Geometry");
       first.declare_entry("Gmsh file", "", Patterns::Anything());
+      first.leave_subsection();
+      first.enter_subsection("Mesh");
+      first.declare_entry("Gmsh time limit", "600", Patterns::Anything());
       first.leave_subsection();
       try
         {
@@ -1300,25 +1316,48 @@ namespace bilayer
       first.enter_subsection("Geometry");
       gmsh_file = Utilities::trim(first.get("Gmsh file"));
       first.leave_subsection();
+      first.enter_subsection("Mesh");
+      std::string time_limit = first.get("Gmsh time limit");
+      first.leave_subsection();
       for (const auto &assignment : overrides)
         {
           const auto equal = assignment.find('=');
-          if (equal != std::string::npos &&
-              Utilities::split_string_list(assignment.substr(0, equal), '/') ==
-                std::vector<std::string>{"Geometry", "Gmsh file"})
+          const auto path =
+            equal == std::string::npos ?
+              std::vector<std::string>() :
+              Utilities::split_string_list(assignment.substr(0, equal), '/');
+          if (path == std::vector<std::string>{"Geometry", "Gmsh file"})
             gmsh_file = Utilities::trim(assignment.substr(equal + 1));
+          if (path == std::vector<std::string>{"Mesh", "Gmsh time limit"})
+            time_limit = assignment.substr(equal + 1);
         }
       if (gmsh_file.empty())
         return BoundaryParts();
       if (std::filesystem::path(gmsh_file).is_relative())
         gmsh_file = (base / gmsh_file).string();
-      const auto names = gmsh_boundary_names(gmsh_file);
+      // The full parse checks the limit; gmsh runs within it already now.
+      GmshOptions options;
+      options.allow_commands = allow_gmsh_commands;
+      try
+        {
+          const double limit = std::stod(Utilities::trim(time_limit));
+          if (limit >= 1 && limit <= 1e6)
+            options.time_limit = limit;
+        }
+      catch (const std::exception &)
+        {}
+      const auto names = gmsh_boundary_names(gmsh_file, options);
+      // A name becomes the entry "Traction on NAME" and a member of the
+      // list Geometry/Clamped sides.
       for (const auto &name : names)
-        AssertThrow(!name.empty() &&
-                      name.find_first_of(",|") == std::string::npos,
+        AssertThrow(!name.empty() && name == Utilities::trim(name) &&
+                      name.find_first_of(",|=#\\") == std::string::npos,
                     ExcMessage("Geometry/Gmsh file '" + gmsh_file +
                                "': the physical curve name '" + name +
-                               "' must be non-empty and without ',' or '|'"));
+                               "' cannot name a boundary part (the entry "
+                               "'Traction on NAME'): rename it in the file "
+                               "without ',', '|', '=', '#', '\\' and outer "
+                               "blanks"));
       return BoundaryParts::of_gmsh(names);
     }
 
@@ -1530,7 +1569,8 @@ namespace bilayer
   Scene
   read_scene(ParameterHandler               &prm,
              const std::string              &filename,
-             const std::vector<std::string> &overrides)
+             const std::vector<std::string> &overrides,
+             const bool                      allow_gmsh_commands)
   {
     std::vector<std::string> chain, files;
     check_parameter_file(filename, chain, files);
@@ -1542,7 +1582,8 @@ namespace bilayer
       },
       overrides,
       base,
-      gmsh_file);
+      gmsh_file,
+      allow_gmsh_commands);
     Scene::declare_parameters(prm, parts);
     try
       {
@@ -1598,8 +1639,9 @@ namespace bilayer
     for (auto &file : scene.mesh.mesh_files)
       if (std::filesystem::path(file).is_relative())
         file = (base / file).string();
-    scene.geometry.gmsh_file = gmsh_file;
-    scene.input_files        = files;
+    scene.geometry.gmsh_file           = gmsh_file;
+    scene.geometry.allow_gmsh_commands = allow_gmsh_commands;
+    scene.input_files                  = files;
     return scene;
   }
 
@@ -1614,7 +1656,8 @@ namespace bilayer
       },
       {},
       "",
-      gmsh_file);
+      gmsh_file,
+      false);
     ParameterHandler prm;
     Scene::declare_parameters(prm, parts);
     prm.parse_input_from_string(text);

@@ -39,6 +39,8 @@ namespace bilayer
     std::vector<Element>          elements;
     /// Physical tag -> name, per dimension (1: curves, 2: surfaces).
     std::map<int, std::string> curve_names, surface_names;
+    /// Whether the file has a $PhysicalNames section.
+    bool has_physical_names = false;
 
     /// The physical tag of the curve or surface group @p name (dimension
     /// @p dim), or -1.
@@ -47,22 +49,53 @@ namespace bilayer
   };
 
   /**
-   * Read @p file: a .msh file (format 2 ASCII) directly, a .geo file by
-   * running `gmsh -2 -format msh2 -clscale size_factor` into a temporary
-   * directory that is removed afterwards. Errors name the file and the
-   * entry Geometry/Gmsh file.
+   * How a .geo scene is run through gmsh.
+   */
+  struct GmshOptions
+  {
+    /// Let the scene run programs and write files (the command-line flag
+    /// --allow-gmsh-commands); otherwise scan_geo() refuses such scenes.
+    bool allow_commands = false;
+    /// Seconds gmsh may run before it is stopped (Mesh/Gmsh time limit).
+    double time_limit = 600;
+    /// gmsh -clscale (Mesh/Gmsh mesh size factor).
+    double size_factor = 1;
+  };
+
+  /**
+   * Refuse a .geo scene that runs programs, writes, renames or deletes
+   * files, loads other files or sets options that do so (SystemCall,
+   * Printf(...) > "file", Save, Print, Plugin(...).Run, General.SaveOptions,
+   * Solver.*, Print.*, ...), and an Include or Merge whose path is computed:
+   * the file and every literal Include (and Merge of a .geo) it reaches, with
+   * comments and strings skipped. The message names file:line and the
+   * statement. With @p allow_commands only the files are checked for being
+   * readable.
+   */
+  void
+  scan_geo(const std::string &file, const bool allow_commands);
+
+  /**
+   * Read @p file: a .msh file (format 2 ASCII) directly, a .geo file after
+   * scan_geo() by running gmsh in a temporary directory of its own (its
+   * working directory and HOME, stdin /dev/null, removed afterwards) within
+   * the time limit. The scene is meshed twice into one run's files: the
+   * physical groups, and all cells (Mesh.SaveAll) so that cells in no group
+   * are seen; bilayer's own settings (msh 2.2 ASCII, first order) come after
+   * the scene's. Errors name the file and the entry Geometry/Gmsh file.
    */
   GmshMesh
-  read_gmsh(const std::string &file, const double size_factor);
+  read_gmsh(const std::string &file, const GmshOptions &options);
 
   /**
    * The names of the physical curves of @p file other than "Sigma" and
-   * "crack", in the order of their tags (read from the .msh file's
-   * $PhysicalNames or from the Physical Curve/Line statements of a .geo
-   * file, without meshing), for the entries of the Loads section.
+   * "crack", in the order of their tags, as Gmsh reports them: the .msh
+   * file's $PhysicalNames, or for a .geo file those of the model gmsh builds
+   * from it (after scan_geo(), without meshing), for the entries of the
+   * Loads section.
    */
   std::vector<std::string>
-  gmsh_boundary_names(const std::string &file);
+  gmsh_boundary_names(const std::string &file, const GmshOptions &options);
 } // namespace bilayer
 
 #endif

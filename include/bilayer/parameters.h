@@ -167,6 +167,9 @@ namespace bilayer
      */
     std::string   gmsh_file;
     BoundaryParts parts;
+    /// The scene file may run programs and write files (the command-line
+    /// flag --allow-gmsh-commands; not a parameter entry).
+    bool allow_gmsh_commands = false;
 
     double x_min        = -1.0;
     double x_max        = 1.0;
@@ -266,6 +269,8 @@ namespace bilayer
     std::vector<std::string> mesh_files;
     /// Mesh size factor of Gmsh scenes (gmsh -clscale).
     double gmsh_size_factor = 1;
+    /// Seconds gmsh may run on a .geo scene.
+    double gmsh_time_limit = 600;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -537,12 +542,15 @@ namespace bilayer
 
   /**
    * Declare, read a parameter file and parse it into a Scene. The Scene's
-   * name is the file name without directory and extension.
+   * name is the file name without directory and extension. With
+   * @p allow_gmsh_commands a .geo scene may run programs and write files
+   * (--allow-gmsh-commands; docs/geometry.md).
    */
   Scene
   read_scene(dealii::ParameterHandler       &prm,
              const std::string              &filename,
-             const std::vector<std::string> &overrides = {});
+             const std::vector<std::string> &overrides           = {},
+             const bool                      allow_gmsh_commands = false);
 
   /// Parse a Scene from parameter-file text (entries not given keep their
   /// defaults).
