@@ -388,9 +388,8 @@ namespace bilayer
         };
         for (std::size_t i = 0; i < t.size(); ++i)
           {
-            if (t[i].kind != Token::Kind::name || is(t, i - 1, ".") ||
-                (i > 0 && t[i - 1].kind == Token::Kind::name &&
-                 t[i - 1].text == "Plugin"))
+            // (A name after '.' is an option's or a plugin's.)
+            if (t[i].kind != Token::Kind::name || (i > 0 && is(t, i - 1, ".")))
               continue;
             const std::string                              &k = t[i].text;
             static const std::map<std::string, std::string> commands = {
