@@ -836,9 +836,11 @@ namespace bilayer
       }
     AssertThrow(!names.empty() || !surfaces.empty(),
                 ExcMessage(
-                  where(file) +
-                  ": no named physical groups (no $PhysicalNames "
-                  "section): bilayer reads the specimen's parts by "
+                  where(file) + ": no named physical groups" +
+                  (std::filesystem::path(file).extension() == ".msh" ?
+                     " (no $PhysicalNames section)" :
+                     "") +
+                  ": bilayer reads the specimen's parts by "
                   "name, Physical Surface(\"Omega-\"), (\"Omega+\"), "
                   "Physical Curve(\"Sigma\"), ... (docs/geometry.md)"));
     std::vector<std::string> result;

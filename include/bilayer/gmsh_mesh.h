@@ -79,7 +79,7 @@ namespace bilayer
    * Read @p file: a .msh file (format 2 ASCII) directly, a .geo file after
    * scan_geo() by running gmsh in a temporary directory of its own (its
    * working directory and HOME, stdin /dev/null, removed afterwards) within
-   * the time limit. The scene is meshed twice into one run's files: the
+   * the time limit. The mesh is saved twice by one gmsh run: the
    * physical groups, and all cells (Mesh.SaveAll) so that cells in no group
    * are seen; bilayer's own settings (msh 2.2 ASCII, first order) come after
    * the scene's. Errors name the file and the entry Geometry/Gmsh file.
