@@ -32,7 +32,8 @@ namespace
   void
   print_usage(std::ostream &out)
   {
-    out << "Usage: bilayer PARAMETER_FILE.prm [--set Section/Entry=value ...]\n"
+    out << "Usage: bilayer PARAMETER_FILE.prm [--set Section/Entry=value ...] "
+           "[--allow-gmsh-commands]\n"
            "       bilayer --print-parameters   print every entry with its "
            "default and documentation\n"
            "       bilayer --version            print the version, the git "
