@@ -407,6 +407,8 @@ namespace bilayer
               {"RenameFile", "renames a file"},
               {"ShapeFromFile", "loads a CAD file"},
               {"MergeWithBoundingBox", "loads another file"},
+              {"ExternalProcess",
+               "runs an external program (a mesh size field)"},
               {"Solver", "Solver options start external solver programs"}};
             const auto command = commands.find(k);
             if (command != commands.end())

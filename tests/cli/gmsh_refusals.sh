@@ -160,6 +160,8 @@ not_run "Save" "'Save \"$work/written\"' writes a file" "$work/written" \
   "\$a Mesh 2; Save \"$work/written\";"
 not_run "Print" "writes a picture file" "$work/written.png" \
   "\$a Print \"$work/written.png\";"
+not_run "ExternalProcess field" "runs an external program (a mesh size field)" \
+  "$work/ran" "\$a Field[1] = ExternalProcess; Field[1].CommandLine = \"touch $work/ran\"; Background Field = 1;"
 not_run "CreateDir" "creates a directory" "$work/made" "\$a CreateDir \"$work/made\";"
 not_run "Plugin Run" "runs a plugin" "$work/written" \
   "\$a Plugin(NewView).Run;"
