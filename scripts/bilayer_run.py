@@ -62,7 +62,7 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BILAYER = os.environ.get("BILAYER") or os.path.join(ROOT, "build", "bilayer")
+BILAYER = os.path.abspath(os.environ.get("BILAYER") or os.path.join(ROOT, "build", "bilayer"))
 MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
            "OMPI_MCA_rmaps_base_oversubscribe": "1"}
 

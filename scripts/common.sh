@@ -30,6 +30,7 @@
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bilayer=${BILAYER:-$root/build/bilayer}
+[[ $bilayer == /* ]] || bilayer=$PWD/$bilayer
 
 # The comment lines after the #! line, up to the first line that is not a
 # comment: the help of each script is its opening comment.

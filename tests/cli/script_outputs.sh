@@ -14,14 +14,14 @@
 #  - the scene as bilayer reads it: a crack set in an included .prm is the
 #    crack crack_growth sweeps, a Gmsh file set in an included .prm is
 #    refused (exit 2), and an --set that bilayer refuses is refused with
-#    bilayer's line;
+#    bilayer's line, before any folder is made;
 #  - odd names: a scene named '-scene.prm' in a folder with a space and a
 #    quote in its name runs; a .geo scene program (SystemCall, Printf >
 #    file, an Include of such a file) is refused by scripts/check_geo before
 #    gmsh runs, nothing executed.
 # Usage: script_outputs.sh BILAYER SOURCE_DIR   (exit 77: no gnuplot)
 set -u
-bilayer=$1 src=$2
+bilayer=$(cd "$(dirname "$1")" && pwd)/$(basename "$1") src=$(cd "$2" && pwd)
 command -v gnuplot > /dev/null || { echo "script_outputs: no gnuplot: skipped"; exit 77; }
 export BILAYER=$bilayer
 work=$(mktemp -d)
@@ -165,6 +165,13 @@ before=$(state "$work/res/mine")
 why=$(refused "$work/mine2.err" $?)
 [[ $(state "$work/res/mine") == "$before" ]] || why="$why; the folder changed"
 verdict "mesh_convergence: a folder of the user is refused, its files untouched" "$why"
+why=""
+(cd "$dir" && bash "$scripts/mesh_convergence" ...prm --output "$work/res/refused" \
+  --set "Mesh/Cells along Sigma=-4") > /dev/null 2> "$work/mc3.err"
+why=$(refused "$work/mc3.err" $?)
+[[ $(cat "$work/mc3.err") == "bilayer: error: "*"Cells along Sigma"* ]] || why="$why; not bilayer's line: $(cat "$work/mc3.err")"
+[[ ! -e $work/res/refused ]] || why="$why; the folder was made"
+verdict "mesh_convergence: a scene bilayer refuses ends with its line, no folder made" "$why"
 
 # 8. User-named files: compare_outputs --keep and random_scenes --csv
 # refuse what exists.
