@@ -309,6 +309,7 @@ class OutputFolder:
                           "folder: " + self.path] +
                          ["file: " + n for n in self.listed]) + "\n"
         fd, tmp = tempfile.mkstemp(dir=self.path, prefix=self.MARKER + ".")
+        os.fchmod(fd, 0o644)
         with os.fdopen(fd, "w") as f:
             f.write(text)
         os.replace(tmp, os.path.join(self.path, self.MARKER))
