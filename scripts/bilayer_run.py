@@ -20,6 +20,31 @@ The scripts import it from their own directory (`import bilayer_run`):
                            (default: a temporary directory, removed after the
                            run) and reads the run's summary.json
     read_summary(directory, returncode) -> (summary, where)
+    scene(prm, settings) -> {"Section/Entry": value}
+                           every entry of PRM as bilayer reads it (its
+                           includes, then SETTINGS), from bilayer PRM
+                           --print-parameters; exits 1 with bilayer's line
+                           when it refuses the file
+    OutputFolder(script, path, default)
+                           the folder a script writes its results into
+                           (see its docstring: never a folder the script
+                           did not make, never a file it did not write)
+    safe_name(prm)         the scene's name for a default folder: its stem,
+                           odd characters replaced ('..prm' is not '..')
+    gnuplot_string(text)   TEXT as a gnuplot string literal
+
+BILAYER is build/bilayer, or the program the environment variable BILAYER
+names (then scripts/setup is not run).
+
+Run as a program (for the bash scripts of scripts/):
+    python3 scripts/bilayer_run.py output SCRIPT DIR [NAME ...]
+        opens DIR as SCRIPT's output folder, claims the files NAME (a
+        trailing / for a folder) and prints DIR's absolute path; one line
+        on stderr and exit 1 when it may not
+    python3 scripts/bilayer_run.py entry PRM SECTION/ENTRY [--set S/E=v ...]
+        prints the value of one entry as bilayer reads PRM
+    python3 scripts/bilayer_run.py name PRM
+        prints safe_name(PRM)
 
 settings: a dict {"Section/Entry": value} or a list of "Section/Entry=value"
 strings. A run whose checks fail (exit 2) leaves its results in DIR.failed and
@@ -37,7 +62,7 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BILAYER = os.path.join(ROOT, "build", "bilayer")
+BILAYER = os.path.abspath(os.environ.get("BILAYER") or os.path.join(ROOT, "build", "bilayer"))
 MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
            "OMPI_MCA_rmaps_base_oversubscribe": "1"}
 
@@ -68,6 +93,8 @@ def setup():
     """scripts/setup --no-install with its output discarded: configures and
     builds if needed, never installs. If it fails (its one line on stderr
     names what is missing), exits with its status."""
+    if os.environ.get("BILAYER"):
+        return
     p = subprocess.run([os.path.join(ROOT, "scripts", "setup"), "--no-install"],
                        stdout=subprocess.DEVNULL)
     if p.returncode != 0:
@@ -94,7 +121,8 @@ def set_list(settings):
 def command(prm, settings=(), processes=None, binary=BILAYER, mpirun=("mpirun",)):
     """The command line running BINARY on PRM with one --set per setting;
     with processes, behind MPIRUN... -np PROCESSES."""
-    cmd = [binary, prm]
+    # A file whose name starts with '-' is not an option.
+    cmd = [binary, os.path.join(".", prm) if str(prm).startswith("-") else prm]
     for s in set_list(settings):
         cmd += ["--set", s]
     if processes is not None:
@@ -138,3 +166,203 @@ def run(prm, settings=(), directory=None, processes=None, binary=BILAYER,
                        text=True, check=check)
     summary, where = read_summary(directory, p.returncode)
     return Run(p.returncode, p.stdout, p.stderr, summary, where)
+
+
+def scene(prm, settings=(), binary=None):
+    """{"Section/Subsection/Entry": value} of every entry of PRM as bilayer
+    reads it: the file with its includes, then SETTINGS (a dict or a list
+    of "Section/Entry=value"), from `bilayer PRM --print-parameters`. Exits
+    1 with bilayer's one line where it refuses the file or a setting."""
+    p = subprocess.run(command(prm, settings, binary=binary or BILAYER) + ["--print-parameters"],
+                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if p.returncode != 0:
+        lines = p.stderr.strip().splitlines()
+        sys.exit(lines[-1] if lines else "%s: bilayer could not read %s (exit %d)" % (
+            os.path.basename(sys.argv[0]), prm, p.returncode))
+    entries, sections = {}, []
+    for line in p.stdout.splitlines():
+        line = line.strip()
+        if line.startswith("subsection "):
+            sections.append(line[len("subsection "):].strip())
+        elif line == "end" and sections:
+            sections.pop()
+        elif line.startswith("set ") and " = " in line:
+            key, value = line[4:].split(" = ", 1)
+            entries["/".join(sections + [key.strip()])] = value.strip()
+        elif line.startswith("set ") and line.endswith(" ="):
+            entries["/".join(sections + [line[4:-2].strip()])] = ""
+    return entries
+
+
+def safe_name(prm):
+    """The stem of PRM as a name for a folder: characters other than
+    letters, digits, '.', '_', '-' become '_', and a name that is empty,
+    starts with '.' or '-' gets 'scene' in front ('...prm' is 'scene..',
+    never '..')."""
+    stem = os.path.basename(str(prm))
+    if stem.endswith(".prm"):
+        stem = stem[:-4]
+    stem = "".join(c if c.isalnum() and c.isascii() or c in "._-" else "_" for c in stem)
+    if not stem or stem[0] in ".-":
+        stem = "scene" + stem
+    return stem
+
+
+def gnuplot_string(text):
+    """TEXT as a gnuplot single-quoted string ('' inside is one ')."""
+    return "'" + str(text).replace("'", "''").replace("\n", " ") + "'"
+
+
+class OutputFolder:
+    """The folder a script writes its results into.
+
+    OutputFolder(SCRIPT, PATH, DEFAULT) opens PATH (the user's --output;
+    DEFAULT, a path, when PATH is None or empty) for scripts/SCRIPT:
+      - a folder that does not exist is created (with its parents), and a
+        marker file .script-output in it records the script, the folder's
+        identity (device and inode: a copy, cp -r, has its own, so the copy
+        of an output folder is not the script's) and, one line each, the
+        files and folders the script writes there;
+      - an empty folder is taken (and marked);
+      - a folder whose marker is the same script's and names the folder
+        itself is taken again;
+      - anything else (a non-empty folder without such a marker, a file, a
+        folder under docs/) is refused: one line on stderr, exit 1.
+    claim(NAME) returns the path of NAME in the folder for the script to
+    write, refusing (exit 1) when NAME exists and the marker does not list
+    it (a file the user put there is never overwritten); claim(NAME,
+    folder=True) also creates it as a folder. Files of the user in the
+    folder stay; the script deletes nothing in it."""
+
+    MARKER = ".script-output"
+
+    def __init__(self, script, path=None, default=None):
+        self.script = script
+        given = path or default
+        if not given:
+            self.fail("no output folder given")
+        self.path = os.path.abspath(given)
+        docs = os.path.join(ROOT, "docs")
+        real = os.path.realpath(self.path)
+        if real == os.path.realpath(docs) or real.startswith(os.path.realpath(docs) + os.sep):
+            self.fail("the output folder %s is under docs/ (committed files): choose another "
+                      "--output" % self.path)
+        self.listed = []
+        if not os.path.lexists(self.path):
+            try:
+                os.makedirs(self.path)
+            except OSError as e:
+                self.fail("cannot create the output folder %s: %s" % (self.path, e.strerror))
+        elif os.path.islink(self.path) or not os.path.isdir(self.path):
+            self.fail("%s exists and is not a folder: choose another --output" % self.path)
+        else:
+            names = sorted(os.listdir(self.path))
+            listed = self.read_marker()
+            if listed is not None:
+                self.listed = listed
+            elif names:
+                why = ("its %s is another folder's (a copy) or another script's" % self.MARKER
+                       if self.MARKER in names else "and no %s of scripts/%s" % (
+                           self.MARKER, script))
+                shown = [n for n in names if n != self.MARKER] or names
+                self.fail("%s holds '%s', %s: it is not an output folder of scripts/%s; "
+                          "choose another --output (an empty or new folder)" % (
+                              self.path, shown[0], why, script))
+        self.write_marker()
+
+    def __fspath__(self):
+        return self.path
+
+    def __str__(self):
+        return self.path
+
+    def fail(self, message):
+        print("%s: %s" % (self.script, message), file=sys.stderr)
+        sys.exit(1)
+
+    def identity(self):
+        st = os.stat(self.path)
+        return "%d:%d" % (st.st_dev, st.st_ino)
+
+    def first_line(self):
+        return ("This folder was written by scripts/%s. A later run of scripts/%s into it "
+                "writes the files listed here and nothing else.") % (self.script, self.script)
+
+    def read_marker(self):
+        """The names the marker lists, or None where it is not this
+        script's marker of this folder."""
+        marker = os.path.join(self.path, self.MARKER)
+        if os.path.islink(marker) or not os.path.isfile(marker):
+            return None
+        try:
+            with open(marker) as f:
+                lines = f.read().splitlines()
+        except (OSError, UnicodeDecodeError):
+            return None
+        if not lines or lines[0] != self.first_line() or \
+                lines[1:2] != ["identity: " + self.identity()]:
+            return None
+        return [l[len("file: "):] for l in lines if l.startswith("file: ")]
+
+    def write_marker(self):
+        text = "\n".join([self.first_line(), "identity: " + self.identity(),
+                          "folder: " + self.path] +
+                         ["file: " + n for n in self.listed]) + "\n"
+        fd, tmp = tempfile.mkstemp(dir=self.path, prefix=self.MARKER + ".")
+        os.fchmod(fd, 0o644)
+        with os.fdopen(fd, "w") as f:
+            f.write(text)
+        os.replace(tmp, os.path.join(self.path, self.MARKER))
+
+    def claim(self, name, folder=False):
+        """The path of NAME (a plain name, no '/') in the folder, for the
+        script to write; exit 1 where NAME exists and is not the script's."""
+        if not name or "/" in name or name in (".", "..", self.MARKER):
+            self.fail("'%s' is not a name of a file in the output folder" % name)
+        path = os.path.join(self.path, name)
+        if os.path.lexists(path) and name not in self.listed:
+            self.fail("%s exists and scripts/%s did not write it: it is left as it is; move it "
+                      "or choose another --output" % (path, self.script))
+        if os.path.islink(path):
+            self.fail("%s is a symbolic link: it is left as it is; remove it or choose another "
+                      "--output" % path)
+        if name not in self.listed:
+            self.listed.append(name)
+            self.write_marker()
+        if folder and not os.path.isdir(path):
+            os.mkdir(path)
+        return path
+
+
+def main(argv):
+    """The command-line interface for the bash scripts (see the module's
+    docstring)."""
+    if len(argv) >= 3 and argv[0] == "output":
+        sys.argv[0] = argv[1]
+        folder = OutputFolder(argv[1], argv[2])
+        for name in argv[3:]:
+            folder.claim(name.rstrip("/"), folder=name.endswith("/"))
+        print(folder.path)
+        return 0
+    if len(argv) >= 3 and argv[0] == "entry":
+        settings, rest = [], argv[3:]
+        while rest:
+            if rest[0] != "--set" or len(rest) < 2:
+                sys.exit("bilayer_run.py entry: expected --set Section/Entry=value, got '%s'"
+                         % rest[0])
+            settings.append(rest[1])
+            rest = rest[2:]
+        entries = scene(argv[1], settings)
+        if argv[2] not in entries:
+            sys.exit("bilayer_run.py entry: no entry %s" % argv[2])
+        print(entries[argv[2]])
+        return 0
+    if len(argv) == 2 and argv[0] == "name":
+        print(safe_name(argv[1]))
+        return 0
+    sys.exit("usage: bilayer_run.py output SCRIPT DIR [NAME ...] | entry PRM SECTION/ENTRY "
+             "[--set S/E=v ...] | name PRM")
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -9,10 +9,28 @@
 #   have_apt                     whether this machine installs packages with
 #                                apt-get (Debian and derivatives)
 #   missing_commands COMMAND...  those of the commands not in PATH
+#   output_folder SCRIPT DIR NAME...
+#                                opens DIR as SCRIPT's output folder (created,
+#                                or empty, or marked by SCRIPT itself: never
+#                                a copy of one, never a folder of the user),
+#                                claims the NAMEs in it (a file of the user
+#                                of that name is refused) and prints DIR's
+#                                absolute path; exits 1 with one line when
+#                                it may not (scripts/bilayer_run.py output)
+#   scene_entry PRM SECTION/ENTRY [--set S/E=v ...]
+#                                the value of an entry as bilayer reads PRM
+#                                (includes and --set applied)
+#   safe_name PRM                the stem of PRM for a folder name, odd
+#                                characters replaced ('..prm' is not '..')
+#   build_bilayer                scripts/setup --no-install, quietly, unless
+#                                the environment names the program (BILAYER)
+# and bilayer, the program the scripts run: $BILAYER, else build/bilayer.
 # With --help or -h as the first argument, prints the help of the sourcing
 # script and exits 0.
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+bilayer=${BILAYER:-$root/build/bilayer}
+[[ $bilayer == /* ]] || bilayer=$PWD/$bilayer
 
 # The comment lines after the #! line, up to the first line that is not a
 # comment: the help of each script is its opening comment.
@@ -57,6 +75,22 @@ missing_commands() {
   for c in "$@"; do
     command -v "$c" > /dev/null || echo "$c"
   done
+}
+
+output_folder() {
+  python3 "$root/scripts/bilayer_run.py" output "$@"
+}
+
+scene_entry() {
+  python3 "$root/scripts/bilayer_run.py" entry "$@"
+}
+
+safe_name() {
+  python3 "$root/scripts/bilayer_run.py" name "$1"
+}
+
+build_bilayer() {
+  [[ -n ${BILAYER:-} ]] || "$root/scripts/setup" --no-install > /dev/null
 }
 
 if [[ "${1:-}" == --help || "${1:-}" == -h ]]; then

@@ -36,6 +36,11 @@ namespace
            "[--allow-gmsh-commands]\n"
            "       bilayer --print-parameters   print every entry with its "
            "default and documentation\n"
+           "       bilayer PARAMETER_FILE.prm --print-parameters [--set ...]\n"
+           "                                    print every entry as the run "
+           "would use it\n"
+           "                                    (includes and --set applied), "
+           "run nothing\n"
            "       bilayer --version            print the version, the git "
            "commit, deal.II's\n"
            "                                    version and the BLAS in use\n"
@@ -134,11 +139,14 @@ namespace
             command.parameter_file = arg;
           }
       }
-    AssertThrow((command.action != CommandLine::Action::print_parameters &&
-                 command.action != CommandLine::Action::version) ||
+    AssertThrow(command.action != CommandLine::Action::version ||
                   (command.parameter_file.empty() && command.overrides.empty()),
-                ExcMessage("--print-parameters and --version take no "
-                           "parameter file or --set"));
+                ExcMessage("--version takes no parameter file or --set"));
+    AssertThrow(command.action != CommandLine::Action::print_parameters ||
+                  !command.parameter_file.empty() || command.overrides.empty(),
+                ExcMessage("--print-parameters with --set needs the parameter "
+                           "file the settings apply to (" +
+                           std::string(usage_line) + ")"));
 
 
     AssertThrow(command.action != CommandLine::Action::run ||
@@ -220,7 +228,8 @@ main(int argc, char **argv)
                       << bilayer::blas_library() << std::endl;
           return 0;
         }
-      if (command.action == CommandLine::Action::print_parameters)
+      if (command.action == CommandLine::Action::print_parameters &&
+          command.parameter_file.empty())
         {
           bilayer::Scene::declare_parameters(prm);
           if (reporter)
@@ -231,6 +240,15 @@ main(int argc, char **argv)
                                   command.parameter_file,
                                   command.overrides,
                                   command.allow_gmsh_commands);
+      // Every entry as this run would use it (the file with its includes,
+      // then the --set), as used_parameters.prm records it; nothing is run
+      // or written.
+      if (command.action == CommandLine::Action::print_parameters)
+        {
+          if (reporter)
+            prm.print_parameters(std::cout, ParameterHandler::ShortPRM);
+          return 0;
+        }
     }
   catch (const ExceptionBase &e)
     {

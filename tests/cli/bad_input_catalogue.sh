@@ -100,8 +100,8 @@ check "no arguments" "no parameter file given"
 check "two parameter files" "more than one parameter file given" "$prm" "$prm"
 check "--set without a value" "--set needs a value" "$prm" --set
 check "unknown option" "unknown option '--frobnicate'" "$prm" --frobnicate
-check "--print-parameters with a file" "--print-parameters and --version take no parameter file" --print-parameters "$prm"
-check "--version with a file" "--print-parameters and --version take no parameter file" --version "$prm"
+check "--print-parameters --set without a file" "--print-parameters with --set needs the parameter file" --print-parameters --set "Mesh/Cells along Sigma=8"
+check "--version with a file" "--version takes no parameter file or --set" --version "$prm"
 check "--set without '='" "--set expects 'Section/Entry=value'" "$prm" --set "Mesh/Cells along Sigma"
 check "--set of an unknown entry" "--set Mesh/Cels along Sigma=8" "$prm" --set "Mesh/Cels along Sigma=8"
 
