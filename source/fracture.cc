@@ -478,6 +478,8 @@ namespace bilayer
              << "): energy release rate G = " << g.G
              << " [stress x length] (contact term " << g.contact
              << "), support radius " << g.tip.support_radius;
+        if (!g.unresolved.empty())
+          line << " (G not resolved: " << g.unresolved << ")";
         notes.push_back(line.str());
       }
     return notes;

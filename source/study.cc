@@ -300,9 +300,13 @@ namespace bilayer
         m << ": use ";
         for (unsigned int i = 0; i < remedies.size(); ++i)
           m << (i == 0 ? "" : ", or ") << remedies[i];
-        // Uniform refinement: the last cycle is known now; refuse the
-        // scene before anything is computed if it cannot hold the support.
-        AssertThrow(!(record.cycle == 0 && uniform && !last_resolved),
+        // A given radius under uniform refinement: the last cycle is known
+        // now; refuse the scene before anything is computed if it cannot
+        // hold the support. (The automatic radius: G is not reported at
+        // this tip on this cycle, the run goes on; G is a by-product of
+        // every scene with a crack, coarse meshes included.)
+        AssertThrow(!(scene.fracture.support_radius > 0 && record.cycle == 0 &&
+                      uniform && !last_resolved),
                     ExcMessage(m.str()));
         unresolved_tips[t] = m.str();
       }
@@ -604,9 +608,11 @@ namespace bilayer
       std::isfinite(r.complementarity) && std::isfinite(r.kkt.value()) &&
       std::isfinite(record.eta);
     record.checks.emplace_back("energy and residuals finite", finite);
-    // The last cycle must report G at every tip where it is defined (the
-    // check appears only where it fails: earlier cycles report NaN).
-    if (record.cycle + 1 >= scene.mesh.n_cycles)
+    // With a given support radius the last cycle must report G at every
+    // tip where it is defined (the check appears only where it fails:
+    // earlier cycles report NaN).
+    if (scene.fracture.support_radius > 0 &&
+        record.cycle + 1 >= scene.mesh.n_cycles)
       {
         std::string unresolved;
         for (const EnergyReleaseRate &g : record.release)

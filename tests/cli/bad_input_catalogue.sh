@@ -175,7 +175,6 @@ run "negative support radius" "Fracture/Support radius=-1" "Fracture/Support rad
 # entry, the cells it holds, the radii and numbers of cells that would do.
 run "support radius below the cell size" "Fracture/Support radius = 0.01 at the crack tip at x = -0.5 holds 0.08 cells of the mesh of Omega- along its radius (cells of size 0.125 at the tip on cycle 0): G needs at least 1 (R >= the cell size, else G tends to 0 with R): use Fracture/Support radius in [0.125, 0.5), or at least 200 Mesh/Cells along Sigma" "Fracture/Support radius=0.01"
 run "support radius below the last cycle's cells" "0.0625 on the last cycle" "Fracture/Support radius=0.05" --set "Mesh/Number of cycles=2"
-run "automatic support next to a clamped side" "the automatic support radius R = 0.0005 (Fracture/Support radius = 0: half the distance 0.001 to the nearest obstacle of theta) at the crack tip at x = -0.999 holds" "Geometry/Crack interval on Sigma=-0.999, 0.5" --set "Mesh/Fit crack tips=true"
 
 # Constants and expressions that clash with the parser's names or sizes.
 for name in x y t sin E1 mu2; do
@@ -194,7 +193,7 @@ run "denormal corner" "Geometry/Lower left corner: '-1e-315' is outside the rang
 run "huge corners" "Geometry: the corners and the height of Sigma must lie within +-1e100" "Geometry/Lower left corner=-1e300, -1e300" --set "Geometry/Upper right corner=1e300, 1e300"
 run "tiny Omega" "Geometry: Omega must be at least 1e-100 wide and high" "Geometry/Lower left corner=-1e-300, -1e-300" --set "Geometry/Upper right corner=1e-300, 1e-300" --set "Geometry/Crack interval on Sigma=-5e-301, 5e-301"
 run "modulus 1e308" "the stiffness matrix of subproblem u- has entries that are not finite: Materials/Layer 1/Young's modulus" "Materials/Layer 1/Young's modulus=1e308"
-run "100000 cells along Sigma" "cycle 0 would have 4e+10 cells" "Mesh/Cells along Sigma=100000"
+run "100000 cells along Sigma" "cycle 0 would have 1e+10 cells" "Mesh/Cells along Sigma=100000"
 run "the refusal names the entries and the override" "use fewer cells or cycles (Mesh/Cells along Sigma, Mesh/Cells across each subdomain, Mesh/Number of cycles) or adaptive refinement; Mesh/Refuse above available memory = false runs it anyway" "Mesh/Cells along Sigma=100000"
 # Loads whose energy (and the squares of the residuals) double precision
 # cannot represent: the entry, its largest value and the way out.
