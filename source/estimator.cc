@@ -8,20 +8,58 @@
 #include <bilayer/tasks.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace bilayer
 {
   using namespace dealii;
 
-  std::array<Vector<float>, Layout::n_subdomains>
+  double
+  normalisation_scale(
+    const PerSubproblem<const ElasticSubproblem *> &subproblems,
+    const Solutions                                &w)
+  {
+    double              largest   = 0;
+    const Distribution *processes = nullptr;
+    for (const unsigned int s : Layout::subproblems)
+      if (subproblems[s] != nullptr)
+        {
+          processes = &subproblems[s]->processes();
+          if (subproblems[s]->owned() && w[s].size() > 0)
+            largest = std::max(largest, w[s].linfty_norm());
+        }
+    if (processes != nullptr)
+      largest = processes->max(largest);
+    if (!(largest > 0) || !std::isfinite(largest))
+      return 1;
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    return std::ldexp(1., exponent);
+  }
+
+
+  std::array<Vector<double>, Layout::n_subdomains>
   estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Interface                                &interface,
-                 const Solutions                                &w,
-                 const BlockVector<double>                      &mu,
+                 const Solutions                                &w_in,
+                 const BlockVector<double>                      &mu_in,
                  const bool   interface_terms,
                  const double contact_weight,
                  double      *global_estimate)
   {
+    // The problem is linear in the loads (and the constraints positively
+    // homogeneous): the indicators of the solution scaled by a power of
+    // two S are computed from the solution divided by S, exactly (the
+    // division is exact), in the range where Kelly's single precision
+    // indicators and the squares below cannot overflow or underflow, and
+    // multiplied by S at the end.
+    const double S = normalisation_scale(subproblems, w_in);
+    Solutions    w = w_in;
+    for (auto &v : w)
+      v /= S;
+    BlockVector<double> mu = mu_in;
+    mu /= S;
+
     // The squared indicator of each subproblem, evaluated by its owner
     // (the whole solution is needed) and sent to all processes, then
     // summed per subdomain in the order of the subproblems.
@@ -119,8 +157,8 @@ namespace bilayer
         });
     tasks.join_all();
 
-    std::array<Vector<float>, Layout::n_subdomains> eta;
-    double                                          energy_estimate = 0;
+    std::array<Vector<double>, Layout::n_subdomains> eta;
+    double                                           energy_estimate = 0;
     for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
       {
         Vector<double> sum;
@@ -145,10 +183,10 @@ namespace bilayer
         auto &eta_sd = eta[static_cast<unsigned int>(sd)];
         eta_sd.reinit(sum.size());
         for (unsigned int i = 0; i < sum.size(); ++i)
-          eta_sd[i] = std::sqrt(sum[i]);
+          eta_sd[i] = std::sqrt(sum[i]) * S;
       }
     if (global_estimate != nullptr)
-      *global_estimate = std::sqrt(energy_estimate);
+      *global_estimate = std::sqrt(energy_estimate) * S;
     return eta;
   }
 } // namespace bilayer

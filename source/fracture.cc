@@ -169,6 +169,7 @@ namespace bilayer
         const double free_distance = d > tol ? d : 0.;
         if (free_distance == 0)
           continue;
+        tip.free_distance = free_distance;
         if (support_radius == 0)
           tip.support_radius = 0.5 * free_distance;
         else
@@ -187,6 +188,33 @@ namespace bilayer
           }
       }
     return tips;
+  }
+
+
+  TipCells
+  support_cells(const CrackTip                                &tip,
+                const std::array<const Triangulation<2> *, 2> &meshes)
+  {
+    TipCells cells;
+    for (unsigned int m = 0; m < 2; ++m)
+      if (meshes[m] != nullptr)
+        for (const auto &cell : meshes[m]->active_cell_iterators())
+          {
+            const double diameter = cell->diameter();
+            if ((cell->center() - tip.point).norm() > diameter)
+              continue;
+            bool at = false;
+            for (const unsigned int v : cell->vertex_indices())
+              at =
+                at || (cell->vertex(v) - tip.point).norm() <= 1e-8 * diameter;
+            if (!at)
+              continue;
+            const double size =
+              std::sqrt(cell->measure() * (cell->n_vertices() == 3 ? 2. : 1.));
+            if (size > cells.size)
+              cells.size = size, cells.mesh = m;
+          }
+    return cells;
   }
 
 
@@ -450,6 +478,8 @@ namespace bilayer
              << "): energy release rate G = " << g.G
              << " [stress x length] (contact term " << g.contact
              << "), support radius " << g.tip.support_radius;
+        if (!g.unresolved.empty())
+          line << " (G not resolved: " << g.unresolved << ")";
         notes.push_back(line.str());
       }
     return notes;

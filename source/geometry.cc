@@ -96,11 +96,31 @@ namespace bilayer
 
 
   void
-  Geometry::refine(const std::array<Vector<float>, 2> &indicators)
+  Geometry::refine(const std::array<Vector<double>, 2> &indicators)
   {
+    // The indicators divided by a power of two of the largest (exact), in
+    // single precision: in (0, 1], ties as among the float indicators.
+    double largest = 0;
+    for (const auto &v : indicators)
+      for (const double e : v)
+        AssertThrow(std::isfinite(e),
+                    ExcMessage("Mesh/Refinement = adaptive: an error "
+                               "indicator is not finite, so no cells can be "
+                               "marked"));
+    for (const auto &v : indicators)
+      if (v.size() > 0)
+        largest = std::max(largest, v.linfty_norm());
+    int exponent = 0;
+    if (largest > 0)
+      std::frexp(largest, &exponent);
+    std::array<std::vector<float>, 2> relative;
+    for (unsigned int k = 0; k < 2; ++k)
+      for (const double e : indicators[k])
+        relative[k].push_back(float(std::ldexp(e, -exponent)));
+
     // One threshold over the cells of both subdomains.
     std::vector<float> all;
-    for (const auto &v : indicators)
+    for (const auto &v : relative)
       all.insert(all.end(), v.begin(), v.end());
     std::sort(all.begin(), all.end(), std::greater<float>());
     float threshold = all.empty() ? 0.f : all.front();
@@ -126,7 +146,7 @@ namespace bilayer
     for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
       {
         auto        &tria = triangulations[static_cast<unsigned int>(s)];
-        const auto  &eta  = indicators[static_cast<unsigned int>(s)];
+        const auto  &eta  = relative[static_cast<unsigned int>(s)];
         unsigned int i    = 0;
         for (const auto &cell : tria.active_cell_iterators())
           if (eta[i++] >= threshold && threshold > 0)
@@ -391,23 +411,27 @@ namespace bilayer
       if (c > geometry.x_min + 1e-10 * width &&
           c < geometry.x_max - 1e-10 * width)
         tips.push_back(c);
+    // Columns 1 ... n_x - 1 lie inside Sigma (0 and n_x are its ends): a
+    // tip within half a cell of an end takes the column next to it, tips
+    // within half a cell of each other take neighbouring columns.
+    AssertThrow(n_x >= tips.size() + 1,
+                ExcMessage("Mesh/Fit crack tips: Mesh/Cells along Sigma = " +
+                           std::to_string(n_x) + " has " +
+                           std::to_string(n_x > 0 ? n_x - 1 : 0) +
+                           " vertices inside Sigma for " +
+                           std::to_string(tips.size()) +
+                           " crack end points; allowed: at least " +
+                           std::to_string(tips.size() + 1)));
     std::vector<long> column(tips.size());
     for (unsigned int i = 0; i < tips.size(); ++i)
-      {
-        column[i] = std::lround((tips[i] - geometry.x_min) / h);
-        if (i > 0)
-          column[i] = std::max(column[i], column[i - 1] + 1);
-      }
+      column[i] = std::max(std::lround((tips[i] - geometry.x_min) / h),
+                           i > 0 ? column[i - 1] + 1 : 1l);
     for (unsigned int i = tips.size(); i-- > 0;)
       column[i] =
         std::min(column[i],
                  i + 1 < tips.size() ? column[i + 1] - 1 : long(n_x) - 1);
-    AssertThrow(tips.empty() || column[0] >= 1,
-                ExcMessage("Mesh/Fit crack tips: Mesh/Cells along Sigma = " +
-                           std::to_string(n_x) +
-                           " has too few vertices inside Sigma for the crack "
-                           "end points; allowed: at least " +
-                           std::to_string(tips.size() + 1)));
+    Assert(tips.empty() || (column[0] >= 1 && column.back() < long(n_x)),
+           ExcInternalError());
     std::vector<double> from = {geometry.x_min}, to = {geometry.x_min};
     for (unsigned int i = 0; i < tips.size(); ++i)
       {

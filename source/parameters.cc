@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iomanip>
 #include <iostream>
 #include <numeric>
 #include <set>
@@ -25,6 +26,12 @@ namespace bilayer
 
   namespace
   {
+    /// The range of load energies (stress x area) the rectangle's loads
+    /// may reach, 10^-290 to 10^290: 1e18 inside the range of double
+    /// precision (1.8e308, 2.2e-308), room for sums of squares over many
+    /// unknowns.
+    constexpr int max_load_energy_log10 = 290;
+
     const PerSide<Side> all_sides = {
       {Side::left, Side::right, Side::bottom, Side::top}};
 
@@ -408,6 +415,17 @@ namespace bilayer
                       "multiplier load) and, on the crack, the "
                       "complementarity |int mu_c [u].nu| / (2 mu), which "
                       "mark the crack tips and the end of the contact zone.");
+    prm.declare_entry(
+      "Refuse above available memory",
+      "true",
+      Patterns::Bool(),
+      "true refuses a scene (before cycle 0) or stops a run (before a "
+      "cycle) whose estimated peak memory exceeds the memory available to "
+      "the process (MemAvailable, the address-space limit ulimit -v, a "
+      "cgroup's memory.max); false runs it anyway. The estimate lies within "
+      "25 % of the measured peak resident memory from 1e4 to 6.6e6 dofs "
+      "(docs/performance.md); a run beyond the memory is killed by the "
+      "system. Nothing runs where no memory at all is left.");
     prm.declare_entry("Weight of the contact term",
                       "1",
                       Patterns::Double(0),
@@ -457,8 +475,9 @@ namespace bilayer
     AssertThrow(refinement_fraction > 0 && refinement_fraction <= 1,
                 ExcMessage("Mesh/Refinement fraction must lie in (0, 1], got " +
                            prm.get("Refinement fraction")));
-    interface_terms = prm.get_bool("Interface terms in the estimator");
-    contact_weight  = get_double(prm, "Mesh", "Weight of the contact term");
+    interface_terms     = prm.get_bool("Interface terms in the estimator");
+    contact_weight      = get_double(prm, "Mesh", "Weight of the contact term");
+    refuse_above_memory = prm.get_bool("Refuse above available memory");
     AssertThrow(refinement == Refinement::global ||
                   shape == ElementShape::quadrilateral,
                 ExcMessage("Mesh/Refinement = adaptive needs Mesh/Element "
@@ -1178,9 +1197,11 @@ namespace bilayer
             "Loads/Layer " + std::to_string(static_cast<int>(layer) + 1) + "/" +
             (geometry.clamped[s] ? std::string("Prescribed displacement") :
                                    parts.traction_entry(s));
-          const auto f = geometry.clamped[s] ?
-                           loads.prescribed_function(layer) :
-                           loads.traction_function(layer, s);
+          const auto f       = geometry.clamped[s] ?
+                                 loads.prescribed_function(layer) :
+                                 loads.traction_function(layer, s);
+          double     largest = 0;
+          Point<2>   largest_at;
           for (unsigned int i = 0; i <= 1000; ++i)
             {
               // The point a fraction i/1000 along the side.
@@ -1207,8 +1228,48 @@ namespace bilayer
                                              std::to_string(value) + " at " +
                                              point.str()));
                     }
+                  if (std::abs(value) > largest)
+                    largest = std::abs(value), largest_at = Point<2>(x, y);
                 }
             }
+          if (!materials.has_layer(layer) || largest == 0)
+            continue;
+          // The energy of the loads (per unit thickness), to within factors
+          // of order one: a traction t on a body of size D and modulus E
+          // displaces by t D / E and stores t^2 D^2 / E; a prescribed
+          // displacement g stores E g^2. Its squares (energies, norms of the
+          // residuals, the error estimate) must be representable in double
+          // precision, with room for sums over millions of unknowns.
+          const double D = std::max(geometry.x_max - geometry.x_min,
+                                    geometry.y_max - geometry.y_min);
+          const double E =
+            materials.layer[static_cast<unsigned int>(layer)].youngs_modulus;
+          // (In logarithms: the energy itself may overflow.)
+          const double log_energy =
+            geometry.clamped[s] ?
+              std::log10(E) + 2 * std::log10(largest) :
+              2 * std::log10(largest) + 2 * std::log10(D) - std::log10(E);
+          // (Moduli beyond that range are refused where the stiffness is
+          // assembled, naming the modulus.)
+          if ((log_energy <= max_load_energy_log10 &&
+               log_energy >= -max_load_energy_log10) ||
+              std::abs(std::log10(E)) > max_load_energy_log10)
+            continue;
+          std::ostringstream message;
+          message << std::setprecision(3) << where << " reaches " << largest
+                  << " at (" << largest_at[0] << ", " << largest_at[1]
+                  << "): the energy of such a load, about "
+                  << (geometry.clamped[s] ? "E g^2" : "t^2 D^2 / E") << " = 10^"
+                  << std::lround(log_energy) << ", is "
+                  << (log_energy > 0 ? "above 10^" : "below 10^-")
+                  << max_load_energy_log10
+                  << ", beyond what double precision represents with its "
+                     "squares; the problem is linear in the loads: scale "
+                     "them (Loads/Constants or the expressions) by a power "
+                     "of ten into that range and scale the results back "
+                     "(displacements, stresses and multipliers with the "
+                     "loads, the energy and G with their square)";
+          AssertThrow(false, ExcMessage(message.str()));
         }
   }
 

@@ -7,8 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <limits>
 #include <sstream>
 #include <sys/resource.h>
@@ -39,13 +42,45 @@ namespace bilayer
       return 0;
     }
 
-    /// Bytes per degree of freedom of a subproblem with n dofs and
-    /// polynomial degree k: matrix, factor (fill ~ n log n), vectors.
+    /**
+     * Bytes per degree of freedom of a subproblem with n dofs and
+     * polynomial degree k: matrix, Cholesky factor (fill ~ n log n in two
+     * dimensions), vectors. Fitted to the peak resident memory of Example 1
+     * (scripts/memory_model, docs/performance.md) from 1e4 to 6.6e6 dofs
+     * of the four subproblems: 1800 to 2040 bytes per dof for Q1, 1.25
+     * times that per degree above 1.
+     */
     double
     bytes_per_dof(const double n, const unsigned int k)
     {
-      const double fill = std::log2(std::max(n, 1e3)) / std::log2(2.6e5);
-      return (600. + 2600. * fill) * (1. + 0.2 * (k - 1.));
+      return (1000. + 50. * std::log2(std::max(n, 1e3))) *
+             (1. + 0.25 * (k - 1.));
+    }
+
+    /// The work buffer OpenBLAS maps for each thread that calls it (its
+    /// BUFFER_SIZE, 32 << 22 bytes on x86-64).
+    constexpr double openblas_buffer = double(32ul << 22);
+
+    /// The value of the environment variable @p name, or "" if unset.
+    std::string
+    environment(const char *name)
+    {
+      const char *v = std::getenv(name);
+      return v == nullptr ? "" : v;
+    }
+
+    /// Set by glibc's on_exit: ends the process with its exit status
+    /// without the destructors of the shared libraries. Under an
+    /// address-space limit an OpenBLAS thread that could not map its work
+    /// buffer retries for ever, and OpenBLAS's destructor would wait for it
+    /// (the process would never end).
+    void
+    exit_without_blas_shutdown(const int status, void *)
+    {
+      std::cout.flush();
+      std::cerr.flush();
+      std::fflush(nullptr);
+      std::_Exit(status);
     }
 
     /// The number read from /proc/meminfo's line @p key [bytes].
@@ -141,29 +176,39 @@ namespace bilayer
   }
 
 
-  double
-  available_memory()
+  MemoryAvailability
+  memory_availability()
   {
-    double        available = meminfo("MemAvailable");
+    MemoryAvailability a;
+    a.bytes = a.machine = meminfo("MemAvailable");
     struct rlimit limit;
     if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
       {
         // A limit of the address space (ulimit -v): what is left of it,
         // the base the estimates count being mapped already, less the work
-        // buffers an OpenBLAS maps on its first call from each thread (its
-        // BUFFER_SIZE, 32 << 22 bytes on x86-64, per thread that calls it:
-        // at most one per subproblem task). OpenBLAS does not survive a
-        // failed allocation of these buffers (it retries or crashes), so
-        // the run must be refused before.
-        const bool   openblas = blas_library().rfind("OpenBLAS", 0) == 0;
-        const double buffers =
-          openblas ? std::min<double>(Layout::n_subproblems,
-                                      MultithreadInfo::n_threads()) *
-                       double(32ul << 22) :
-                     0.;
-        available = std::min(available,
-                             double(limit.rlim_cur) - self_status("VmSize") +
-                               base_memory - buffers);
+        // buffers an OpenBLAS maps on its first call from each thread (at
+        // most one per subproblem task). OpenBLAS does not survive a
+        // failed allocation of these buffers (its threads retry for ever),
+        // so the run must be refused before, and the process must end
+        // without waiting for such threads.
+        a.openblas = blas_library().rfind("OpenBLAS", 0) == 0;
+        if (a.openblas)
+          {
+            static const bool registered =
+              on_exit(exit_without_blas_shutdown, nullptr) == 0;
+            (void)registered;
+          }
+        a.address_space = double(limit.rlim_cur);
+        a.mapped        = self_status("VmSize");
+        a.blas_buffers  = a.openblas ?
+                            std::min<double>(Layout::n_subproblems,
+                                            MultithreadInfo::n_threads()) *
+                             openblas_buffer :
+                            0.;
+        const double left =
+          a.address_space - a.mapped + base_memory - a.blas_buffers;
+        if (left < a.bytes)
+          a.bytes = left, a.limit = MemoryAvailability::Limit::address_space;
       }
     std::ifstream cgroup("/sys/fs/cgroup/memory.max");
     std::string   text;
@@ -171,10 +216,59 @@ namespace bilayer
       {
         std::istringstream s(text);
         double             max;
-        if (s >> max)
-          available = std::min(available, max);
+        if (s >> max && max < a.bytes)
+          a.bytes = max, a.limit = MemoryAvailability::Limit::cgroup;
       }
-    return available;
+    return a;
+  }
+
+
+  double
+  available_memory()
+  {
+    return memory_availability().bytes;
+  }
+
+
+  std::string
+  MemoryAvailability::shortage(const std::string &entries) const
+  {
+    std::ostringstream m;
+    m << std::setprecision(3);
+    if (limit == Limit::address_space)
+      {
+        // Names the threads when they hold more than the limit leaves.
+        const std::string blas_env = environment("OPENBLAS_NUM_THREADS"),
+                          own_env  = environment("BILAYER_BLAS_THREADS");
+        m << format_bytes(bytes) << " are left of the address-space limit "
+          << "(ulimit -v) of " << format_bytes(address_space)
+          << ": the process has mapped " << format_bytes(mapped)
+          << " already (libraries and threads";
+        if (openblas)
+          m << "; each OpenBLAS thread maps a work buffer of "
+            << format_bytes(openblas_buffer) << ", and the subproblem tasks' "
+            << "calls need " << format_bytes(blas_buffers) << " more";
+        m << ")";
+        // One BLAS thread already: the libraries themselves fill the limit.
+        const bool one_thread =
+          blas_env == "1" && (own_env.empty() || own_env == "1");
+        if (openblas && !one_thread)
+          m << ": run with fewer BLAS threads (OPENBLAS_NUM_THREADS=1"
+            << (blas_env.empty() ? "" : " instead of " + blas_env)
+            << ", BILAYER_BLAS_THREADS=1"
+            << (own_env.empty() ? "" : " instead of " + own_env)
+            << ") or raise ulimit -v";
+        else
+          m << ": raise ulimit -v";
+      }
+    else if (limit == Limit::cgroup)
+      m << format_bytes(bytes) << " are available (the cgroup's memory.max)"
+        << ": " << entries << ", or a larger memory.max";
+    else
+      m << format_bytes(bytes) << " are available (MemAvailable): " << entries;
+    if (bytes > 0)
+      m << "; Mesh/Refuse above available memory = false runs it anyway";
+    return m.str();
   }
 
 
@@ -193,18 +287,20 @@ namespace bilayer
       estimate_resources(scene, cells[0], cells[1]);
     // Processes on one node share its memory: the subproblems need the
     // same in all, plus each process's libraries.
-    const double available = available_memory();
-    if (estimate.memory + (processes - 1) * base_memory <= available)
+    const MemoryAvailability available = memory_availability();
+    if (estimate.memory + (processes - 1) * base_memory <= available.bytes)
+      return;
+    if (!mesh.refuse_above_memory && available.bytes > 0)
       return;
     std::ostringstream message;
-    message << std::setprecision(3) << "Mesh/Cells along Sigma, Mesh/Cells "
-            << "across each subdomain, Mesh/Number of cycles: cycle " << last
-            << " would have " << cells[0] + cells[1] << " cells and about "
-            << estimate.dofs << " dofs, needing about "
-            << format_bytes(estimate.memory) << " of memory, but "
-            << format_bytes(available)
-            << " are available: use fewer cells or cycles (or adaptive "
-               "refinement)";
+    message << std::setprecision(3) << "cycle " << last << " would have "
+            << cells[0] + cells[1] << " cells and about " << estimate.dofs
+            << " dofs, needing about " << format_bytes(estimate.memory)
+            << " of memory, but "
+            << available.shortage(
+                 "use fewer cells or cycles (Mesh/Cells along Sigma, Mesh/"
+                 "Cells across each subdomain, Mesh/Number of cycles) or "
+                 "adaptive refinement");
     AssertThrow(false, dealii::ExcMessage(message.str()));
   }
 } // namespace bilayer

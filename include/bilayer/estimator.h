@@ -39,8 +39,19 @@ namespace bilayer
    * modulus: an energy (per unit thickness), to be compared with
    * a(e, e) = 2 (Pi_h - Pi) of the error e = u - u_h (the efficiency index
    * eta / (2 |Pi_h - Pi|)^1/2 of scripts/mesh_convergence).
+   *
+   * Scale invariance: the problem is linear in the loads (positively
+   * homogeneous with the contact constraints), so the indicators of the
+   * solution times c are c times those of the solution. They are computed
+   * from the solution and multipliers divided by the power of two S =
+   * normalisation_scale() (exactly: the division by a power of two rounds
+   * nothing), where Kelly's single precision indicators and the squares of
+   * the residuals can neither overflow nor underflow, and multiplied by S
+   * at the end in double precision: loads scaled by a power of two give
+   * indicators and eta scaled by exactly that power, whatever the loads'
+   * magnitude (within double precision).
    */
-  std::array<dealii::Vector<float>, Layout::n_subdomains>
+  std::array<dealii::Vector<double>, Layout::n_subdomains>
   estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Interface                                &interface,
                  const Solutions                                &solutions,
@@ -48,6 +59,16 @@ namespace bilayer
                  const bool   interface_terms,
                  const double contact_weight  = 1,
                  double      *global_estimate = nullptr);
+
+  /**
+   * The power of two 2^e with 2^(e-1) <= max |w| < 2^e over the solutions
+   * of all subproblems (over all processes: collective); 1 for a zero or
+   * non-finite solution.
+   */
+  double
+  normalisation_scale(
+    const PerSubproblem<const ElasticSubproblem *> &subproblems,
+    const Solutions                                &solutions);
 } // namespace bilayer
 
 #endif

@@ -56,6 +56,10 @@ namespace bilayer
      * Sigma).
      */
     double support_radius = 0;
+    /// The distance from the tip to the nearest obstacle of theta (another
+    /// tip, a corner or another piece of Sigma, the outer boundary): the
+    /// support radius must stay below it.
+    double free_distance = 0;
 
     bool
     defined() const
@@ -120,7 +124,34 @@ namespace bilayer
     double G = 0;
     /// The contact term on a curved crack (0 on a straight one).
     double contact = 0;
+    /// Why G is not reported at this tip on this mesh (then NaN): the
+    /// support of theta holds too few cells (support_cells()); empty if G
+    /// is valid.
+    std::string unresolved;
   };
+
+  /// The support radius of theta must be at least this many times the size
+  /// of the cells at the tip: theta falls from 1 to 0 on R/2 < r < R, and
+  /// a support inside the cells at the tip sees the discrete solution as
+  /// smooth there and releases nothing (G -> 0 as R -> 0 at a fixed mesh).
+  constexpr double min_cells_per_support_radius = 1;
+
+  /// The cells at a crack tip (support_cells()).
+  struct TipCells
+  {
+    /// The largest size of the active cells that have the tip as a vertex
+    /// (the tips are mesh vertices), over both meshes: sqrt(area) for
+    /// quadrilaterals, sqrt(2 area) for triangles (the side of the square of
+    /// two).
+    double size = 0;
+    /// The mesh (0: Omega-, 1: Omega+) of the largest of them.
+    unsigned int mesh = 0;
+  };
+
+  /// The cells at @p tip on @p meshes (null entries are skipped).
+  TipCells
+  support_cells(const CrackTip                                        &tip,
+                const std::array<const dealii::Triangulation<2> *, 2> &meshes);
 
   /**
    * G at every tip of @p tips for the solutions @p w and the multipliers

@@ -74,9 +74,15 @@ namespace bilayer
      * Mesh/Marking with one threshold over the cells of both subdomains.
      * Each subdomain keeps its own hanging nodes; the traces on Sigma stop
      * matching where only one side is refined.
+     *
+     * The marking depends only on the ratios of the indicators: they are
+     * divided by a power of two of their largest (exactly) and ranked in
+     * single precision, so that indicators equal up to round-off (cells of
+     * symmetric meshes) tie and refine together, and indicators scaled by a
+     * power of two mark exactly the same cells.
      */
     void
-    refine(const std::array<dealii::Vector<float>, 2> &indicators);
+    refine(const std::array<dealii::Vector<double>, 2> &indicators);
 
     const dealii::Triangulation<2> &
     triangulation(const Subdomain subdomain) const;

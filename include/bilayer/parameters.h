@@ -245,6 +245,9 @@ namespace bilayer
     bool interface_terms = true;
     /// Factor on the complementarity term of the estimator.
     double contact_weight = 1;
+    /// Refuse scenes and cycles whose estimated memory exceeds what is
+    /// available (false: run them anyway).
+    bool refuse_above_memory = true;
     /// Cells along Sigma of the Omega+ mesh; 0: as Omega-.
     unsigned int cells_along_sigma_plus = 0;
     ElementShape shape                  = ElementShape::quadrilateral;

@@ -51,6 +51,49 @@ namespace bilayer
   double
   available_memory();
 
+  /// What limits the memory of this process, for available_memory() and
+  /// the refusals.
+  struct MemoryAvailability
+  {
+    enum class Limit
+    {
+      /// MemAvailable of /proc/meminfo.
+      machine,
+      /// The address-space limit, RLIMIT_AS (ulimit -v).
+      address_space,
+      /// The cgroup's memory.max.
+      cgroup
+    };
+    /// What this process may still allocate [bytes] (the smallest limit).
+    double bytes = 0;
+    Limit  limit = Limit::machine;
+    /// MemAvailable [bytes].
+    double machine = 0;
+    /// With an address-space limit: the limit, the address space mapped
+    /// already, and the work buffers the BLAS will map [bytes].
+    double address_space = 0, mapped = 0, blas_buffers = 0;
+    /// The BLAS is OpenBLAS.
+    bool openblas = false;
+
+    /**
+     * The end of a refusal: what is available, what limits it and what to
+     * do (the memory each OpenBLAS thread maps and the variables to set,
+     * under an address-space limit; else @p entries), and the entry that
+     * overrides the refusal.
+     */
+    std::string
+    shortage(const std::string &entries) const;
+  };
+
+  /**
+   * The limits of available_memory() (collective: no; the same on every
+   * call). Under an address-space limit with OpenBLAS, also makes the
+   * process end without OpenBLAS's destructor (whose threads may wait for
+   * ever for work buffers the limit does not allow).
+   */
+  MemoryAvailability
+  memory_availability();
+
   /**
    * Refuse a scene whose largest cycle cannot fit (structured meshes with
    * global refinement, known before anything is built): a one-line message

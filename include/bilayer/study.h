@@ -85,8 +85,20 @@ namespace bilayer
      * driver can refine by a criterion of its own.
      */
     void
+    set_indicators(const std::array<dealii::Vector<double>,
+                                    Layout::n_subdomains> &new_indicators);
+
+    /// As above, from single precision indicators.
+    void
     set_indicators(const std::array<dealii::Vector<float>, Layout::n_subdomains>
                      &new_indicators);
+
+    /// The error indicators of the last cycle (estimate_error()).
+    const std::array<dealii::Vector<double>, Layout::n_subdomains> &
+    error_indicators() const
+    {
+      return indicators;
+    }
 
   private:
     // The steps of run_cycle(), in this order.
@@ -98,6 +110,13 @@ namespace bilayer
     /// goes into @p record).
     void
     check_memory(CycleRecord &record) const;
+
+    /// Whether the support of theta at each crack tip holds enough cells
+    /// of this cycle's meshes (min_cells_per_support_radius): refuses a
+    /// scene whose last cycle cannot (uniform refinement), else keeps in
+    /// unresolved_tips why G is not reported at a tip on this cycle.
+    void
+    check_supports(const CycleRecord &record);
     /// The subproblems of the present layers, assembled and factorised as
     /// parallel tasks.
     void
@@ -156,9 +175,12 @@ namespace bilayer
     /// meshes of cycle 0).
     std::vector<CrackTip> tips;
     bool                  tips_found = false;
+    /// Per tip: why its support holds too few cells of this cycle's meshes
+    /// (empty where it holds enough).
+    std::vector<std::string> unresolved_tips;
     /// Error indicators of the last cycle, per subdomain (adaptive
     /// refinement).
-    std::array<dealii::Vector<float>, Layout::n_subdomains> indicators;
+    std::array<dealii::Vector<double>, Layout::n_subdomains> indicators;
   };
 } // namespace bilayer
 

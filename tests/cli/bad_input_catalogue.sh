@@ -167,10 +167,14 @@ run "theta = 0" "Solver/Uzawa step theta must be > 0 or 'auto', got 0" "Solver/U
 run "bound p <= 0" "Contact/Multiplier bound p must be > 0, got 0" "Contact/Multiplier bound p=0"
 run "crack end not a vertex, plus side" "Mesh/Cells along Sigma on the plus side = 3 does not make the crack end point" "Mesh/Cells along Sigma on the plus side=3"
 run "crack end not a vertex, proposals" "numbers of cells that do: 4 8 12" "Mesh/Cells along Sigma=6"
-check "crack tips that cannot be fitted" "Mesh/Fit crack tips: Mesh/Cells along Sigma = 2 has too few vertices inside Sigma for the crack end points; allowed: at least 3" "$prm" --set "Output/Output directory=fresh/out" --set "Mesh/Fit crack tips=true" --set "Mesh/Cells along Sigma=2"
+check "crack tips that cannot be fitted" "Mesh/Fit crack tips: Mesh/Cells along Sigma = 2 has 1 vertices inside Sigma for 2 crack end points; allowed: at least 3" "$prm" --set "Output/Output directory=fresh/out" --set "Mesh/Fit crack tips=true" --set "Mesh/Cells along Sigma=2"
 [[ ! -e fresh ]] || fail "crack tips that cannot be fitted" "'fresh' left behind"
 run "support of theta beyond the outer boundary" "Fracture/Support radius = 5 reaches another tip, a corner of Sigma or the outer boundary from the crack tip at (x, y) = (-0.5, 0); allowed: (0, 0.5), or 0 (automatic)" "Fracture/Support radius=5"
 run "negative support radius" "Fracture/Support radius=-1" "Fracture/Support radius=-1"
+# A support of theta with too few cells (G would tend to 0 with R): the
+# entry, the cells it holds, the radii and numbers of cells that would do.
+run "support radius below the cell size" "Fracture/Support radius = 0.01 at the crack tip at x = -0.5 holds 0.08 cells of the mesh of Omega- along its radius (cells of size 0.125 at the tip on cycle 0): G needs at least 1 (R >= the cell size, else G tends to 0 with R): use Fracture/Support radius in [0.125, 0.5), or at least 200 Mesh/Cells along Sigma" "Fracture/Support radius=0.01"
+run "support radius below the last cycle's cells" "0.0625 on the last cycle" "Fracture/Support radius=0.05" --set "Mesh/Number of cycles=2"
 
 # Constants and expressions that clash with the parser's names or sizes.
 for name in x y t sin E1 mu2; do
@@ -189,7 +193,13 @@ run "denormal corner" "Geometry/Lower left corner: '-1e-315' is outside the rang
 run "huge corners" "Geometry: the corners and the height of Sigma must lie within +-1e100" "Geometry/Lower left corner=-1e300, -1e300" --set "Geometry/Upper right corner=1e300, 1e300"
 run "tiny Omega" "Geometry: Omega must be at least 1e-100 wide and high" "Geometry/Lower left corner=-1e-300, -1e-300" --set "Geometry/Upper right corner=1e-300, 1e-300" --set "Geometry/Crack interval on Sigma=-5e-301, 5e-301"
 run "modulus 1e308" "the stiffness matrix of subproblem u- has entries that are not finite: Materials/Layer 1/Young's modulus" "Materials/Layer 1/Young's modulus=1e308"
-run "100000 cells along Sigma" "Mesh/Cells along Sigma, Mesh/Cells across each subdomain, Mesh/Number of cycles: cycle 0 would have" "Mesh/Cells along Sigma=100000"
+run "100000 cells along Sigma" "cycle 0 would have 1e+10 cells" "Mesh/Cells along Sigma=100000"
+run "the refusal names the entries and the override" "use fewer cells or cycles (Mesh/Cells along Sigma, Mesh/Cells across each subdomain, Mesh/Number of cycles) or adaptive refinement; Mesh/Refuse above available memory = false runs it anyway" "Mesh/Cells along Sigma=100000"
+# Loads whose energy (and the squares of the residuals) double precision
+# cannot represent: the entry, its largest value and the way out.
+run "loads of 1e160" "Loads/Layer 1/Traction on bottom side reaches 1e+160 at (-1, -1): the energy of such a load, about t^2 D^2 / E = 10^318, is above 10^290" "Loads/Constants=c = 1e160"
+run "loads of 1e-160" "Loads/Layer 1/Traction on bottom side reaches 1e-160 at (-1, -1): the energy of such a load, about t^2 D^2 / E = 10^-322, is below 10^-290" "Loads/Constants=c = 1e-160"
+run "prescribed displacement of 1e150" "Loads/Layer 1/Prescribed displacement reaches 1e+150" "Loads/Layer 1/Prescribed displacement=1e150; 0"
 run "40 cycles of global refinement" "cycle 39 would have" "Mesh/Number of cycles=40"
 run "many cells across" "GiB of memory, but" "Mesh/Cells across each subdomain=100000" --set "Mesh/Cells along Sigma=4096"
 
@@ -335,6 +345,28 @@ else
 fi
 fi
 rm -rf out.failed
+
+# Many BLAS threads under an address-space limit: the refusal names the
+# memory the OpenBLAS threads map and the variables to set, and the process
+# ends (its threads cannot map their work buffers and would retry for ever).
+if [[ -n "${ASAN_OPTIONS:-}" ]]; then
+  echo "BLAS threads under ulimit -v: skipped under AddressSanitizer"
+elif ! "$bilayer" --version 2>/dev/null | grep -q OpenBLAS; then
+  echo "BLAS threads under ulimit -v: skipped (the BLAS is not OpenBLAS)"
+else
+  for threads in "OPENBLAS_NUM_THREADS=40" "BILAYER_BLAS_THREADS=40"; do
+    (ulimit -v 600000; exec env "$threads" timeout 60 "$bilayer" "$prm" \
+      --set "Output/Output directory=fresh/out" > stdout 2> stderr)
+    rc=$?
+    if [[ $rc -eq 1 && $(wc -l < stderr) -eq 1 ]] && grep -qF "address-space limit (ulimit -v)" stderr \
+      && grep -qF "each OpenBLAS thread maps a work buffer of 128 MiB" stderr \
+      && grep -qF "OPENBLAS_NUM_THREADS=1" stderr && [[ ! -e fresh && "$(snapshot)" == "$before" ]]; then
+      echo "BLAS threads under ulimit -v ($threads): yes"
+    else
+      fail "BLAS threads under ulimit -v ($threads)" "exit status $rc"
+    fi
+  done
+fi
 
 # A run that passes replaces bilayer's directory whole (the user's note is
 # gone now), and removes an earlier failed run's results; blanks around --set
