@@ -390,9 +390,15 @@ namespace bilayer
   {
     const std::string &dir = scene.output.directory;
     FirstFailure       writing;
-    // (Each cycle: drivers may call run_cycle() without run().)
+    // The directory the run made (a run of the program), or created if
+    // missing (drivers may call run_cycle() without run()).
     if (distribution.is_root())
-      writing([&]() { std::filesystem::create_directories(dir); });
+      writing([&]() {
+        if (directory_check)
+          directory_check();
+        else
+          std::filesystem::create_directories(dir);
+      });
     distribution.barrier();
     const bool fields = scene.output.writes_fields(record.cycle,
                                                    scene.mesh.n_cycles,

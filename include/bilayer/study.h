@@ -18,8 +18,10 @@
 #include <bilayer/subproblem.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <ostream>
+#include <utility>
 #include <vector>
 
 namespace bilayer
@@ -88,7 +90,20 @@ namespace bilayer
     set_indicators(const std::array<dealii::Vector<float>, Layout::n_subdomains>
                      &new_indicators);
 
+    /**
+     * Called on the first process before each cycle's files are written
+     * (StagedDirectory::verify(): the output directory is still the one
+     * the run made). Without it, the output directory is created if
+     * missing.
+     */
+    void
+    set_directory_check(std::function<void()> check)
+    {
+      directory_check = std::move(check);
+    }
+
   private:
+    std::function<void()> directory_check;
     // The steps of run_cycle(), in this order.
 
     /// The meshes of the cycle (created or refined) and their sizes.
