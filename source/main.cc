@@ -636,8 +636,11 @@ main(int argc, char **argv)
                     << "; BLAS " << bilayer::blas_library() << std::endl;
         }
       bilayer::Study study(scene, std::cout, processes);
-      if (processes.is_root())
-        study.set_directory_check([&output]() { output->verify(); });
+      // (On every process: the check is collective; the first verifies.)
+      study.set_directory_check([&output]() {
+        if (output)
+          output->verify();
+      });
       bool         passed = false;
       std::string  failure;
       unsigned int failed_cycle = 0;

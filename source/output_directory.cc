@@ -580,10 +580,14 @@ namespace bilayer
       return;
     const std::string staged = staging_path;
     staging_path.clear();
-    // Only the directory this run made, and only its own files in it.
+    // Only the directory this run made (its marker or, if the marker was
+    // removed, its extended attribute holds the token), and only its own
+    // files in it.
     struct stat own;
     if (::lstat(staged.c_str(), &own) != 0 || own.st_dev != device ||
-        own.st_ino != inode || read_marker(staged).token != token)
+        own.st_ino != inode ||
+        (read_marker(staged).token != token &&
+         attribute_token(staged) != token))
       return;
     std::string path = staged;
     // (Writes still under way then fail instead of adding files.)

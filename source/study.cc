@@ -417,7 +417,16 @@ namespace bilayer
     add_to_table(table, record);
     if (distribution.is_root())
       writing([&]() { write_records(record.cycle, fields); });
-    const std::string error = distribution.first_error(writing.message);
+    std::string error = distribution.first_error(writing.message);
+    // The files just written are there (checked again at the next cycle
+    // and before the results are published).
+    if (error.empty() && directory_check)
+      {
+        FirstFailure written;
+        if (distribution.is_root())
+          written(directory_check);
+        error = distribution.first_error(written.message);
+      }
     if (!error.empty())
       throw CollectiveError("writing the results of cycle " +
                             std::to_string(record.cycle) + " failed: " + error);

@@ -91,9 +91,10 @@ namespace bilayer
                      &new_indicators);
 
     /**
-     * Called on the first process before each cycle's files are written
-     * (StagedDirectory::verify(): the output directory is still the one
-     * the run made). Without it, the output directory is created if
+     * Called on the first process before and after each cycle's files are
+     * written (StagedDirectory::verify(): the output directory is still
+     * the one the run made, with the files written so far); set on every
+     * process or on none. Without it, the output directory is created if
      * missing.
      */
     void

@@ -133,19 +133,23 @@ for suffix in failed partial; do
 done
 
 # ---- 2. The staging directory changed during the run (5 cycles; the
-# watcher acts once cycle 1's files are staged, cycles 3 and 4 take seconds).
+# watcher acts once the records of cycles 0-2 are staged: table.csv, the
+# last file of a cycle, has 4 lines; cycles 3 and 4 take seconds).
 long=(--set "Mesh/Number of cycles=5")
-staged() { # DIR.partial FILE: wait until FILE is staged
-  for _ in $(seq 400); do [[ -e $1/$2 ]] && return 0; sleep 0.02; done
+staged() { # DIR.partial: wait until cycle 2's records are staged
+  for _ in $(seq 500); do
+    [[ $(wc -l < "$1/table.csv" 2> /dev/null) -ge 4 ]] && return 0
+    sleep 0.02
+  done
   return 1
 }
-midrun() { # NAME ACTION FRAGMENT: a run into out; ACTION (shell code) once cycle 1 is staged
+midrun() { # NAME ACTION FRAGMENT: a run into out; ACTION (shell code) once cycle 2 is staged
   local name=$1 action=$2 fragment=$3
   local before
   before=$(digest out)
   "$bilayer" "$prm" "${fast[@]}" "${long[@]}" --set "Output/Output directory=out" > mid.out 2> mid.err &
   local pid=$!
-  staged out.partial interface-01.csv && eval "$action"
+  staged out.partial && eval "$action"
   wait $pid 2> /dev/null
   rc=$?
   local why=""
@@ -171,7 +175,7 @@ midrun "an early cycle's file removed from the staging mid-run" "rm -f out.parti
 mkdir -p cwd && cp "$prm" cwd/scene.prm
 (cd cwd && exec "$bilayer" scene.prm "${fast[@]}" "${long[@]}" --set "Output/Output directory=res" > ../cwd.out 2> ../cwd.err) &
 pid=$!
-staged cwd/res.partial interface-01.csv && rm -rf cwd
+staged cwd/res.partial && rm -rf cwd
 wait $pid
 rc=$?
 why=""
@@ -203,13 +207,13 @@ rc=$?
 [[ $rc -eq 1 && ! -e q && ! -s p.out ]] && verdict "stderr and stdin closed, bad input: exit 1, nothing written" "" ||
   verdict "stderr and stdin closed, bad input: exit 1, nothing written" "exit status $rc"
 
-# Signals once cycle 1 is staged: one line, 128 + signal, nothing left.
+# Signals once cycle 2 is staged: one line, 128 + signal, nothing left.
 set -m # (background jobs of their own, which do not ignore SIGINT)
 for signal in INT TERM HUP; do
   before=$(digest out)
   "$bilayer" "$prm" "${fast[@]}" "${long[@]}" --set "Output/Output directory=out" > sig.out 2> sig.err &
   pid=$!
-  staged out.partial interface-01.csv && kill -s $signal $pid
+  staged out.partial && kill -s $signal $pid
   wait $pid 2> /dev/null
   rc=$?
   why=""
@@ -226,7 +230,7 @@ set +m
 rm -rf h h.*
 (trap '' HUP; exec "$bilayer" "$prm" "${fast[@]}" --set "Mesh/Number of cycles=4" --set "Output/Output directory=h" > h.out 2> h.err) &
 pid=$!
-staged h.partial interface-01.csv && kill -s HUP $pid
+staged h.partial && kill -s HUP $pid
 wait $pid
 rc=$?
 [[ $rc -eq 0 && -s h/interface-03.csv && ! -e h.partial ]] && verdict "SIGHUP ignored as by nohup: the run completes" "" ||
