@@ -23,7 +23,7 @@ prm=$(realpath "$2")
 source "$(dirname "${BASH_SOURCE[0]}")/verdict.sh"
 work=$(mktemp -d)
 trap 'chmod -R u+w "$work" 2> /dev/null; rm -rf "$work"' EXIT
-cd "$work"
+cd "$work" || exit 1
 fast=(--set "Output/Progress interval=0" --set "Solver/Method=active set")
 run() { # DIRECTORY [ARGS...]: a one-cycle run, stdout/stderr in DIRECTORY.out/.err
   local dir=$1
@@ -273,13 +273,13 @@ rc=$?
   verdict "valid thread counts and TMPDIR accepted" "exit status $rc; $(cat e.err)"
 # A working directory longer than PATH_MAX (4096).
 deep=$work/deep
-mkdir -p "$deep" && cd "$deep"
+mkdir -p "$deep" && cd "$deep" || exit 1
 name=$(printf 'd%.0s' $(seq 200))
-for _ in $(seq 22); do mkdir "$name" && cd "$name"; done
+for _ in $(seq 22); do mkdir "$name" && cd "$name" || exit 1; done
 rm -rf "$work/e" "$work"/e.*
 "$bilayer" "$prm" --set "Output/Output directory=$work/e" > "$work/e.out" 2> "$work/e.err"
 rc=$?
-cd "$work"
+cd "$work" || exit 1
 verdict "working directory longer than PATH_MAX refused" \
   "$(refused "long" e "the working directory is longer than PATH_MAX = 4096 characters")"
 rm -rf "$deep"
