@@ -33,7 +33,8 @@ namespace bilayer
    * holds stays. DIR, DIR.partial, DIR.failed and DIR.lock are the only
    * names beside DIR a run uses; DIR is moved aside under a name that
    * cannot exist yet (DIR.replaced-TOKEN, renamed without replacing) while
-   * it is replaced.
+   * it is replaced, and a stopped run's staging directory to
+   * DIR.partial.stopped-TOKEN while it is emptied.
    *
    * The constructor refuses, with a one-line message naming Output/Output
    * directory, before anything is computed:
