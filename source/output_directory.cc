@@ -105,6 +105,20 @@ namespace bilayer
       return n > 0 ? std::string(value, n) : std::string();
     }
 
+    /// Whether @p path is a staging directory DIR.partial whose marker
+    /// names DIR or DIR.failed (a run stopped while committing).
+    bool
+    committing(const fs::path &path, const std::string &named)
+    {
+      const std::string p      = path.string();
+      const std::string suffix = ".partial";
+      if (p.size() <= suffix.size() ||
+          p.compare(p.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return false;
+      const std::string final = p.substr(0, p.size() - suffix.size());
+      return named == final || named == final + ".failed";
+    }
+
     /**
      * Whether @p path is a directory that bilayer made for @p path itself:
      * its marker's identity (device, inode, token in the extended attribute
@@ -127,7 +141,7 @@ namespace bilayer
                (m.in_attribute && attribute_token(path) != m.token))
         why = "is a copy of a bilayer output directory, not the directory "
               "bilayer made (its marker belongs to another directory)";
-      else if (m.directory != path.string())
+      else if (m.directory != path.string() && !committing(path, m.directory))
         why = "was moved or renamed (bilayer made it as '" + m.directory + "')";
       return why.empty();
     }
@@ -251,13 +265,22 @@ namespace bilayer
     bool
     rename_new(const std::string &from, const std::string &to)
     {
-      return ::renameat2(AT_FDCWD,
-                         from.c_str(),
-                         AT_FDCWD,
-                         to.c_str(),
-                         RENAME_NOREPLACE) == 0;
+      if (::renameat2(
+            AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) ==
+          0)
+        return true;
+      if (errno != EINVAL && errno != ENOSYS)
+        return false;
+      // A file system without RENAME_NOREPLACE (NFS): checked, then
+      // renamed (rename() would also replace an empty directory).
+      struct stat existing;
+      if (::lstat(to.c_str(), &existing) == 0)
+        {
+          errno = EEXIST;
+          return false;
+        }
+      return std::rename(from.c_str(), to.c_str()) == 0;
     }
-
     /// Whether @p ancestor is @p path or one of its parent directories
     /// (both canonical).
     bool
@@ -679,6 +702,26 @@ namespace bilayer
       if ((success || required != "summary.json") && seen.count(required) == 0)
         refuse("'" + staging_path + "' lacks " + required +
                ": the results are incomplete and nothing is published");
+    std::error_code error;
+    // Checked again (it may have changed since the run began), before the
+    // marker names it.
+    const bool replacing = fs::exists(fs::symlink_status(target, error));
+    if (replacing)
+      {
+        std::string why;
+        if (!fs::is_directory(fs::symlink_status(target, error)) ||
+            !removable(target, false, why))
+          {
+            // The results stay where they are (a later run removes them).
+            const std::string staged = staging_path;
+            staging_path.clear();
+            refuse("'" + target + "' " +
+                   (why.empty() ? std::string("is no directory") : why) +
+                   " (it changed during the run and is left as it is); the "
+                   "results are in '" +
+                   staged + "'");
+          }
+      }
     // The marker lists bilayer's files of the run and names the directory
     // they go to: a later run replaces it only while it is this directory
     // and holds nothing else (a file the user put into DIR.partial goes
@@ -693,20 +736,10 @@ namespace bilayer
         refuse("cannot write '" + staging_path + "/" + marker_name() +
                "': " + std::strerror(errno));
     }
-    std::error_code   error;
     const std::string aside       = target + ".replaced-" + token;
     bool              moved_aside = false;
-    if (fs::exists(fs::symlink_status(target, error)))
+    if (replacing)
       {
-        // Checked again: it may have changed since the run began.
-        std::string why;
-        if (!fs::is_directory(fs::symlink_status(target, error)) ||
-            !removable(target, false, why))
-          refuse("'" + target + "' " +
-                 (why.empty() ? std::string("is no directory") : why) +
-                 " (it changed during the run and is left as it is); the "
-                 "results are in '" +
-                 staging_path + "'");
         if (!rename_new(target, aside))
           refuse("cannot move the previous '" + target + "' aside to '" +
                  aside + "': " + std::strerror(errno) + " (it is unchanged)");

@@ -171,6 +171,22 @@ midrun "used_parameters.prm removed from the staging mid-run" "rm -f out.partial
   "'used_parameters.prm' was removed from"
 midrun "an early cycle's file removed from the staging mid-run" "rm -f out.partial/interface-00.csv" \
   "'interface-00.csv' was removed from"
+# A file added to out during the run: out is no longer what bilayer may
+# replace; the commit refuses, the results stay in out.partial.
+"$bilayer" "$prm" "${fast[@]}" "${long[@]}" --set "Output/Output directory=out" > mid.out 2> mid.err &
+pid=$!
+staged out.partial && echo mine > out/added.txt
+wait $pid
+rc=$?
+why=""
+[[ $rc -eq 1 && $(wc -l < mid.err) -eq 1 ]] || why="exit status $rc; $(cat mid.err)"
+grep -qF "holds files that bilayer did not write ('added.txt')" mid.err || why="$why; $(cat mid.err)"
+[[ $(cat out/added.txt) == mine && -s out.partial/interface-04.csv && ! -e out.lock ]] || why="$why; files"
+verdict "a file added to out during the run: the commit refuses, results kept in out.partial" "$why"
+rm -f out/added.txt
+run out || verdict "the next run removes the kept out.partial" "exit status $?"
+[[ ! -e out.partial ]] || verdict "the next run removes the kept out.partial" "still there"
+
 # The working directory (holding the staging directory) removed.
 mkdir -p cwd && cp "$prm" cwd/scene.prm
 (cd cwd && exec "$bilayer" scene.prm "${fast[@]}" "${long[@]}" --set "Output/Output directory=res" > ../cwd.out 2> ../cwd.err) &
