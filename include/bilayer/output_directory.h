@@ -100,6 +100,8 @@ namespace bilayer
 
     /// Whether @p name is the name of a file a run writes into its output
     /// directory (with @p temporary, also the name of a file being written).
+    /// A new kind of output file needs its name here: the marker lists only
+    /// these, and a later run refuses a directory holding anything else.
     static bool
     is_output_name(const std::string &name, const bool temporary);
 
