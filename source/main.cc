@@ -13,14 +13,19 @@
 #include <bilayer/study.h>
 
 #include <algorithm>
-#include <csignal>
+#include <cerrno>
+#include <climits>
 #include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <new>
 #include <sstream>
 #include <string>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <vector>
 
 namespace
@@ -94,6 +99,257 @@ namespace
                                      "PMIX_RANK",
                                      "PMI_RANK",
                                      "MV2_COMM_WORLD_RANK"}));
+  }
+
+  /**
+   * A standard stream the program was started without (`>&-`, `2>&-`) is
+   * opened on /dev/null: the descriptor would otherwise go to the first
+   * file the program opens (a mesh, the lock file), and progress lines into
+   * it. The run then goes on without that output.
+   */
+  void
+  open_closed_standard_streams()
+  {
+    for (int fd = 0; fd <= 2; ++fd)
+      if (::fcntl(fd, F_GETFD) < 0 && errno == EBADF)
+        {
+          const int opened = ::open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY);
+          if (opened >= 0 && opened != fd)
+            {
+              ::dup2(opened, fd);
+              ::close(opened);
+            }
+        }
+  }
+
+  /**
+   * The standard output of a run: written to descriptor 1 as std::cout
+   * would, but a write that fails (a closed pipe, `| head -1`; a full disk)
+   * ends the output instead of setting the stream's error state, which
+   * deal.II's writers (the tables) turn into an exception. The run goes on
+   * and commits; its exit status says how it ended.
+   */
+  class TolerantOutput : public std::streambuf
+  {
+  public:
+    TolerantOutput()
+      : original(std::cout.rdbuf())
+    {
+      setp(buffer, buffer + sizeof(buffer));
+      std::cout.rdbuf(this);
+    }
+    ~TolerantOutput() override
+    {
+      sync();
+      std::cout.rdbuf(original);
+    }
+
+  protected:
+    // Line-buffered, as the standard output on a terminal.
+    int_type
+    overflow(const int_type c) override
+    {
+      write_out();
+      if (!traits_type::eq_int_type(c, traits_type::eof()))
+        {
+          *pptr() = traits_type::to_char_type(c);
+          pbump(1);
+          if (traits_type::to_char_type(c) == '\n')
+            write_out();
+        }
+      return traits_type::not_eof(c);
+    }
+    std::streamsize
+    xsputn(const char *text, const std::streamsize n) override
+    {
+      for (std::streamsize i = 0; i < n; ++i)
+        {
+          if (pptr() == epptr())
+            write_out();
+          *pptr() = text[i];
+          pbump(1);
+          if (text[i] == '\n')
+            write_out();
+        }
+      return n;
+    }
+    int
+    sync() override
+    {
+      write_out();
+      return 0;
+    }
+
+  private:
+    void
+    write_out()
+    {
+      const char *from = pbase();
+      std::size_t left = pptr() - pbase();
+      while (left > 0 && !broken)
+        {
+          const ssize_t n = ::write(1, from, left);
+          if (n < 0 && errno == EINTR)
+            continue;
+          if (n <= 0)
+            broken = true; // (the rest is dropped)
+          else
+            from += n, left -= n;
+        }
+      setp(buffer, buffer + sizeof(buffer));
+    }
+
+    std::streambuf *original;
+    char            buffer[4096];
+    bool            broken = false;
+  };
+
+  /**
+   * The thread counts of the environment that bilayer's libraries read
+   * while the program is loaded, before main(): deal.II's
+   * DEAL_II_NUM_THREADS (garbage or 0 end in std::terminate there, a
+   * negative count is taken modulo 2^32), OMP_NUM_THREADS (libgomp warns
+   * and falls back), the BLAS's own (ignored when garbage). Each must be a
+   * whole number from 1 to 1024 (OMP_NUM_THREADS: a comma-separated list
+   * of them; empty counts as unset except for deal.II).
+   */
+  const char *const      thread_variables[] = {"DEAL_II_NUM_THREADS",
+                                               "OMP_NUM_THREADS",
+                                               "OPENBLAS_NUM_THREADS",
+                                               "GOTO_NUM_THREADS",
+                                               "MKL_NUM_THREADS"};
+  constexpr unsigned int n_thread_variables = 5;
+  /// Per thread variable: its value if it was invalid (and hidden).
+  const char *invalid_thread_count[n_thread_variables] = {};
+
+  /// Whether the text from @p begin to @p end is a whole number from 1 to
+  /// 1024 (plain C: called before the libraries are initialised).
+  bool
+  is_thread_count(const char *begin, const char *end)
+  {
+    if (end - begin < 1 || end - begin > 4)
+      return false;
+    int n = 0;
+    for (const char *c = begin; c != end; ++c)
+      if (*c < '0' || *c > '9')
+        return false;
+      else
+        n = 10 * n + (*c - '0');
+    return n >= 1 && n <= 1024;
+  }
+
+  bool
+  is_valid_thread_variable(const unsigned int variable, const char *value)
+  {
+    if (*value == 0)
+      return variable != 0; // (empty: unset, except for deal.II)
+    for (const char *from = value;;)
+      {
+        const char *end = from;
+        while (*end != 0 && !(variable == 1 && *end == ','))
+          ++end;
+        if (!is_thread_count(from, end))
+          return false;
+        if (*end == 0)
+          return true;
+        from = end + 1; // OpenMP: one count per nesting level, "4,2"
+      }
+  }
+
+  /**
+   * Runs before every shared library's initialisation (the executable's
+   * preinit array): an invalid thread count is remembered and hidden from
+   * the libraries (the first letter of its name replaced by '_'), so that
+   * main() refuses it with one line instead of deal.II's std::terminate or
+   * libgomp's warning.
+   */
+  void
+  hide_invalid_thread_counts(int, char **, char **environment)
+  {
+    for (char **e = environment; e != nullptr && *e != nullptr; ++e)
+      for (unsigned int v = 0; v < n_thread_variables; ++v)
+        {
+          const char *name = thread_variables[v];
+          char       *c    = *e;
+          while (*name != 0 && *c == *name)
+            ++c, ++name;
+          if (*name == 0 && *c == '=' && !is_valid_thread_variable(v, c + 1))
+            {
+              invalid_thread_count[v] = c + 1;
+              (*e)[0]                 = '_';
+            }
+        }
+  }
+
+  __attribute__((section(".preinit_array"), used)) void (
+      *const hide_invalid_thread_counts_early)(int, char **, char **) =
+    &hide_invalid_thread_counts;
+
+  /**
+   * The environment that bilayer and its libraries read, checked before
+   * MPI_Init (where Open MPI ends a bad TMPDIR or working directory with a
+   * page of text); mistakes throw a one-line message.
+   */
+  void
+  check_environment()
+  {
+    using dealii::ExcMessage;
+    {
+      std::vector<char> cwd(PATH_MAX + 1);
+      if (::getcwd(cwd.data(), cwd.size()) == nullptr)
+        {
+          const int why = errno;
+          AssertThrow(why != ENAMETOOLONG && why != ERANGE,
+                      ExcMessage("the working directory is longer than "
+                                 "PATH_MAX = " +
+                                 std::to_string(PATH_MAX) +
+                                 " characters, where MPI cannot start: run "
+                                 "bilayer from a shorter path"));
+          AssertThrow(why != ENOENT,
+                      ExcMessage("the working directory has been removed: "
+                                 "run bilayer from an existing directory"));
+          AssertThrow(false,
+                      ExcMessage(std::string("cannot read the working "
+                                             "directory: ") +
+                                 std::strerror(why)));
+        }
+    }
+    // (BILAYER_BLAS_THREADS is checked where it is used.)
+    for (unsigned int v = 0; v < n_thread_variables; ++v)
+      {
+        const char *value = invalid_thread_count[v];
+        if (value == nullptr)
+          {
+            // (Set after loading, e.g. by a debugger: checked here.)
+            value = std::getenv(thread_variables[v]);
+            if (value == nullptr || is_valid_thread_variable(v, value))
+              continue;
+          }
+        AssertThrow(false,
+                    ExcMessage(
+                      std::string(thread_variables[v]) +
+                      " must be a whole number from 1 to 1024" +
+                      (v == 1 ? " (or a comma-separated list of them)" : "") +
+                      ", got '" + value + "'; set it so or unset it"));
+      }
+    // Open MPI keeps its session files under TMPDIR (and creates a missing
+    // one, outside what the run was asked to write).
+    for (const char *name : {"TMPDIR"})
+      if (const char *set = std::getenv(name); set != nullptr && *set != 0)
+        {
+          struct stat status;
+          const int   missing      = ::stat(set, &status) == 0 ? 0 : errno;
+          const bool  is_directory = missing == 0 && S_ISDIR(status.st_mode);
+          AssertThrow(
+            is_directory && ::access(set, W_OK | X_OK) == 0,
+            ExcMessage(std::string(name) + " = '" + set + "' " +
+                       (is_directory ? "is a directory this user cannot write" :
+                        missing == ENOENT ? "does not exist" :
+                                            "is not a directory") +
+                       " (MPI keeps its session files there): set " + name +
+                       " to an existing, writable directory or "
+                       "unset it"));
+        }
   }
 
   /// Read the command line; mistakes throw a one-line message.
@@ -196,6 +452,9 @@ int
 main(int argc, char **argv)
 {
   using namespace dealii;
+  open_closed_standard_streams();
+  TolerantOutput standard_output;
+  bilayer::prepare_stop_signals();
   dealii::deal_II_exceptions::disable_abort_on_exception();
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
   // The input is read and checked before MPI_Init, which costs about a
@@ -236,6 +495,7 @@ main(int argc, char **argv)
             prm.print_parameters(std::cout, ParameterHandler::PRM);
           return 0;
         }
+      check_environment();
       scene = bilayer::read_scene(prm,
                                   command.parameter_file,
                                   command.overrides,
@@ -273,10 +533,9 @@ main(int argc, char **argv)
   start_mpi_alone_quickly();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   // PETSc, initialised with MPI, turns SIGHUP, SIGINT and SIGTERM into an
-  // error report and MPI_Abort: a stopped run ends by its signal instead, as
-  // any program does (the next run removes what it staged).
-  for (const int stop : {SIGHUP, SIGINT, SIGTERM})
-    std::signal(stop, SIG_DFL);
+  // error report and MPI_Abort: a stopped run removes what it staged and
+  // its lock, says so in one line and ends by its signal instead.
+  bilayer::watch_stop_signals(reporter);
   const bilayer::Distribution &processes = bilayer::Distribution::world();
   // The four subproblems are factorised and solved as parallel tasks, each
   // calling the BLAS: a threaded BLAS gets this process's threads divided
@@ -407,9 +666,14 @@ main(int argc, char **argv)
                     << "; BLAS " << bilayer::blas_library() << std::endl;
         }
       bilayer::Study study(scene, std::cout, processes);
-      bool           passed = false;
-      std::string    failure;
-      unsigned int   failed_cycle = 0;
+      // (On every process: the check is collective; the first verifies.)
+      study.set_directory_check([&output]() {
+        if (output)
+          output->verify();
+      });
+      bool         passed = false;
+      std::string  failure;
+      unsigned int failed_cycle = 0;
       try
         {
           passed = study.run();

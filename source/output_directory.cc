@@ -3,14 +3,24 @@
 #include <bilayer/output_directory.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <mutex>
+#include <random>
+#include <regex>
 #include <set>
+#include <sstream>
+#include <stdio.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/xattr.h>
+#include <thread>
 #include <unistd.h>
 
 namespace bilayer
@@ -29,61 +39,248 @@ namespace bilayer
       throw dealii::ExcMessage(entry + ": " + message);
     }
 
-    const std::string manifest_prefix = "file: ";
+    const std::string manifest_prefix  = "file: ";
+    const std::string identity_prefix  = "identity: ";
+    const std::string directory_prefix = "directory: ";
+    const std::string marker_title = "This directory was written by bilayer";
     const std::string marker_text =
-      "This directory was written by bilayer. A later run into it replaces "
-      "it whole as long as it holds only the files listed here.\n";
+      marker_title +
+      ". A later run into it replaces it as long as it is this very "
+      "directory (identity: device, inode, token; directory: where it was "
+      "made) and holds only the files listed here.\n";
+    const char *attribute = "user.bilayer-output";
+    /// The marker while it is rewritten (committing).
+    const std::string marker_temporary = std::string(".bilayer-output.part");
+
+    /// The run whose staging directory a signal removes; guarded.
+    std::mutex       guard;
+    StagedDirectory *live = nullptr;
+
+    /// What a marker file says.
+    struct Marker
+    {
+      bool                     present  = false; // a marker file of bilayer
+      bool                     identity = false; // with an identity line
+      std::uintmax_t           device = 0, inode = 0;
+      std::string              token;
+      bool                     in_attribute = false;
+      std::string              directory;
+      std::vector<std::string> files;
+    };
+
+    Marker
+    read_marker(const fs::path &path)
+    {
+      Marker          m;
+      std::error_code error;
+      const fs::path  file = path / StagedDirectory::marker_name();
+      if (!fs::is_regular_file(fs::symlink_status(file, error)))
+        return m;
+      std::ifstream in(file);
+      std::string   line;
+      m.present = std::getline(in, line) && line.rfind(marker_title, 0) == 0;
+      while (m.present && std::getline(in, line))
+        if (line.rfind(manifest_prefix, 0) == 0)
+          m.files.push_back(line.substr(manifest_prefix.size()));
+        else if (line.rfind(directory_prefix, 0) == 0)
+          m.directory = line.substr(directory_prefix.size());
+        else if (line.rfind(identity_prefix, 0) == 0)
+          {
+            std::istringstream words(line.substr(identity_prefix.size()));
+            std::string        where;
+            m.identity = static_cast<bool>(words >> m.device >> m.inode >>
+                                           m.token >> where) &&
+                         m.token.size() == 32;
+            m.in_attribute = where == "attribute";
+          }
+      return m;
+    }
+
+    /// The token in the directory's extended attribute, or "".
+    std::string
+    attribute_token(const std::string &path)
+    {
+      char          value[64] = {};
+      const ssize_t n         = ::lgetxattr(path.c_str(), attribute, value, 63);
+      return n > 0 ? std::string(value, n) : std::string();
+    }
+
+    /// Whether @p path is a staging directory DIR.partial whose marker
+    /// names DIR or DIR.failed (a run stopped while committing).
+    bool
+    committing(const fs::path &path, const std::string &named)
+    {
+      const std::string p      = path.string();
+      const std::string suffix = ".partial";
+      if (p.size() <= suffix.size() ||
+          p.compare(p.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return false;
+      const std::string final = p.substr(0, p.size() - suffix.size());
+      return named == final || named == final + ".failed";
+    }
 
     /**
-     * Whether bilayer may delete the directory @p path: it is empty, or its
-     * marker lists every file in it (the marker of a committed directory
-     * lists the files the run wrote; a staging directory's marker lists
-     * none, which is enough for @p staging directories). Otherwise
-     * @p foreign names one entry that bilayer did not write.
+     * Whether @p path is a directory that bilayer made for @p path itself:
+     * its marker's identity (device, inode, token in the extended attribute
+     * where it was stored) and directory are those of @p path. Otherwise
+     * @p why says what it is.
      */
     bool
-    written_by_bilayer(const fs::path &path,
-                       const bool      staging,
-                       std::string    &foreign)
+    made_here(const fs::path &path, const Marker &m, std::string &why)
+    {
+      struct stat own;
+      if (!m.identity)
+        why = "was written by an earlier version of bilayer or by hand (its "
+              "marker " +
+              std::string(StagedDirectory::marker_name()) +
+              " has no identity), and bilayer removes only directories it "
+              "can tell are its own";
+      else if (::lstat(path.c_str(), &own) != 0 ||
+               static_cast<std::uintmax_t>(own.st_dev) != m.device ||
+               static_cast<std::uintmax_t>(own.st_ino) != m.inode ||
+               (m.in_attribute && attribute_token(path) != m.token))
+        why = "is a copy of a bilayer output directory, not the directory "
+              "bilayer made (its marker belongs to another directory)";
+      else if (m.directory != path.string() && !committing(path, m.directory))
+        why = "was moved or renamed (bilayer made it as '" + m.directory + "')";
+      return why.empty();
+    }
+
+    /**
+     * Whether bilayer may remove the directory @p path, empty or after
+     * removing the files of own_files(): it is empty, or bilayer made it
+     * here (made_here()), and every entry is a file its marker lists (a
+     * committed directory) or, for @p staging directories, a file with the
+     * name of one of bilayer's outputs. Otherwise @p why says why not.
+     */
+    bool
+    removable(const fs::path &path, const bool staging, std::string &why)
+    {
+      std::error_code          error;
+      const Marker             m = read_marker(path);
+      std::vector<std::string> names;
+      for (fs::directory_iterator it(path, error), end; !error && it != end;
+           it.increment(error))
+        names.push_back(it->path().filename().string());
+      if (error)
+        {
+          why = "cannot be listed (" + error.message() + ")";
+          return false;
+        }
+      if (names.empty())
+        return true;
+      std::string foreign;
+      for (const auto &name : names)
+        if (!(m.present && (name == StagedDirectory::marker_name() ||
+                            (staging && name == marker_temporary))) &&
+            !(m.present && staging &&
+              StagedDirectory::is_output_name(name, true)) &&
+            !(m.present && !staging &&
+              std::count(m.files.begin(), m.files.end(), name) > 0 &&
+              StagedDirectory::is_output_name(name, false)) &&
+            foreign.empty())
+          foreign = name;
+      if (!m.present)
+        {
+          why = "holds files that bilayer did not write ('" + foreign +
+                "', and no marker file " + StagedDirectory::marker_name() +
+                " of a bilayer run)";
+          return false;
+        }
+      if (!made_here(path, m, why))
+        return false;
+      for (const auto &file : m.files)
+        if (!StagedDirectory::is_output_name(file, false))
+          {
+            why = "has a marker that lists '" + file +
+                  "', which is no file bilayer writes";
+            return false;
+          }
+      if (!foreign.empty())
+        {
+          why = "holds files that bilayer did not write ('" + foreign + "')";
+          return false;
+        }
+      return true;
+    }
+
+    /**
+     * Remove from @p path (a directory removable() allowed) the marker and
+     * the files bilayer wrote: those its marker lists, or with @p staging
+     * those with the names of bilayer's outputs; then the directory if it
+     * is empty. Returns an entry that stays, or "".
+     */
+    std::string
+    remove_own(const fs::path &path, const bool staging)
     {
       std::error_code       error;
-      std::set<std::string> listed;
-      bool                  marked = false;
-      const fs::path        marker = path / StagedDirectory::marker_name();
-      if (fs::is_regular_file(fs::symlink_status(marker, error)))
-        {
-          std::ifstream in(marker);
-          std::string   line;
-          marked = std::getline(in, line) &&
-                   line.rfind("This directory was written by bilayer", 0) == 0;
-          while (marked && std::getline(in, line))
-            if (line.rfind(manifest_prefix, 0) == 0)
-              listed.insert(line.substr(manifest_prefix.size()));
-        }
+      const Marker          m = read_marker(path);
+      std::set<std::string> own(m.files.begin(), m.files.end());
       for (fs::directory_iterator it(path, error), end; !error && it != end;
            it.increment(error))
         {
           const std::string name = it->path().filename().string();
-          if ((marked && name == StagedDirectory::marker_name()) ||
-              listed.count(name) > 0 || (marked && staging))
-            continue;
-          if (foreign.empty())
-            foreign = name;
+          const bool        mine =
+            name == StagedDirectory::marker_name() ||
+            name == marker_temporary ||
+            (staging ? StagedDirectory::is_output_name(name, true) :
+                       own.count(name) > 0 &&
+                         StagedDirectory::is_output_name(name, false));
+          if (mine && !fs::is_directory(fs::symlink_status(it->path(), error)))
+            ::unlink(it->path().c_str());
         }
-      if (error)
-        {
-          foreign = "(cannot list it: " + error.message() + ")";
-          return false;
-        }
-      if (!foreign.empty())
-        foreign = "'" + foreign + "'" +
-                  (marked ? "" :
-                            ", and no marker file " +
-                              std::string(StagedDirectory::marker_name()) +
-                              " of a bilayer run");
-      return foreign.empty();
+      if (::rmdir(path.c_str()) == 0 || errno == ENOENT)
+        return "";
+      for (fs::directory_iterator it(path, error), end; !error && it != end;
+           it.increment(error))
+        return it->path().filename().string();
+      return "(" + std::string(std::strerror(errno)) + ")";
     }
 
+    /// Write the marker of @p directory (through a temporary file).
+    bool
+    write_marker(const std::string              &directory,
+                 const std::string              &identity,
+                 const std::string              &named,
+                 const std::vector<std::string> &files)
+    {
+      const std::string temporary = directory + "/" + marker_temporary;
+      {
+        std::ofstream out(temporary);
+        out << marker_text << identity_prefix << identity << "\n"
+            << directory_prefix << named << "\n";
+        for (const auto &file : files)
+          out << manifest_prefix << file << "\n";
+        out.close();
+        if (!out)
+          return false;
+      }
+      return std::rename(
+               temporary.c_str(),
+               (directory + "/" + StagedDirectory::marker_name()).c_str()) == 0;
+    }
+
+    /// Rename without replacing what exists at @p to (an empty directory
+    /// too); errno on failure.
+    bool
+    rename_new(const std::string &from, const std::string &to)
+    {
+      if (::renameat2(
+            AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) ==
+          0)
+        return true;
+      if (errno != EINVAL && errno != ENOSYS)
+        return false;
+      // A file system without RENAME_NOREPLACE (NFS): checked, then
+      // renamed (rename() would also replace an empty directory).
+      struct stat existing;
+      if (::lstat(to.c_str(), &existing) == 0)
+        {
+          errno = EEXIST;
+          return false;
+        }
+      return std::rename(from.c_str(), to.c_str()) == 0;
+    }
     /// Whether @p ancestor is @p path or one of its parent directories
     /// (both canonical).
     bool
@@ -112,10 +309,29 @@ namespace bilayer
   }
 
 
+  bool
+  StagedDirectory::is_output_name(const std::string &name, const bool temporary)
+  {
+    static const std::regex output(
+      "(used_parameters\\.prm|summary\\.json|table\\.(txt|tex|csv)|"
+      "interface\\.pvd|solution\\.(pvd|xdmf)|interface-[0-9]{2,}\\.(csv|vtu)|"
+      "solution-[0-9]{2,}\\.pvtu|"
+      "solution-[0-9]{2,}-[uv]-(minus|plus)(\\.[0-9]+)?\\.(vtu|h5))");
+    const std::string suffix = ".part";
+    if (temporary && name.size() > suffix.size() &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+      return std::regex_match(name.substr(0, name.size() - suffix.size()),
+                              output);
+    return std::regex_match(name, output);
+  }
+
+
   StagedDirectory::StagedDirectory(const std::string              &directory,
                                    const std::vector<std::string> &inputs)
   {
-    std::error_code error;
+    // A signal waits until the directory is set up (or refused).
+    const std::lock_guard<std::mutex> hold(guard);
+    std::error_code                   error;
     if (directory.empty())
       refuse("must name a directory, got ''");
     fs::path absolute = fs::absolute(directory, error).lexically_normal();
@@ -151,8 +367,10 @@ namespace bilayer
         if (!error)
           protected_paths.emplace_back(p, "the input file '" + input + "'");
       }
-    const std::vector<std::string> suffixes = {
-      "", ".partial", ".failed", ".old", ".failed.old", ".lock"};
+    const std::vector<std::string> suffixes = {"",
+                                               ".partial",
+                                               ".failed",
+                                               ".lock"};
     for (const auto &[path, what] : protected_paths)
       for (const auto &suffix : suffixes)
         if (is_or_contains(fs::path(final_path + suffix), path))
@@ -181,14 +399,13 @@ namespace bilayer
           refuse(shown + " is a symbolic link; choose another directory");
         if (!fs::is_directory(status))
           refuse(shown + " exists and is not a directory");
-        std::string foreign;
-        if (!written_by_bilayer(path,
-                                suffix != "" && suffix != ".failed",
-                                foreign))
-          refuse(shown + " holds files that bilayer did not write (" + foreign +
-                 "); bilayer replaces an output directory only if it holds "
-                 "nothing but what a run of bilayer wrote: choose another "
-                 "directory or move the files");
+        std::string why;
+        if (!removable(path, suffix == ".partial", why))
+          refuse(shown + " " + why +
+                 "; bilayer replaces an output directory only if it is the "
+                 "very directory a run of bilayer made there and holds "
+                 "nothing but what that run wrote: choose another directory "
+                 "or move it");
       }
     if (fs::is_directory(resolved, error))
       {
@@ -286,6 +503,7 @@ namespace bilayer
     // From here on the lock file is bilayer's (created now, or a killed
     // run's), and release() removes it.
     lock_created = true;
+    live         = this;
     {
       char host[256] = {};
       ::gethostname(host, sizeof(host) - 1);
@@ -302,23 +520,49 @@ namespace bilayer
         }
     }
 
-    // A staging or aside directory left by a killed run is stale now.
-    for (const std::string suffix : {".partial", ".old", ".failed.old"})
-      fs::remove_all(final_path + suffix, error);
-    fs::create_directory(staging, error);
+    // A staging directory left by a killed run is stale now (its own files
+    // go; checked above).
+    if (fs::exists(fs::symlink_status(staging, error)))
+      {
+        std::string why;
+        if (!removable(staging, true, why))
+          {
+            release();
+            refuse("'" + directory + ".partial' " + why + "; move it");
+          }
+        const std::string left = remove_own(staging, true);
+        if (!left.empty())
+          {
+            release();
+            refuse("'" + directory + ".partial' (of an earlier run) holds '" +
+                   left + "', which bilayer did not write; move it");
+          }
+      }
     std::string problem;
-    if (error)
-      problem = "cannot create '" + staging + "': " + error.message();
+    if (::mkdir(staging.c_str(), 0777) != 0)
+      problem = "cannot create '" + staging + "': " + std::strerror(errno);
     else
       {
         staging_path = staging;
+        struct stat own;
+        ::lstat(staging_path.c_str(), &own);
+        device = own.st_dev;
+        inode  = own.st_ino;
+        std::random_device random;
+        std::ostringstream hex;
+        for (int i = 0; i < 4; ++i)
+          {
+            char word[9];
+            std::snprintf(word, sizeof(word), "%08x", random());
+            hex << word;
+          }
+        token = hex.str();
         // Directory permissions do not stop root: write a file too.
-        std::ofstream marker(staging_path + "/" + marker_name());
-        marker << marker_text;
-        marker.flush();
-        if (!marker)
+        errno = 0;
+        if (!write_marker(staging_path, identity(), staging_path, {}))
           problem =
             "cannot write into '" + staging_path + "': " + std::strerror(errno);
+        seen = {marker_name()};
       }
     if (!problem.empty())
       {
@@ -328,19 +572,61 @@ namespace bilayer
   }
 
 
+  std::string
+  StagedDirectory::identity() const
+  {
+    // Where the file system keeps extended attributes, the token is one
+    // of the directory's too (a copy that keeps the marker's inode number
+    // by chance does not have it).
+    const bool in_attribute = ::lsetxattr(staging_path.c_str(),
+                                          attribute,
+                                          token.data(),
+                                          token.size(),
+                                          0) == 0;
+    return std::to_string(static_cast<std::uintmax_t>(device)) + " " +
+           std::to_string(static_cast<std::uintmax_t>(inode)) + " " + token +
+           (in_attribute ? " attribute" : " file");
+  }
+
+
   StagedDirectory::~StagedDirectory()
   {
+    const std::lock_guard<std::mutex> hold(guard);
     release();
+  }
+
+
+  void
+  StagedDirectory::discard_staging(const bool move_first)
+  {
+    if (committed || staging_path.empty())
+      return;
+    const std::string staged = staging_path;
+    staging_path.clear();
+    // Only the directory this run made (its marker or, if the marker was
+    // removed, its extended attribute holds the token), and only its own
+    // files in it.
+    struct stat own;
+    if (::lstat(staged.c_str(), &own) != 0 || own.st_dev != device ||
+        own.st_ino != inode ||
+        (read_marker(staged).token != token &&
+         attribute_token(staged) != token))
+      return;
+    std::string path = staged;
+    // (Writes still under way then fail instead of adding files.)
+    if (move_first && rename_new(staged, staged + ".stopped-" + token))
+      path = staged + ".stopped-" + token;
+    const std::string left = remove_own(path, true);
+    if (!left.empty())
+      std::cerr << "bilayer: note: kept '" << path << "': it holds '" << left
+                << "', which bilayer did not write" << std::endl;
   }
 
 
   void
   StagedDirectory::release()
   {
-    std::error_code error;
-    if (!committed && !staging_path.empty())
-      fs::remove_all(staging_path, error);
-    staging_path.clear();
+    discard_staging(false);
     if (lock_descriptor >= 0)
       {
         // Unlink while holding the lock: a run waiting for the same file
@@ -351,68 +637,139 @@ namespace bilayer
         lock_descriptor = -1;
       }
     // Parent directories created for a run that did not commit, if empty.
+    std::error_code error;
     if (!committed)
       for (const auto &p : created_parents)
         fs::remove(p, error);
     created_parents.clear();
+    if (live == this)
+      live = nullptr;
+  }
+
+
+  void
+  StagedDirectory::verify()
+  {
+    const std::lock_guard<std::mutex> hold(guard);
+    verify_locked();
+  }
+
+
+  void
+  StagedDirectory::verify_locked()
+  {
+    const std::string shown = in_quotes(staging_path);
+    struct stat       own;
+    if (::lstat(staging_path.c_str(), &own) != 0)
+      refuse(shown + " was removed during the run (" + std::strerror(errno) +
+             "): the results are incomplete and nothing is published; run "
+             "again");
+    if (own.st_dev != device || own.st_ino != inode ||
+        read_marker(staging_path).token != token)
+      refuse(shown +
+             " was replaced during the run by a directory this run did not "
+             "make: the results are incomplete and nothing is published (" +
+             shown + " is left as it is); run again");
+    std::error_code       error;
+    std::set<std::string> now;
+    for (fs::directory_iterator it(staging_path, error), end;
+         !error && it != end;
+         it.increment(error))
+      now.insert(it->path().filename().string());
+    if (error)
+      refuse("cannot list " + shown + ": " + error.message());
+    for (const auto &name : seen)
+      if (now.count(name) == 0)
+        refuse("'" + name + "' was removed from " + shown +
+               " during the run: the results are incomplete and nothing is "
+               "published; run again");
+    seen.clear();
+    for (const auto &name : now)
+      if (name != marker_temporary &&
+          !(name.size() > 5 && name.compare(name.size() - 5, 5, ".part") == 0))
+        seen.insert(name);
   }
 
 
   std::string
   StagedDirectory::commit(const bool success)
   {
+    const std::lock_guard<std::mutex> hold(guard);
     const std::string target = success ? final_path : final_path + ".failed";
-    const std::string old    = target + ".old";
-    std::error_code   error;
-    // The marker lists what the run wrote: a later run replaces the
-    // directory only while it holds nothing else.
+    // Only the complete directory this run made is published.
+    verify_locked();
+    for (const std::string required : {"used_parameters.prm", "summary.json"})
+      if ((success || required != "summary.json") && seen.count(required) == 0)
+        refuse("'" + staging_path + "' lacks " + required +
+               ": the results are incomplete and nothing is published");
+    std::error_code error;
+    // Checked again (it may have changed since the run began), before the
+    // marker names it.
+    const bool replacing = fs::exists(fs::symlink_status(target, error));
+    if (replacing)
+      {
+        std::string why;
+        if (!fs::is_directory(fs::symlink_status(target, error)) ||
+            !removable(target, false, why))
+          {
+            // The results stay where they are (a later run removes them).
+            const std::string staged = staging_path;
+            staging_path.clear();
+            refuse("'" + target + "' " +
+                   (why.empty() ? std::string("is no directory") : why) +
+                   " (it changed during the run and is left as it is); the "
+                   "results are in '" +
+                   staged + "'");
+          }
+      }
+    // The marker lists bilayer's files of the run and names the directory
+    // they go to: a later run replaces it only while it is this directory
+    // and holds nothing else (a file the user put into DIR.partial goes
+    // along, unlisted, and keeps DIR from being replaced).
     {
       std::vector<std::string> names;
-      for (fs::directory_iterator it(staging_path, error), end;
-           !error && it != end;
-           it.increment(error))
-        names.push_back(it->path().filename().string());
-      std::sort(names.begin(), names.end());
+      for (const auto &name : seen)
+        if (is_output_name(name, false))
+          names.push_back(name);
       errno = 0;
-      std::ofstream marker(staging_path + "/" + marker_name());
-      marker << marker_text;
-      for (const auto &name : names)
-        if (name != marker_name())
-          marker << manifest_prefix << name << "\n";
-      marker.close();
-      if (!marker || error)
+      if (!write_marker(staging_path, identity(), target, names))
         refuse("cannot write '" + staging_path + "/" + marker_name() +
-               "': " + (error ? error.message() : std::strerror(errno)));
+               "': " + std::strerror(errno));
     }
-    fs::remove_all(old, error);
-    bool moved_aside = false;
-    if (fs::exists(fs::symlink_status(target, error)))
+    const std::string aside       = target + ".replaced-" + token;
+    bool              moved_aside = false;
+    if (replacing)
       {
-        fs::rename(target, old, error);
-        if (error)
-          refuse("cannot move the previous '" + target + "' aside to '" + old +
-                 "': " + error.message() + " (it is unchanged)");
+        if (!rename_new(target, aside))
+          refuse("cannot move the previous '" + target + "' aside to '" +
+                 aside + "': " + std::strerror(errno) + " (it is unchanged)");
         moved_aside = true;
       }
-    fs::rename(staging_path, target, error);
-    if (error)
+    if (!rename_new(staging_path, target))
       {
-        const std::string why = error.message();
+        const std::string why = std::strerror(errno);
         if (moved_aside)
-          fs::rename(old, target, error);
+          rename_new(aside, target);
         refuse("cannot move the results from '" + staging_path + "' to '" +
                target + "': " + why + " ('" + target + "' is unchanged)");
       }
     committed = true;
-    fs::remove_all(old, error);
+    if (moved_aside)
+      {
+        const std::string left = remove_own(aside, false);
+        if (!left.empty())
+          std::cerr << "bilayer: note: kept the previous '" << target
+                    << "' as '" << aside << "': it holds '" << left
+                    << "', which bilayer did not write" << std::endl;
+      }
     if (success)
       {
         // A failed run's results no longer describe the directory.
-        std::string       foreign;
+        std::string       why;
         const std::string failed = final_path + ".failed";
         if (fs::is_directory(fs::symlink_status(failed, error)) &&
-            written_by_bilayer(failed, false, foreign))
-          fs::remove_all(failed, error);
+            removable(failed, false, why))
+          remove_own(failed, false);
       }
     return target;
   }
@@ -424,5 +781,107 @@ namespace bilayer
     std::error_code error;
     const auto      space = fs::space(staging_path, error);
     return error ? static_cast<std::uintmax_t>(-1) : space.available;
+  }
+
+
+  namespace
+  {
+    const int stop_signals[] = {SIGHUP, SIGINT, SIGTERM};
+    /// Per signal of stop_signals: ignored when the program started.
+    bool ignored_at_start[3] = {false, false, false};
+    int  stop_pipe[2]        = {-1, -1};
+
+    extern "C" void
+    on_stop_signal(int signal)
+    {
+      // (Async-signal-safe: the watching thread does the work.)
+      const int                      saved = errno;
+      const unsigned char            byte  = static_cast<unsigned char>(signal);
+      [[maybe_unused]] const ssize_t n     = ::write(stop_pipe[1], &byte, 1);
+      errno                                = saved;
+    }
+  } // namespace
+
+
+  void
+  stop_on_signal(const int signal)
+  {
+    const std::lock_guard<std::mutex> hold(guard);
+    std::string                       removed;
+    if (live != nullptr)
+      {
+        if (!live->committed && !live->staging_path.empty())
+          removed = in_quotes(live->staging_path) + " and ";
+        removed += in_quotes(live->lock_path);
+        live->discard_staging(true);
+        live->release();
+      }
+    const char *name = signal == SIGHUP ? "SIGHUP" :
+                       signal == SIGINT ? "SIGINT" :
+                                          "SIGTERM";
+    if (!removed.empty())
+      std::cerr << "bilayer: error: stopped by " << name << " (removed "
+                << removed << "; the output directory is as it was)"
+                << std::endl;
+    std::signal(signal, SIG_DFL);
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, signal);
+    pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+    std::raise(signal);
+    std::_Exit(128 + signal);
+  }
+
+
+  void
+  prepare_stop_signals()
+  {
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        struct sigaction old;
+        if (::sigaction(stop_signals[i], nullptr, &old) == 0)
+          ignored_at_start[i] = old.sa_handler == SIG_IGN;
+      }
+    std::signal(SIGPIPE, SIG_IGN);
+  }
+
+
+  void
+  watch_stop_signals(const bool report)
+  {
+    // Libraries initialised since (PETSc with MPI) install handlers that
+    // turn these signals into an error report and MPI_Abort.
+    std::signal(SIGPIPE, SIG_IGN);
+    if (::pipe2(stop_pipe, O_CLOEXEC) != 0)
+      {
+        for (unsigned int i = 0; i < 3; ++i)
+          std::signal(stop_signals[i], ignored_at_start[i] ? SIG_IGN : SIG_DFL);
+        return;
+      }
+    std::thread([report]() {
+      unsigned char byte = 0;
+      while (::read(stop_pipe[0], &byte, 1) != 1)
+        if (errno != EINTR)
+          return;
+      if (!report)
+        {
+          // Other processes have no staging directory to remove.
+          std::signal(byte, SIG_DFL);
+          std::raise(byte);
+        }
+      stop_on_signal(byte);
+    }).detach();
+    for (unsigned int i = 0; i < 3; ++i)
+      if (ignored_at_start[i])
+        std::signal(stop_signals[i], SIG_IGN);
+      else
+        {
+          struct sigaction action;
+          std::memset(&action, 0, sizeof(action));
+          action.sa_handler = on_stop_signal;
+          sigfillset(&action.sa_mask);
+          action.sa_flags = SA_RESTART;
+          ::sigaction(stop_signals[i], &action, nullptr);
+        }
   }
 } // namespace bilayer

@@ -511,9 +511,15 @@ namespace bilayer
   {
     const std::string &dir = scene.output.directory;
     FirstFailure       writing;
-    // (Each cycle: drivers may call run_cycle() without run().)
+    // The directory the run made (a run of the program), or created if
+    // missing (drivers may call run_cycle() without run()).
     if (distribution.is_root())
-      writing([&]() { std::filesystem::create_directories(dir); });
+      writing([&]() {
+        if (directory_check)
+          directory_check();
+        else
+          std::filesystem::create_directories(dir);
+      });
     distribution.barrier();
     const bool fields = scene.output.writes_fields(record.cycle,
                                                    scene.mesh.n_cycles,
@@ -532,7 +538,16 @@ namespace bilayer
     add_to_table(table, record);
     if (distribution.is_root())
       writing([&]() { write_records(record.cycle, fields); });
-    const std::string error = distribution.first_error(writing.message);
+    std::string error = distribution.first_error(writing.message);
+    // The files just written are there (checked again at the next cycle
+    // and before the results are published).
+    if (error.empty() && directory_check)
+      {
+        FirstFailure written;
+        if (distribution.is_root())
+          written(directory_check);
+        error = distribution.first_error(written.message);
+      }
     if (!error.empty())
       throw CollectiveError("writing the results of cycle " +
                             std::to_string(record.cycle) + " failed: " + error);

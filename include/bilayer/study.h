@@ -18,8 +18,10 @@
 #include <bilayer/subproblem.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <ostream>
+#include <utility>
 #include <vector>
 
 namespace bilayer
@@ -100,7 +102,21 @@ namespace bilayer
       return indicators;
     }
 
+    /**
+     * Called on the first process before and after each cycle's files are
+     * written (StagedDirectory::verify(): the output directory is still
+     * the one the run made, with the files written so far); set on every
+     * process or on none. Without it, the output directory is created if
+     * missing.
+     */
+    void
+    set_directory_check(std::function<void()> check)
+    {
+      directory_check = std::move(check);
+    }
+
   private:
+    std::function<void()> directory_check;
     // The steps of run_cycle(), in this order.
 
     /// The meshes of the cycle (created or refined) and their sizes.
