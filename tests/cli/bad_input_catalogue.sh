@@ -368,8 +368,52 @@ else
   done
 fi
 
-# A run that passes replaces bilayer's directory whole (the user's note is
-# gone now), and removes an earlier failed run's results; blanks around --set
+# One member of each class that the hostile tests try in full
+# (tests/cli/gmsh_refusals.sh, hostile_output.sh, script_outputs.sh,
+# tests/support_cells.cc; the removed staging directory and the study
+# scripts' folders are there only, as they need a run under way or a script).
+scenes=$(dirname "$prm_source")
+# A scene program: refused before gmsh runs, the command not run.
+{ cat "$scenes/two_cracks.geo"; echo "SystemCall \"touch '$work/ran'\";"; } > program.geo
+sed 's/two_cracks.geo/program.geo/' "$scenes/two_cracks.prm" > program.prm
+# A curve in Sigma and in the crack: refused naming both groups.
+sed 's/Physical Curve("Sigma") = {11, 13, 15};/Physical Curve("Sigma") = {11, 12, 13, 15};/' \
+  "$scenes/two_cracks.geo" > both.geo
+sed 's/two_cracks.geo/both.geo/' "$scenes/two_cracks.prm" > both.prm
+# A folder with a marker that does not name it (forged, or copied).
+mkdir -p forged
+echo '{"mine": 1}' > forged/summary.json
+printf 'This directory was written by bilayer.\nfile: summary.json\n' > forged/.bilayer-output
+before=$(snapshot)
+check "scene program (SystemCall)" "program.geo:" program.prm --set "Output/Output directory=fresh/out"
+[[ ! -e ran ]] || fail "scene program (SystemCall)" "the command ran"
+check "curve in Sigma and crack" "'Sigma' and 'crack'" both.prm --set "Output/Output directory=fresh/out"
+check "forged output marker" "'forged'" "$prm" --set "Output/Output directory=forged"
+DEAL_II_NUM_THREADS=abc check "DEAL_II_NUM_THREADS=abc" "DEAL_II_NUM_THREADS must be a whole number" \
+  "$prm" --set "Output/Output directory=fresh/out"
+(
+  name=$(printf 'd%.0s' $(seq 200))
+  mkdir -p deep && cd deep || exit 1
+  for _ in $(seq 22); do mkdir "$name" && cd "$name" || exit 1; done
+  "$bilayer" "$work/$prm" --set "Output/Output directory=$work/fresh/out" > "$work/stdout" 2> "$work/stderr"
+) ; rc=$?
+[[ $rc -eq 1 && $(wc -l < stderr) -eq 1 ]] && grep -qF "longer than PATH_MAX" stderr && [[ ! -e fresh ]] \
+  && echo "working directory longer than PATH_MAX: yes" || fail "working directory longer than PATH_MAX" "exit status $rc"
+rm -rf deep
+# A backup copy beside the directory and a pipe that closes early: the run
+# completes, the copy is kept byte for byte, nothing staged or locked.
+cp -r out out.old && echo 'my note' > out.old/notes.txt
+copy=$(cd out.old && find . -type f -print0 | sort -z | xargs -0 md5sum)
+"$bilayer" "$prm" --set "Output/Output directory=out" --set "Solver/Method=active set" 2> stderr | head -1 > stdout
+rc=${PIPESTATUS[0]}
+[[ $rc -eq 0 && -f out/summary.json && ! -e out.partial && ! -e out.lock && $(wc -l < stdout) -eq 1 ]] \
+  && [[ "$(cd out.old && find . -type f -print0 | sort -z | xargs -0 md5sum)" == "$copy" ]] \
+  && echo "backup beside the directory kept, output piped into head -1: yes" \
+  || fail "backup beside the directory kept, output piped into head -1" "exit status $rc"
+rm -rf out.old forged program.* both.* ran
+
+# A run that passes replaces bilayer's directory whole (the user's note was
+# removed above), and removes an earlier failed run's results; blanks around --set
 # values do not count.
 "$bilayer" "$prm" --set "Output/Output directory=out" --set "Solver/Maximum iterations=10" > /dev/null 2>&1
 "$bilayer" "$prm" --set "Output/Output directory = out " --set "Solver/Method = active set" > stdout 2> stderr
