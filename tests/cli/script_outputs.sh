@@ -103,28 +103,31 @@ why=$(refused "$work/copy.err" $?)
 grep -q "another folder's (a copy)" "$work/copy.err" || why="$why; the line does not say it is a copy: $(cat "$work/copy.err")"
 verdict "a copied output folder (cp -r) is refused and left as it was" "$why"
 
+# refused_and_kept DESCRIPTION FOLDER: crack_growth --output FOLDER is
+# refused with one line and leaves the folder as it was.
+refused_and_kept() {
+  local before why
+  before=$(state "$2")
+  crack "$2" > /dev/null 2> "$2.err"
+  why=$(refused "$2.err" $?)
+  [[ $(state "$2") == "$before" ]] || why="$why; the folder changed"
+  verdict "$1" "$why"
+}
+
 # 4. The old rule: a folder of the user holding a command.txt kept its
 # runs/ only by luck; now it is refused, runs/ and all intact.
 why=""
 mkdir -p "$work/mine/runs/important"
 echo "command: by hand" > "$work/mine/command.txt"
 echo "data" > "$work/mine/runs/important/data.txt"
-before=$(state "$work/mine")
-crack "$work/mine" > /dev/null 2> "$work/mine.err"
-why=$(refused "$work/mine.err" $?)
-[[ $(state "$work/mine") == "$before" ]] || why="$why; the folder changed"
-verdict "a folder of the user with a command.txt is refused, its runs/ intact" "$why"
+refused_and_kept "a folder of the user with a command.txt is refused, its runs/ intact" "$work/mine"
 
 # 5. Another script's output folder is not this one's.
 why=""
 mkdir -p "$work/other"
 python3 "$scripts/bilayer_run.py" output mesh_convergence "$work/other" convergence.dat > /dev/null
 echo "x" > "$work/other/convergence.dat"
-before=$(state "$work/other")
-crack "$work/other" > /dev/null 2> "$work/other.err"
-why=$(refused "$work/other.err" $?)
-[[ $(state "$work/other") == "$before" ]] || why="$why; the folder changed"
-verdict "an output folder of another script is refused" "$why"
+refused_and_kept "an output folder of another script is refused" "$work/other"
 
 # 6. A Gmsh scene set in an included file is a Gmsh scene (exit 2); a --set
 # bilayer refuses ends with bilayer's line; nothing is written.
