@@ -25,13 +25,15 @@ namespace bilayer
     , mesh(mesh)
   {
     // The rectangle's Sigma: the horizontal segment, s = x, nu = (0, 1);
-    // its ends lie on Gamma_D where the left or right side is clamped.
+    // its ends lie on Gamma_D where the left or right side is clamped (a
+    // side spans both subdomains, so an end is clamped on both or neither).
     curve = InterfaceCurve::segment({geometry.x_min, geometry.sigma_height},
                                     {geometry.x_max, geometry.sigma_height});
     curve.set_crack(geometry.crack());
-    curve.set_ends_on_gamma_d(
-      {{geometry.clamped[static_cast<unsigned int>(Side::left)],
-        geometry.clamped[static_cast<unsigned int>(Side::right)]}});
+    const std::array<bool, 2> ends = {
+      {geometry.clamped[static_cast<unsigned int>(Side::left)],
+       geometry.clamped[static_cast<unsigned int>(Side::right)]}};
+    curve.set_clamped_ends({{ends, ends}});
   }
 
 
@@ -963,11 +965,16 @@ namespace bilayer
         }
     curve.set_crack(CrackSet(cracks, curve.tolerance()));
 
-    // The ends on Gamma_D: on an edge of a clamped part.
-    std::array<bool, 2> clamped_end = {{false, false}};
+    // The clamped ends: the end node of a subdomain is clamped if it lies
+    // on an edge of a clamped part that is an edge of that subdomain's
+    // cells (its Dirichlet data fix that node alone). The gluing across
+    // Sigma drops its multiplier at an end only where both sides are
+    // clamped (InterfaceCurve::on_gamma_d).
+    std::array<std::array<bool, 2>, 2> clamped_end = {
+      {{{false, false}}, {{false, false}}}};
     for (const auto &e : g.elements)
       if (e.type == 1 && e.physical != sigma && e.physical != crack &&
-          g.curve_names.count(e.physical) > 0)
+          g.curve_names.count(e.physical) > 0 && e.nodes.size() == 2)
         {
           const auto &names = geometry.parts.names;
           const auto  part  = std::find(names.begin(),
@@ -975,12 +982,16 @@ namespace bilayer
                                       g.curve_names.at(e.physical)) -
                             names.begin();
           if (geometry.clamped[part])
-            for (unsigned int k = 0; k < 2; ++k)
-              for (const unsigned int n : e.nodes)
-                clamped_end[k] = clamped_end[k] ||
-                                 n == (k == 0 ? nodes.front() : nodes.back());
+            for (unsigned int d = 0; d < 2; ++d)
+              if ((d == 0 ? minus : plus).count(edge(e.nodes[0], e.nodes[1])) >
+                  0)
+                for (unsigned int k = 0; k < 2; ++k)
+                  for (const unsigned int n : e.nodes)
+                    clamped_end[d][k] =
+                      clamped_end[d][k] ||
+                      n == (k == 0 ? nodes.front() : nodes.back());
         }
-    curve.set_ends_on_gamma_d(clamped_end);
+    curve.set_clamped_ends(clamped_end);
 
     // Orientation: the normal points out of Omega-.
     {

@@ -211,16 +211,25 @@ namespace bilayer
     std::reverse(cracks.begin(), cracks.end());
     *this  = InterfaceCurve(reversed, start);
     crack_ = CrackSet(cracks, tolerance());
-    std::swap(ends_on_gamma_d[0], ends_on_gamma_d[1]);
+    for (auto &ends : clamped_ends)
+      std::swap(ends[0], ends[1]);
   }
 
 
   bool
   InterfaceCurve::on_gamma_d(const double s) const
   {
+    return on_gamma_d(s, 0) && on_gamma_d(s, 1);
+  }
+
+
+  bool
+  InterfaceCurve::on_gamma_d(const double s, const unsigned int d) const
+  {
+    AssertIndexRange(d, 2);
     const double tol = tolerance();
-    return (ends_on_gamma_d[0] && std::abs(s - s_begin()) < tol) ||
-           (ends_on_gamma_d[1] && std::abs(s - s_end()) < tol);
+    return (clamped_ends[d][0] && std::abs(s - s_begin()) < tol) ||
+           (clamped_ends[d][1] && std::abs(s - s_end()) < tol);
   }
 
 

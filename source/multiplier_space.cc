@@ -188,8 +188,17 @@ namespace bilayer
     // Multiplier sets (docs/problem.md §3) as bounds per component.
     const double    p     = contact.multiplier_bound;
     const CrackSet &crack = curve.crack();
-    // The ends of Sigma on Gamma_D.
-    const auto on_gamma_d = [&](const double s) { return curve.on_gamma_d(s); };
+    // The ends of Sigma on Gamma_D, per block: for the gluing across Sigma
+    // where both sides' end nodes are clamped, for the gluing of the layers
+    // on one subdomain where that subdomain's end node is clamped. Where
+    // only one side of Sigma is clamped the end keeps its multiplier: its
+    // row couples the free dof of the other side to the prescribed value.
+    const auto on_gamma_d = [&](const double s, const unsigned int b) {
+      return b == Layout::across_sigma ?
+               curve.on_gamma_d(s) :
+               curve.on_gamma_d(
+                 s, static_cast<unsigned int>(Layout::gluing_subdomain(b)));
+    };
     std::vector<types::global_dof_index> sizes;
     for (const auto &mesh : meshes)
       sizes.push_back(Layout::n_components * mesh.node_x.size());
@@ -203,7 +212,7 @@ namespace bilayer
           const bool   on_crack = crack.contains(x);
           if (b == Layout::across_sigma)
             crack_nodes[a] = on_crack;
-          if (on_gamma_d(x))
+          if (on_gamma_d(x, b))
             continue;
           for (unsigned int c = 0; c < Layout::n_components; ++c)
             {
@@ -233,7 +242,7 @@ namespace bilayer
         for (const auto &[end, neighbour] :
              {std::make_pair(0u, mesh.degree),
               std::make_pair(n - 1, n - 1 - mesh.degree)})
-          if (on_gamma_d(mesh.node_x[end]))
+          if (on_gamma_d(mesh.node_x[end], b))
             {
               mesh.row[end] = neighbour;
               mesh.node_weight[neighbour] += mesh.node_mass[end];

@@ -155,7 +155,7 @@ namespace bilayer
     void
     reverse();
 
-    /// The crack pieces and which ends (at s_begin, s_end) lie on Gamma_D.
+    /// The crack pieces.
     void
     set_crack(const CrackSet &crack)
     {
@@ -166,15 +166,35 @@ namespace bilayer
     {
       return crack_;
     }
+
+    /**
+     * Which ends of Sigma are clamped on which side: @p clamped[d][k] is
+     * true if the end node k (0 at s_begin, 1 at s_end) of subdomain d
+     * (index of Subdomain: 0 for Omega-, 1 for Omega+) lies on a clamped
+     * boundary edge of that subdomain (both layers prescribed there).
+     */
     void
-    set_ends_on_gamma_d(const std::array<bool, 2> &ends)
+    set_clamped_ends(const std::array<std::array<bool, 2>, 2> &clamped)
     {
-      ends_on_gamma_d = ends;
+      clamped_ends = clamped;
     }
 
-    /// Whether the point s of Sigma is an end of Sigma on Gamma_D.
+    /**
+     * Whether the point s of Sigma is an end of Sigma on Gamma_D for the
+     * gluing across Sigma: the end node is clamped on both sides, so that
+     * the jump there is fixed by the Dirichlet data alone.
+     */
     bool
     on_gamma_d(const double s) const;
+
+    /**
+     * Whether the point s of Sigma is an end of Sigma whose node of
+     * subdomain @p d (0 for Omega-, 1 for Omega+) is clamped: the gluing
+     * of the two layers on that subdomain is fixed there by the Dirichlet
+     * data.
+     */
+    bool
+    on_gamma_d(const double s, const unsigned int d) const;
 
     /// "segment", "arc" or "polyline of N pieces" for the run header.
     std::string
@@ -188,9 +208,10 @@ namespace bilayer
     static dealii::Tensor<1, 2>
     piece_normal(const Piece &piece, const double s);
 
-    std::vector<Piece>  pieces_;
-    CrackSet            crack_;
-    std::array<bool, 2> ends_on_gamma_d = {{false, false}};
+    std::vector<Piece>                 pieces_;
+    CrackSet                           crack_;
+    std::array<std::array<bool, 2>, 2> clamped_ends = {
+      {{{false, false}}, {{false, false}}}};
   };
 } // namespace bilayer
 
