@@ -32,9 +32,14 @@ namespace bilayer
     // Solves outside the iteration proper: the power iteration of theta =
     // auto and the checks of projected iterates.
     unsigned long  extra_solves = result.subdomain_solves;
-    DivergenceTest divergence(
-      parameters, step_bound, subproblems, interface, theta, result.lambda_max);
-    Solutions w_old;
+    DivergenceTest divergence(parameters,
+                              step_bound,
+                              subproblems,
+                              interface,
+                              theta,
+                              result.lambda_max,
+                              DivergenceTest::accelerated_window);
+    Solutions      w_old;
     // mu is the extrapolated point y_k, projected the last projected
     // iterate x_k, increment x_k - x_{k+1}.
     BlockVector<double> g, projected(mu), next, increment;

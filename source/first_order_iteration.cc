@@ -2,6 +2,7 @@
 
 #include <bilayer/first_order_iteration.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -147,19 +148,51 @@ namespace bilayer
   }
 
 
+  GrowthWindow::GrowthWindow(const double factor, const unsigned int window)
+    : factor(factor)
+    , window(std::max(window, 2u))
+    , min_value(std::numeric_limits<double>::max())
+    , count(0)
+  {}
+
+
+  bool
+  GrowthWindow::add(const double value)
+  {
+    const bool above_min = value > factor * min_value;
+    min_value            = std::min(min_value, value);
+    recent.push_back(value);
+    ++count;
+    // The window grows with the run (a tenth of the values so far): the
+    // oscillations of a converging iteration lengthen as it slows down.
+    const std::size_t full = std::max<std::size_t>(window, count / 10);
+    while (recent.size() > 2 * full)
+      recent.pop_front();
+    // The first values: windows of half of them, at least 2 values each.
+    const std::size_t width = std::min(full, recent.size() / 2);
+    if (!above_min || width < 2)
+      return false;
+    const auto   middle      = recent.end() - width;
+    const double earlier_max = *std::max_element(middle - width, middle);
+    const double later_min   = *std::min_element(middle, recent.end());
+    return later_min > earlier_max;
+  }
+
+
   DivergenceTest::DivergenceTest(const SolverParameters &parameters,
                                  const StepBound        &bound,
                                  const Subproblems      &subproblems,
                                  const Interface        &interface,
                                  const double            theta,
-                                 const double            lambda_max)
+                                 const double            lambda_max,
+                                 const unsigned int      window)
     : parameters(parameters)
     , bound(bound)
     , subproblems(subproblems)
     , interface(interface)
     , theta(theta)
     , lambda_max(lambda_max)
-    , min_increment(std::numeric_limits<double>::max())
+    , growth(parameters.divergence_factor, window)
   {}
 
 
@@ -170,27 +203,40 @@ namespace bilayer
                         const BlockVector<double> &next)
   {
     if (!std::isfinite(increment) || (k >= 1 && !std::isfinite(value)))
-      return k == 0 ?
-               "the first subdomain solutions or jumps are not finite: the "
-               "loads and moduli (Loads, Materials) give displacements "
-               "beyond the range of double; state them in other units" :
-               "diverged: the iterates are no longer finite at iteration " +
-                 std::to_string(k) + " (reduce Solver/Uzawa step theta" +
-                 safe_step_advice() + ")";
-    if (increment > parameters.divergence_factor * min_increment &&
+      {
+        if (k == 0)
+          return "the first subdomain solutions or jumps are not finite: the "
+                 "loads and moduli (Loads, Materials) give displacements "
+                 "beyond the range of double; state them in other units";
+        const std::string  advice = safe_step_advice();
+        std::ostringstream msg;
+        msg << "diverged: the iterates are no longer finite at iteration " << k;
+        if (advice.empty() || advice[0] == ';')
+          msg << " (reduce Solver/Uzawa step theta" << advice << ")";
+        else
+          msg << "; theta = " << theta << advice;
+        return msg.str();
+      }
+    // Increments at round-off level of the multipliers do not count.
+    if (growth.add(increment) &&
         increment > 1e-12 * interface.space().weighted_norm(next))
       {
         std::ostringstream msg;
         msg << "diverged at iteration " << k
             << ": the multiplier increment grew by more than "
             << parameters.divergence_factor
-            << " (Solver/Divergence growth factor); theta = " << theta
-            << " is above the stability threshold, reduce "
-               "Solver/Uzawa step theta"
-            << safe_step_advice();
+            << " (Solver/Divergence growth factor) and over each of the last "
+               "windows; theta = "
+            << theta;
+        const std::string advice = safe_step_advice();
+        if (advice.empty() || advice[0] == ';')
+          msg << " is above the stability threshold, reduce "
+                 "Solver/Uzawa step theta"
+              << advice;
+        else
+          msg << advice;
         return msg.str();
       }
-    min_increment = std::min(min_increment, increment);
     return std::string();
   }
 
@@ -208,9 +254,19 @@ namespace bilayer
     if (!std::isfinite(step) || !(estimate > 0))
       return std::string();
     std::ostringstream text;
-    text << std::setprecision(4) << "; estimated safe step: theta <= " << step
-         << " (" << parameters.auto_theta_fraction << bound.in_words
-         << ", or theta = auto)";
+    text << std::setprecision(4);
+    // A step the run already uses is no advice: the estimate of lambda_max
+    // is then too small for this scene (or the growth is not the step's).
+    if (theta <= step * (1. + 1e-3))
+      text << " is within the estimated safe step theta <= " << step << " ("
+           << parameters.auto_theta_fraction << bound.in_words
+           << "); the estimate of lambda_max is too small for this scene: "
+              "take a smaller Solver/Uzawa step theta, raise "
+              "Solver/Divergence growth factor, or Solver/Method = active set";
+    else
+      text << "; estimated safe step: theta <= " << step << " ("
+           << parameters.auto_theta_fraction << bound.in_words
+           << ", or theta = auto)";
     return text.str();
   }
 

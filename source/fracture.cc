@@ -23,18 +23,37 @@ namespace bilayer
   {
     using Piece = InterfaceCurve::Piece;
 
-    /// Whether two pieces of Sigma are parts of one straight line or one
-    /// circle (theta can move a tip across their junction).
+    /// The unit tangent of the arc @p piece at its point @p p, in the
+    /// direction of increasing s.
+    Tensor<1, 2>
+    arc_tangent(const Piece &piece, const Point<2> &p)
+    {
+      const Tensor<1, 2> r    = (p - piece.centre) / (p - piece.centre).norm();
+      const double       sign = piece.sweep >= 0 ? 1. : -1.;
+      return sign * Tensor<1, 2>({-r[1], r[0]});
+    }
+
+    /// Whether the consecutive pieces @p a and @p b of Sigma (a ends where
+    /// b begins) are parts of one straight line or one circle (theta can
+    /// move a tip across their junction). Arcs are compared at the junction
+    /// by the angle between their tangents and the relative difference of
+    /// their signed curvatures: the centre of a circle fitted to the nodes
+    /// of a shallow arc (radius R, chord c) is determined only to about
+    /// tol R^2 / c^2, its tangent and curvature far better.
     bool
-    same_shape(const Piece &a, const Piece &b, const double tol)
+    same_shape(const Piece &a, const Piece &b)
     {
       if (a.kind != b.kind)
         return false;
       if (a.kind == Piece::Kind::segment)
         return std::abs(a.tau[0] * b.tau[1] - a.tau[1] * b.tau[0]) < 1e-12 &&
                a.tau * b.tau > 0;
-      return (a.centre - b.centre).norm() < tol &&
-             std::abs(a.radius - b.radius) < tol && a.sweep * b.sweep > 0;
+      const Point<2>     p  = 0.5 * (a.b + b.a);
+      const Tensor<1, 2> ta = arc_tangent(a, p), tb = arc_tangent(b, p);
+      const double       ka = (a.sweep >= 0 ? 1. : -1.) / a.radius,
+                   kb       = (b.sweep >= 0 ? 1. : -1.) / b.radius;
+      return ta * tb > 0 && std::abs(ta[0] * tb[1] - ta[1] * tb[0]) < 1e-6 &&
+             std::abs(ka - kb) <= 1e-6 * std::max(std::abs(ka), std::abs(kb));
     }
 
     double
@@ -141,10 +160,10 @@ namespace bilayer
                tip.s > pieces[k].s0 + pieces[k].length - tol)
           ++k;
         unsigned int first = k, last = k;
-        while (first > 0 && same_shape(pieces[first - 1], pieces[k], tol))
+        while (first > 0 && same_shape(pieces[first - 1], pieces[first]))
           --first;
         while (last + 1 < pieces.size() &&
-               same_shape(pieces[last + 1], pieces[k], tol))
+               same_shape(pieces[last], pieces[last + 1]))
           ++last;
         if (pieces[k].kind == Piece::Kind::arc)
           {

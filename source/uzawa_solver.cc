@@ -31,8 +31,13 @@ namespace bilayer
   {
     const double        theta           = result.theta;
     const unsigned long spectrum_solves = result.subdomain_solves;
-    DivergenceTest      divergence(
-      parameters, step_bound, subproblems, interface, theta, result.lambda_max);
+    DivergenceTest      divergence(parameters,
+                              step_bound,
+                              subproblems,
+                              interface,
+                              theta,
+                              result.lambda_max,
+                              DivergenceTest::uzawa_window);
     Solutions           w_old;
     BlockVector<double> g, mu_new, increment;
     double              last_increment = 0;

@@ -10,6 +10,7 @@
 #include <bilayer/progress.h>
 #include <bilayer/subdomain_solves.h>
 
+#include <deque>
 #include <string>
 
 /**
@@ -125,13 +126,44 @@ namespace bilayer
                           const std::string      &advice);
 
   /**
+   * Sustained growth of a sequence of positive values (the D-norms of the
+   * multiplier increments): add() is true when the newest value exceeds the
+   * smallest one so far by @p factor and each of the last w values exceeds
+   * the largest of the w values before them, w = max(@p window, n / 10)
+   * after n values (the oscillations of a converging iteration lengthen as
+   * it slows down), or of half the values so far, at least 2, while fewer
+   * than 2 w have been entered. A single non-monotone step, or a sequence that
+   * oscillates but decreases from one window to the next, is never growth;
+   * a geometric growth is, within 2 w values of exceeding the factor.
+   */
+  class GrowthWindow
+  {
+  public:
+    GrowthWindow(const double factor, const unsigned int window);
+
+    /// Enter @p value; true if the sequence now grows.
+    bool
+    add(const double value);
+
+  private:
+    const double       factor;
+    const unsigned int window;
+    double             min_value;
+    std::size_t        count;
+    /// The last 2 w values, the newest last.
+    std::deque<double> recent;
+  };
+
+  /**
    * The divergence test of the first-order iterations: stop when the
    * multipliers or solutions stop being finite, or when the D-norm of the
-   * multiplier increment exceeds its smallest value so far by Solver/
-   * Divergence growth factor: for theta below the threshold
-   * 2 / lambda_max(D^{-1} C A^{-1} C^T) the projected step is
-   * non-expansive, so the increments cannot grow. Its message ends with the
-   * step that theta = auto would take (safe_step_advice()).
+   * multiplier increment grows (GrowthWindow with Solver/Divergence growth
+   * factor and the window of the method): for theta below the threshold
+   * 2 / lambda_max(D^{-1} C A^{-1} C^T) the projected Uzawa step is
+   * non-expansive, so its increments cannot grow; the accelerated iteration
+   * is not monotone, hence the window. Its message ends with the step that
+   * theta = auto would take (safe_step_advice()), unless theta is already
+   * that small.
    */
   class DivergenceTest
   {
@@ -142,7 +174,15 @@ namespace bilayer
                    const Subproblems      &subproblems,
                    const Interface        &interface,
                    const double            theta,
-                   const double            lambda_max);
+                   const double            lambda_max,
+                   const unsigned int      window);
+
+    /// The window of the Uzawa iteration (monotone increments below the
+    /// threshold).
+    static constexpr unsigned int uzawa_window = 5;
+    /// The window of the accelerated iteration (increments oscillate with
+    /// the momentum between restarts).
+    static constexpr unsigned int accelerated_window = 20;
 
     /**
      * At step k, with stopping value @p value (infinite at k = 0) and the
@@ -171,7 +211,7 @@ namespace bilayer
     const Subproblems      &subproblems;
     const Interface        &interface;
     const double            theta, lambda_max;
-    double                  min_increment;
+    GrowthWindow            growth;
   };
   /**
    * The frame of the two first-order iterations: theta = auto (the power
