@@ -20,6 +20,8 @@
 #include <limits>
 #include <string>
 
+#include "verdict.h"
+
 using namespace bilayer;
 
 namespace
@@ -55,11 +57,6 @@ namespace
     return n;
   }
 
-  const char *
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
 } // namespace
 
 int

@@ -9,6 +9,8 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include "verdict.h"
+
 /// The loads of Example 1 (docs/problem.md §5) as a Loads subsection.
 inline const char *const example1_loads =
   "subsection Loads\n set Constants = c = 1e-3*mu1\n"
@@ -56,12 +58,6 @@ add_elasticity_matrix(const dealii::FEValues<2>                &fe_values,
            lambda * fe_values[displacement].divergence(i, q) *
              fe_values[displacement].divergence(j, q)) *
           fe_values.JxW(q);
-}
-
-inline const char *
-yes(const bool b)
-{
-  return b ? "yes" : "NO";
 }
 
 #endif

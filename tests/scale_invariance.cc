@@ -20,6 +20,8 @@
 #include <sstream>
 #include <vector>
 
+#include "verdict.h"
+
 using namespace dealii;
 using namespace bilayer;
 
@@ -67,11 +69,6 @@ namespace
     return r;
   }
 
-  const char *
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
 } // namespace
 
 

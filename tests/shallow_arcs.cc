@@ -23,15 +23,12 @@
 #include <string>
 #include <vector>
 
+#include "verdict.h"
+
 using namespace bilayer;
 
 namespace
 {
-  const char *
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
 
   std::vector<EnergyReleaseRate>
   release(const std::string &mesh, bool &accepted)

@@ -30,16 +30,13 @@
 #include <sstream>
 #include <string>
 
+#include "verdict.h"
+
 using namespace dealii;
 using namespace bilayer;
 
 namespace
 {
-  const char *
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
 
   std::string
   scene(const std::string &extra)
