@@ -150,6 +150,8 @@ namespace bilayer
                      [](const R &r) { return r.report.displacement_scale; }),
         record_field("relative_discrete_violation",
                      [](const R &r) { return r.report.relative_discrete_violation; }),
+        record_field("relative_jump_without_multiplier",
+                     [](const R &r) { return r.report.relative_jump_without_multiplier; }),
         record_field("min_contact_multiplier",
                      [](const R &r) { return r.report.min_contact_multiplier; }),
         record_field("complementarity",

@@ -601,6 +601,15 @@ namespace bilayer
                                "constraints <= " +
                                  t.str(),
                                r.relative_discrete_violation <= tol);
+    record.checks.emplace_back("relative jump at the glued nodes without "
+                               "multipliers <= " +
+                                 t.str(),
+                               r.relative_jump_without_multiplier <= tol);
+    if (!(r.relative_jump_without_multiplier <= tol))
+      record.note += std::string(record.note.empty() ? "" : "; ") +
+                     "a jump is left at an end of Sigma on Gamma_D: the "
+                     "prescribed displacements of the sides or layers glued "
+                     "there must agree at that point";
     if (scene.contact.non_penetration &&
         !domain.interface_curve().crack().empty())
       {
@@ -619,6 +628,7 @@ namespace bilayer
       std::isfinite(record.energy) && std::isfinite(r.constraint_violation) &&
       std::isfinite(r.max_penetration) && std::isfinite(r.displacement_scale) &&
       std::isfinite(r.relative_discrete_violation) &&
+      std::isfinite(r.relative_jump_without_multiplier) &&
       std::isfinite(r.min_contact_multiplier) &&
       std::isfinite(r.complementarity) && std::isfinite(r.kkt.value()) &&
       std::isfinite(record.eta);

@@ -62,6 +62,10 @@ namespace bilayer
     /// Largest violation of the discrete constraints (jumps that must vanish,
     /// positive penetration at crack nodes) divided by displacement_scale.
     double relative_discrete_violation = 0;
+    /// Largest |nodal jump| at the glued nodes that carry no multiplier
+    /// (ends of Sigma on Gamma_D), where the Dirichlet data of both sides
+    /// must close the jump, divided by displacement_scale [-].
+    double relative_jump_without_multiplier = 0;
     /// Smallest contact multiplier mu_c (0 without crack nodes) [stress].
     double min_contact_multiplier = 0;
     /// sum m mu_c |jump| / (sum m mu_c * displacement_scale) [-].
