@@ -1525,15 +1525,38 @@ namespace bilayer
      * "; did you mean ...?" naming the declared paths closest to @p name
      * (compared as a whole path when @p name contains '/', else by their
      * last part) when they differ from it by a few letters (at most a third
-     * of its length, at least 2), else "".
+     * of its length, at least 2, at most 4), else the pointer to the README's
+     * table of what bilayer models (also for a name about physics that
+     * bilayer does not model, however close to a real entry).
      */
     std::string
     did_you_mean(const ParameterHandler &prm,
                  const std::string      &name,
                  const bool              subsection)
     {
+      // What bilayer does not model (README, "What bilayer models - and
+      // what not"): a name about it is no misspelling of a real entry.
+      const std::string not_modelled =
+        "; what bilayer models and what not: the README's table 'What "
+        "bilayer models - and what not'; every entry: bilayer "
+        "--print-parameters";
+      std::string lower;
+      for (const char c : name)
+        lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      for (const char *word :
+           {"friction",         "thermal",     "temperature", "expansion",
+            "plane stress",     "plane state", "orthotropic", "anisotropic",
+            "stiffness tensor", "toughness",   "critical",    "body force",
+            "gravity",          "density",     "cohesive",    "growth",
+            "debond",           "eigenstrain", "plasticity",  "time step",
+            "load step"})
+        if (lower.find(word) != std::string::npos)
+          return not_modelled;
+      // A plausible misspelling: a few letters apart (at most a third of
+      // the name, at least 2, at most 4), not added or missing words.
       const bool  whole = name.find('/') != std::string::npos;
-      std::size_t best  = std::max<std::size_t>(2, name.size() / 3) + 1;
+      std::size_t best =
+        std::min<std::size_t>(4, std::max<std::size_t>(2, name.size() / 3)) + 1;
       std::vector<std::string> closest;
       for (const std::string &path : declared_paths(prm, subsection))
         {
@@ -1549,7 +1572,7 @@ namespace bilayer
       // a name that is declared elsewhere: that place.)
       if (whole && best == 0)
         return "";
-      return suggestion(closest);
+      return closest.empty() ? not_modelled : suggestion(closest);
     }
 
 
@@ -1683,6 +1706,9 @@ namespace bilayer
             std::string message = one_line_message(e);
             if (!message.empty() && message.back() == '.')
               message.pop_back();
+            // (deal.II's text for a name that is not declared.)
+            if (message.find("you have not yet declared") != std::string::npos)
+              message = "no entry '" + joined + "' is declared";
             AssertThrow(false,
                         ExcMessage("--set " + assignment + ": " + message +
                                    did_you_mean(prm, joined, false) +

@@ -803,8 +803,5 @@ namespace bilayer
                  << scaled(opening[a_max]) << " at " << x.str() << std::endl;
           }
       }
-    if (!record.accepted())
-      rout << "bilayer: cycle " << record.cycle
-           << " FAILED: " << record.failure() << std::endl;
   }
 } // namespace bilayer
