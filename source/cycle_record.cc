@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace bilayer
@@ -71,6 +72,14 @@ namespace bilayer
 
     using R = CycleRecord;
 
+    /// A quantity that is positive where it was computed: NaN (null in
+    /// summary.json and table.csv) where it was not.
+    double
+    computed(const double value)
+    {
+      return value > 0 ? value : std::numeric_limits<double>::quiet_NaN();
+    }
+
     /**
      * The description of the record. Order: that of summary.json; the
      * columns of table.csv are numbered, the mesh-size table has a subset
@@ -96,25 +105,25 @@ namespace bilayer
         record_field("M", [](const R &r) { return r.M; })
           .csv(2, "M").column("M"),
         record_field("h_min_minus", [](const R &r) { return r.minus.h_min; })
-          .csv(3, "h_min_minus").column("h-min", 4),
+          .csv(3, "h_min_minus").column("h-min", 3, true),
         record_field("h_max_minus", [](const R &r) { return r.minus.h_max; })
-          .csv(4, "h_max_minus").column("h-max", 4),
+          .csv(4, "h_max_minus").column("h-max", 3, true),
         record_field("h_min_plus", [](const R &r) { return r.plus.h_min; })
-          .csv(5, "h_min_plus").column("h+min", 4),
+          .csv(5, "h_min_plus").column("h+min", 3, true),
         record_field("h_max_plus", [](const R &r) { return r.plus.h_max; })
-          .csv(6, "h_max_plus").column("h+max", 4),
+          .csv(6, "h_max_plus").column("h+max", 3, true),
         record_field("dofs", [](const R &r) { return r.dofs; })
           .csv(11, "dofs").column("dofs"),
         record_field("multipliers", [](const R &r) { return r.multipliers; })
           .csv(12, "multipliers"),
         record_field("solver", [](const R &r) { return r.result.solver; }),
-        record_field("theta", [](const R &r) { return r.theta; })
+        record_field("theta", [](const R &r) { return computed(r.theta); })
           .csv(13, "theta"),
-        record_field("lambda_max", [](const R &r) { return r.result.lambda_max; }),
+        record_field("lambda_max", [](const R &r) { return computed(r.result.lambda_max); }),
         record_field("predicted_threshold",
-                     [](const R &r) { return r.result.predicted_threshold; }),
+                     [](const R &r) { return computed(r.result.predicted_threshold); }),
         record_field("threshold_at_solution",
-                     [](const R &r) { return r.result.threshold_at_solution; }),
+                     [](const R &r) { return computed(r.result.threshold_at_solution); }),
         record_field("iterations", [](const R &r) { return r.result.iterations; })
           .csv(14, "iterations").column("iter"),
         record_field("subdomain_solves",
@@ -166,14 +175,15 @@ namespace bilayer
         record_field("complementarity",
                      [](const R &r) { return r.report.kkt.complementarity; })
           .in("kkt"),
-        record_field("lambda_min", [](const R &r) { return r.spectrum.lambda_min; })
+        record_field("lambda_min", [](const R &r) { return computed(r.spectrum.lambda_min); })
           .in("dual_spectrum"),
-        record_field("lambda_max", [](const R &r) { return r.spectrum.lambda_max; })
+        record_field("lambda_max", [](const R &r) { return computed(r.spectrum.lambda_max); })
           .in("dual_spectrum"),
         record_field("condition_number", [](const R &r) {
-            return r.spectrum.lambda_min > 0 ? r.spectrum.condition_number() : 0.; })
+            return r.spectrum.lambda_min > 0 ? r.spectrum.condition_number() :
+                                               computed(0.); })
           .in("dual_spectrum"),
-        record_field("h", [](const R &r) { return r.spectrum.h; })
+        record_field("h", [](const R &r) { return computed(r.spectrum.h); })
           .in("dual_spectrum"),
         record_field("lanczos_steps", [](const R &r) { return r.spectrum.iterations; })
           .in("dual_spectrum"),
