@@ -67,24 +67,54 @@ namespace bilayer
   }
 
 
-  double
+  TimeLeft
   time_left(const std::vector<double> &seconds,
             const std::vector<double> &dofs,
-            const std::vector<double> &dofs_ahead)
+            const unsigned int         n_left,
+            const bool                 adaptive)
   {
+    TimeLeft          left;
     const std::size_t n = std::min(seconds.size(), dofs.size());
-    if (n == 0 || !(seconds[n - 1] > 0) || !(dofs[n - 1] > 0))
-      return -1;
-    double alpha = 1.2;
-    if (n >= 2 && seconds[n - 2] > 0 && dofs[n - 2] > 0 &&
-        dofs[n - 1] > 1.1 * dofs[n - 2])
-      alpha = std::clamp(std::log(seconds[n - 1] / seconds[n - 2]) /
-                           std::log(dofs[n - 1] / dofs[n - 2]),
-                         1.,
-                         2.);
-    double left = 0;
-    for (const double N : dofs_ahead)
-      left += seconds[n - 1] * std::pow(N / dofs[n - 1], alpha);
+    if (n < (adaptive ? 5u : 2u) || n_left == 0)
+      return left;
+    for (std::size_t i = 1; i < n; ++i)
+      if (!(seconds[i] > 0) || !(dofs[i] > 0) || !(dofs[i - 1] > 0))
+        return left;
+    // Growth of the unknowns: the last growth factors.
+    const std::size_t n_growth   = adaptive ? 3 : 1;
+    double            log_growth = 0;
+    for (std::size_t i = n - n_growth; i < n; ++i)
+      log_growth += std::log(dofs[i] / dofs[i - 1]);
+    const double growth = std::max(1., std::exp(log_growth / n_growth));
+    // Cost exponent: least squares of log seconds against log dofs over the
+    // last three cycles from cycle 1 on.
+    const std::size_t first = std::max<std::size_t>(1, n >= 3 ? n - 3 : 1);
+    double            mx = 0, my = 0;
+    for (std::size_t i = first; i < n; ++i)
+      mx += std::log(dofs[i]), my += std::log(seconds[i]);
+    const double m = n - first;
+    mx /= m, my /= m;
+    double sxx = 0, sxy = 0;
+    for (std::size_t i = first; i < n; ++i)
+      {
+        const double x = std::log(dofs[i]) - mx;
+        sxx += x * x;
+        sxy += x * (std::log(seconds[i]) - my);
+      }
+    double alpha = 1.2, last = seconds[n - 1];
+    if (m >= 2 && sxx > 1e-3)
+      {
+        alpha = std::clamp(sxy / sxx, 1., 1.5);
+        last  = std::exp(my + alpha * (std::log(dofs[n - 1]) - mx));
+      }
+    double total = 0, ratio = 1;
+    for (unsigned int k = 0; k < n_left; ++k)
+      {
+        ratio *= growth;
+        total += last * std::pow(ratio, alpha);
+      }
+    left.seconds = total;
+    left.growth  = growth;
     return left;
   }
 } // namespace bilayer

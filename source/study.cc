@@ -92,27 +92,28 @@ namespace bilayer
         const CycleRecord &record = run_cycle(cycle);
         if (!record.accepted())
           return false;
-        // The time left: the unknowns grow by 4 per cycle under global
-        // refinement, else as from the previous cycle (1.5 at first).
+        // The time left (progress.h): silent until it can be estimated.
         seconds.push_back(record.total_seconds);
         dofs.push_back(record.dofs);
         const unsigned int n_left = scene.mesh.n_cycles - cycle - 1;
         if (n_left > 0)
           {
-            const double growth =
-              scene.mesh.refinement == Refinement::global ?
-                4. :
-              dofs.size() >= 2 ?
-                std::max(1., dofs.back() / dofs[dofs.size() - 2]) :
-                1.5;
-            std::vector<double> ahead(1, dofs.back() * growth);
-            while (ahead.size() < n_left)
-              ahead.push_back(ahead.back() * growth);
-            pcout << "  elapsed " << format_duration(clock.elapsed())
-                  << ", about "
-                  << format_duration(time_left(seconds, dofs, ahead))
-                  << " left for " << n_left << " more cycle"
-                  << (n_left > 1 ? "s" : "") << std::endl;
+            const TimeLeft left =
+              time_left(seconds,
+                        dofs,
+                        n_left,
+                        scene.mesh.refinement != Refinement::global);
+            pcout << "  elapsed " << format_duration(clock.elapsed());
+            if (left.seconds >= 0)
+              {
+                std::ostringstream growth;
+                growth << std::setprecision(3) << left.growth;
+                pcout << ", about " << format_duration(left.seconds)
+                      << " left for " << n_left << " more cycle"
+                      << (n_left > 1 ? "s" : "") << " (if the unknowns grow by "
+                      << growth.str() << " per cycle)";
+              }
+            pcout << std::endl;
           }
       }
     if (scene.output.terminal == TerminalOutput::full && distribution.is_root())

@@ -45,18 +45,32 @@ namespace bilayer
   };
 
   /**
-   * The time left of a study from its cycles so far: cycle i took
-   * @p seconds[i] for @p dofs[i] unknowns; the cycles still to come have
-   * @p dofs_ahead unknowns. The cost per cycle is taken to grow as
-   * dofs^alpha, alpha from the last two cycles (limited to [1, 2]: at least
-   * linear, at most the cost of a direct solve of a 2D problem with nested
-   * dissection squared), or 1.2 with one cycle done. Returns a negative
-   * number when nothing is known.
+   * The time left of a study from its cycles so far (cycle i took
+   * @p seconds[i] for @p dofs[i] unknowns) for @p n_left more cycles, and
+   * the growth of the unknowns per cycle that it assumes; negative numbers
+   * while it cannot be estimated. Cycle 0 carries one-off costs and is not
+   * used. The unknowns of the cycles to come grow by the geometric mean of
+   * the last three growth factors (global refinement: the last one); the
+   * cost of a cycle grows as dofs^alpha, alpha fitted by least squares to
+   * the last three cycles (from cycle 1 on), limited to [1, 1.5] (at least
+   * linear; the factorisations of these 2D problems grow more slowly than
+   * N^1.5), from the fitted cost of the last cycle. Under adaptive
+   * refinement the growth of the first cycles is smaller than later
+   * (Doerfler marking refines few cells while singularities dominate): the
+   * estimate starts once five cycles are done (@p adaptive), under global
+   * refinement once two are.
    */
-  double
+  struct TimeLeft
+  {
+    double seconds = -1;
+    double growth  = -1;
+  };
+
+  TimeLeft
   time_left(const std::vector<double> &seconds,
             const std::vector<double> &dofs,
-            const std::vector<double> &dofs_ahead);
+            const unsigned int         n_left,
+            const bool                 adaptive);
 } // namespace bilayer
 
 #endif
