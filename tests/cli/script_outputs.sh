@@ -176,8 +176,8 @@ why=$(refused "$work/mc3.err" $?)
 [[ ! -e $work/res/refused ]] || why="$why; the folder was made"
 verdict "mesh_convergence: a scene bilayer refuses ends with its line, no folder made" "$why"
 
-# 8. User-named files: compare_outputs --keep and random_scenes --csv
-# refuse what exists.
+# 8. User-named files: compare_outputs --keep, random_scenes --csv and
+# random_gmsh_scenes --csv, --keep, --output refuse what exists.
 why=""
 mkdir -p "$work/keep"
 echo "kept" > "$work/keep/old-result"
@@ -190,6 +190,18 @@ python3 "$scripts/random_scenes" --seed 1 --count 1 --bilayer "$bilayer" --csv "
   > /dev/null 2> "$work/rs.err"
 rc=$?
 [[ $rc -ne 0 && $(cat "$work/table.csv") == "my csv" ]] || why="$why; random_scenes --csv: exit $rc, the file changed"
+python3 "$scripts/random_gmsh_scenes" --seed 1 --count 1 --bilayer "$bilayer" --csv "$work/table.csv" \
+  > /dev/null 2> "$work/rgs.err"
+rc=$?
+[[ $rc -ne 0 && $(cat "$work/table.csv") == "my csv" ]] || why="$why; random_gmsh_scenes --csv: exit $rc, the file changed"
+for option in --keep --output; do
+  python3 "$scripts/random_gmsh_scenes" --seed 1 --count 1 --bilayer "$bilayer" $option "$work/keep" \
+    > /dev/null 2> "$work/rgs.err"
+  rc=$?
+  [[ $rc -eq 1 && $(cat "$work/keep/old-result") == kept && $(ls -A "$work/keep") == old-result &&
+     $(wc -l < "$work/rgs.err") -eq 1 ]] ||
+    why="$why; random_gmsh_scenes $option: exit $rc, $(ls -A "$work/keep" | tr '\n' ' ')"
+done
 verdict "an existing --keep folder or --csv file is refused and kept" "$why"
 
 # 9. check_geo: scene programs are refused before gmsh sees them.
