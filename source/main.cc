@@ -620,7 +620,9 @@ main(int argc, char **argv)
                  << bilayer::git_commit() << ", deal.II "
                  << bilayer::deal_ii_version() << "\n# BLAS "
                  << bilayer::blas_library() << "\n";
-            prm.print_parameters(used, ParameterHandler::ShortPRM);
+            std::ostringstream entries;
+            prm.print_parameters(entries, ParameterHandler::ShortPRM);
+            used << bilayer::applicable_entries(entries.str(), scene);
             bilayer::write_atomically(output->staging() +
                                         "/used_parameters.prm",
                                       [&](std::ostream &out) {

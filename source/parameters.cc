@@ -1773,4 +1773,50 @@ namespace bilayer
       collapsed.pop_back();
     return collapsed;
   }
+
+
+  std::string
+  applicable_entries(const std::string &short_prm, const Scene &scene)
+  {
+    if (scene.geometry.gmsh_file.empty())
+      return short_prm;
+    const std::set<std::string> unused = {
+      "Geometry/Lower left corner",
+      "Geometry/Upper right corner",
+      "Geometry/Height of Sigma",
+      "Geometry/Crack interval on Sigma",
+      "Mesh/Cells along Sigma",
+      "Mesh/Cells across each subdomain",
+      "Mesh/Cells along Sigma on the plus side",
+      "Mesh/Fit crack tips",
+      "Mesh/Mesh files"};
+    std::vector<std::string> sections;
+    std::string              result;
+    std::istringstream       in(short_prm);
+    for (std::string line; std::getline(in, line);)
+      {
+        const std::string trimmed = Utilities::trim(line);
+        if (trimmed.rfind("subsection ", 0) == 0)
+          sections.push_back(Utilities::trim(trimmed.substr(11)));
+        else if (trimmed == "end" && !sections.empty())
+          sections.pop_back();
+        else if (trimmed.rfind("set ", 0) == 0)
+          {
+            const auto  equal = trimmed.find('=');
+            std::string path;
+            for (const auto &section : sections)
+              path += section + "/";
+            path += Utilities::trim(trimmed.substr(4, equal - 4));
+            if (unused.count(path) > 0)
+              {
+                result += line.substr(0, line.find_first_not_of(' ')) + "# " +
+                          path +
+                          ": not used by a Gmsh scene (Geometry/Gmsh file)\n";
+                continue;
+              }
+          }
+        result += line + "\n";
+      }
+    return result;
+  }
 } // namespace bilayer

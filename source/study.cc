@@ -85,6 +85,11 @@ namespace bilayer
                "spelling of fixed number (that fraction of the cells, "
                "deal.II's fixed number); deal.II's fixed fraction is bulk"
             << std::endl;
+    if (!scene.geometry.gmsh_file.empty() && scene.mesh.fit_crack_tips)
+      pcout << "bilayer: note: Mesh/Fit crack tips applies to the structured "
+               "meshes of the rectangle only; a Gmsh scene meshes its crack "
+               "tips as vertices of its own"
+            << std::endl;
     const IterationClock clock;
     std::vector<double>  seconds, dofs;
     for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)

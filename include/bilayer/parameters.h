@@ -560,6 +560,16 @@ namespace bilayer
   Scene
   scene_from_string(const std::string &text, const std::string &name);
 
+  /**
+   * The entries @p short_prm (ParameterHandler::ShortPRM) without those that
+   * the scene does not use, each replaced by a comment line that names it:
+   * for a Gmsh scene (Geometry/Gmsh file) the rectangle's corners, Height
+   * of Sigma and Crack interval, and the structured mesh's cell counts,
+   * Fit crack tips and Mesh files.
+   */
+  std::string
+  applicable_entries(const std::string &short_prm, const Scene &scene);
+
   /// The message of a deal.II exception (a user error) on one line.
   std::string
   one_line_message(const dealii::ExceptionBase &exception);
