@@ -937,8 +937,9 @@ namespace bilayer
         else
           for (unsigned int k = 0; k + 1 < points.size(); ++k)
             {
-              piece.a = points[k];
-              piece.b = points[k + 1];
+              piece.a         = points[k];
+              piece.b         = points[k + 1];
+              piece.continues = k > 0;
               pieces.push_back(piece);
             }
         i = j;

@@ -64,9 +64,9 @@ namespace bilayer
             for (unsigned int i = 0; i <= space_.degree(b); ++i)
               {
                 // The multiplier's components in its node's frame.
-                const unsigned int  r = space_.row(space_.node(e, i, b), b);
-                const Tensor<1, 2> &n = space_.node_normal(r, b);
-                const std::array<Tensor<1, 2>, 2> frame = {{tangent_of(n), n}};
+                const unsigned int r = space_.row(space_.node(e, i, b), b);
+                const std::array<Tensor<1, 2>, 2> &frame =
+                  space_.node_frame(r, b);
                 for (unsigned int k = 0; k < Layout::n_components; ++k)
                   {
                     const double m = (j == 0 ? -1. : 1.) * values[i] *

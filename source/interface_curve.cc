@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 namespace bilayer
@@ -190,6 +191,30 @@ namespace bilayer
   }
 
 
+  bool
+  InterfaceCurve::corner(const double  s,
+                         Tensor<1, 2> &before,
+                         Tensor<1, 2> &after) const
+  {
+    const unsigned int i   = piece_at(s);
+    const double       tol = tolerance();
+    // The junction at the start of piece j (j >= 1) if s is there.
+    unsigned int j = 0;
+    if (i > 0 && std::abs(s - pieces_[i].s0) <= tol)
+      j = i;
+    else if (i + 1 < pieces_.size() && std::abs(s - pieces_[i + 1].s0) <= tol)
+      j = i + 1;
+    if (j == 0 || pieces_[j].continues)
+      return false;
+    const double s0 = pieces_[j].s0;
+    before          = piece_normal(pieces_[j - 1], s0);
+    after           = piece_normal(pieces_[j], s0);
+    // Different tangents: the angle between the normals above 1e-8.
+    return std::abs(before[0] * after[1] - before[1] * after[0]) > 1e-8 ||
+           before * after < 0;
+  }
+
+
   void
   InterfaceCurve::reverse()
   {
@@ -200,6 +225,8 @@ namespace bilayer
         Piece piece = *it;
         std::swap(piece.a, piece.b);
         piece.sweep = -piece.sweep;
+        // The junction at the new start is the one at the old end.
+        piece.continues = it != pieces_.rbegin() && std::prev(it)->continues;
         reversed.push_back(piece);
       }
     const double length = this->length();

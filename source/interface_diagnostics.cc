@@ -29,6 +29,31 @@ namespace bilayer
         }
       return t;
     }
+
+    /**
+     * The openings [u].nu = (u+ - u-).nu of layer 1 at node @p a of mu_1
+     * against the faces that meet there, from the traces @p tm, @p tp in
+     * the node's orthonormal frame (TraceCoupling::trace_at_nodes): at a
+     * corner of Sigma inside the crack against the normals of the piece
+     * before and of the piece after the corner (MultiplierSpace::
+     * node_frame), elsewhere the normal opening twice.
+     */
+    std::array<double, 2>
+    face_openings(const MultiplierSpace &space,
+                  const Vector<double>  &tm,
+                  const Vector<double>  &tp,
+                  const unsigned int     a)
+    {
+      const unsigned int x = Layout::entry(a, Layout::tangential),
+                         y = Layout::entry(a, Layout::normal);
+      if (!space.corner(a))
+        return {{tp(y) - tm(y), tp(y) - tm(y)}};
+      const Tensor<1, 2> &n = space.node_normal(a);
+      const Tensor<1, 2>  jump =
+        (tp(x) - tm(x)) * tangent_of(n) + (tp(y) - tm(y)) * n;
+      const auto &frame = space.node_frame(a);
+      return {{jump * frame[0], jump * frame[1]}};
+    }
   } // namespace
 
 
@@ -93,8 +118,10 @@ namespace bilayer
     interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
     std::vector<double> result(interface.space().n_nodes());
     for (unsigned int a = 0; a < interface.space().n_nodes(); ++a)
-      result[a] = tp(Layout::entry(a, Layout::normal)) -
-                  tm(Layout::entry(a, Layout::normal));
+      {
+        const auto open = face_openings(interface.space(), tm, tp, a);
+        result[a]       = std::min(open[0], open[1]);
+      }
     return result;
   }
 
@@ -140,23 +167,25 @@ namespace bilayer
         scale > 0 ? largest / scale : largest;
     }
 
-    // Contact multiplier: the normal component of mu_1 at crack nodes.
+    // Contact multipliers: the normal component of mu_1 at crack nodes,
+    // both components at a crack corner.
     double sum_mu = 0, sum_mu_jump = 0;
     bool   any = false;
     for (unsigned int a = 0; a < space.n_nodes(mu_1); ++a)
-      {
-        const unsigned int n = Layout::entry(a, Layout::normal);
-        if (space.on_crack(a) && space.upper_bounds().block(mu_1)(n) > 0)
-          {
-            const double m = mu.block(mu_1)(n);
-            report.min_contact_multiplier =
-              any ? std::min(report.min_contact_multiplier, m) : m;
-            any            = true;
-            const double d = space.node_weight(a, mu_1);
-            sum_mu += d * m;
-            sum_mu_jump += d * m * std::abs(g.block(mu_1)(n));
-          }
-      }
+      for (const unsigned int c : space.contact_components(a))
+        {
+          const unsigned int n = Layout::entry(a, c);
+          if (space.upper_bounds().block(mu_1)(n) > 0)
+            {
+              const double m = mu.block(mu_1)(n);
+              report.min_contact_multiplier =
+                any ? std::min(report.min_contact_multiplier, m) : m;
+              any            = true;
+              const double d = space.node_weight(a, mu_1);
+              sum_mu += d * m;
+              sum_mu_jump += d * m * std::abs(g.block(mu_1)(n));
+            }
+        }
     report.complementarity =
       sum_mu > 0 && scale > 0 ? sum_mu_jump / (sum_mu * scale) : 0.;
     report.max_multiplier_over_bound =
@@ -229,13 +258,16 @@ namespace bilayer
                                         tm);
     interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
     // Normal jump and contact multiplier at node a (the traces' components
-    // are in the node's frame (tangent, normal)).
-    const auto gap = [&](const unsigned int a) {
-      return tp(Layout::entry(a, Layout::normal)) -
-             tm(Layout::entry(a, Layout::normal));
+    // are in the node's frame (tangent, normal)); at a crack corner the
+    // pair of the constraint of the segment's own piece: component
+    // @p side (0 for the segment before the corner, 1 after).
+    const auto gap = [&](const unsigned int a, const unsigned int side) {
+      return face_openings(space, tm, tp, a)[side];
     };
-    const auto mu_c = [&](const unsigned int a) {
-      return space.contact_multiplier(mu, a);
+    const auto mu_c = [&](const unsigned int a, const unsigned int side) {
+      return space.corner(a) ?
+               mu.block(Layout::across_sigma)(Layout::entry(a, side)) :
+               space.contact_multiplier(mu, a);
     };
     const auto &bp = space.breakpoints(Layout::across_sigma);
     // Degree >= 3: Gauss quadrature exact for the product of the two
@@ -259,12 +291,15 @@ namespace bilayer
           {
             // Simpson's rule; midpoint values: the middle node for degree
             // 2, the mean for degree 1 (then it is exact for the product).
+            // a0 is the segment's start (side 1 of a corner there), a1 its
+            // end (side 0).
+            const double g0 = gap(a0, 1), g1 = gap(a1, 0), m0 = mu_c(a0, 1),
+                         m1 = mu_c(a1, 0);
             const double g_m =
-              degree == 2 ? gap(space.node(e, 2)) : 0.5 * (gap(a0) + gap(a1));
-            const double mu_m = degree == 2 ? mu_c(space.node(e, 2)) :
-                                              0.5 * (mu_c(a0) + mu_c(a1));
-            sum               = h / 6 *
-                  (mu_c(a0) * gap(a0) + 4 * mu_m * g_m + mu_c(a1) * gap(a1));
+              degree == 2 ? gap(space.node(e, 2), 0) : 0.5 * (g0 + g1);
+            const double mu_m =
+              degree == 2 ? mu_c(space.node(e, 2), 0) : 0.5 * (m0 + m1);
+            sum = h / 6 * (m0 * g0 + 4 * mu_m * g_m + m1 * g1);
           }
         else
           for (unsigned int q = 0; q < gauss.size(); ++q)
@@ -272,8 +307,9 @@ namespace bilayer
               double g_q = 0, mu_q = 0;
               for (unsigned int i = 0; i <= degree; ++i)
                 {
-                  g_q += shape[q][i] * gap(space.node(e, i));
-                  mu_q += shape[q][i] * mu_c(space.node(e, i));
+                  const unsigned int side = i == 0 ? 1 : 0;
+                  g_q += shape[q][i] * gap(space.node(e, i), side);
+                  mu_q += shape[q][i] * mu_c(space.node(e, i), side);
                 }
               sum += gauss.weight(q) * h * mu_q * g_q;
             }
@@ -316,10 +352,13 @@ namespace bilayer
         for (const unsigned int s : Layout::subproblems)
           n.trace[s] = Tensor<1, 2>({t[s](x), t[s](y)});
         n.normal_traction = n.on_crack ? n.mu_c : n.mu_g[Layout::normal];
-        n.state           = !n.on_crack ? ContactState::glued :
-                            (n.mu_c > 0 || n.jump_normal <= closed_tolerance * scale) ?
-                                          ContactState::closed :
-                                          ContactState::open;
+        // The smallest opening against the faces that meet at the node.
+        const auto   open    = face_openings(space, t[u_minus], t[u_plus], a);
+        const double opening = std::min(open[0], open[1]);
+        n.state              = !n.on_crack ? ContactState::glued :
+                               (n.mu_c > 0 || opening <= closed_tolerance * scale) ?
+                                             ContactState::closed :
+                                             ContactState::open;
       }
     // Crack tips: glued nodes next to a crack node along Sigma.
     std::vector<unsigned int> order(nodes.size());

@@ -137,6 +137,9 @@ namespace bilayer
         // multiplier mesh, normalised.
         for (auto &normal : mesh.normal)
           normal = unit_vector(normal);
+        mesh.frame.resize(n);
+        for (unsigned int a = 0; a < n; ++a)
+          mesh.frame[a] = {{tangent_of(mesh.normal[a]), mesh.normal[a]}};
         mesh.node_mass = mesh.node_weight;
         mesh.row.resize(n);
         for (unsigned int a = 0; a < n; ++a)
@@ -205,6 +208,7 @@ namespace bilayer
     lower.reinit(sizes);
     upper.reinit(sizes);
     crack_nodes.assign(n_nodes(Layout::across_sigma), false);
+    corner_nodes.assign(n_nodes(Layout::across_sigma), false);
     for (const unsigned int b : Layout::blocks)
       for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
         {
@@ -227,6 +231,16 @@ namespace bilayer
               upper.block(b)(t)    = 0;
               lower.block(b)(n)    = 0;
               upper.block(b)(n)    = contact.non_penetration ? p : 0;
+              // A corner of Sigma: one contact constraint per piece, along
+              // its normal (the mean normal would let the node slide
+              // through the other face).
+              Tensor<1, 2> before, after;
+              if (curve.corner(x, before, after))
+                {
+                  corner_nodes[a]    = true;
+                  meshes[b].frame[a] = {{before, after}};
+                  upper.block(b)(t)  = upper.block(b)(n);
+                }
             }
         }
 

@@ -101,13 +101,22 @@ namespace bilayer
         points.emplace_back(a, space.node_position(a, b), 1.0);
       return points;
     };
-    // Each multiplier node's frame is that of its own normal.
+    // The rows of the constraints: each multiplier node's frame
+    // (MultiplierSpace::node_frame; two normals at a crack corner).
     const auto node_frames = [&](const unsigned int b) {
-      std::vector<Tensor<1, 2>> normals;
+      std::vector<std::array<Tensor<1, 2>, 2>> frames;
       for (unsigned int a = 0; a < space.n_nodes(b); ++a)
-        normals.push_back(space.node_normal(a, b));
-      return normals;
+        frames.push_back(space.node_frame(a, b));
+      return frames;
     };
+    // The traces at the nodes of mu_1 for the diagnostics and the output:
+    // (tangent, normal) of the node's normal everywhere.
+    std::vector<std::array<Tensor<1, 2>, 2>> orthonormal_frames;
+    for (unsigned int a = 0; a < space.n_nodes(Layout::across_sigma); ++a)
+      {
+        const Tensor<1, 2> &n = space.node_normal(a, Layout::across_sigma);
+        orthonormal_frames.push_back({{tangent_of(n), n}});
+      }
 
     std::vector<double> values;
     for (const unsigned int b : Layout::blocks)
@@ -153,7 +162,7 @@ namespace bilayer
       if (present(s))
         build_point_matrix(s,
                            nodal(Layout::across_sigma),
-                           node_frames(Layout::across_sigma),
+                           orthonormal_frames,
                            node_traces[s]);
 
     gauss_x.clear();
@@ -170,10 +179,13 @@ namespace bilayer
       if (present(s))
         {
           // The Gauss points' frames: the curve's normal there.
-          std::vector<Tensor<1, 2>> normals;
+          std::vector<std::array<Tensor<1, 2>, 2>> frames;
           for (const double x : gauss_x)
-            normals.push_back(curve->normal(x));
-          build_point_matrix(s, at_gauss, normals, gauss_traces[s]);
+            {
+              const Tensor<1, 2> n = curve->normal(x);
+              frames.push_back({{tangent_of(n), n}});
+            }
+          build_point_matrix(s, at_gauss, frames, gauss_traces[s]);
         }
   }
 
@@ -182,15 +194,12 @@ namespace bilayer
   TraceCoupling::build_point_matrix(
     const unsigned int                                           s,
     const std::vector<std::tuple<unsigned int, double, double>> &points,
-    const std::vector<Tensor<1, 2>>                             &normals,
+    const std::vector<std::array<Tensor<1, 2>, 2>>              &frames,
     PointMatrix                                                 &result) const
   {
-    const unsigned int                       n_rows = normals.size();
-    std::vector<std::array<Tensor<1, 2>, 2>> frames(n_rows);
-    for (unsigned int r = 0; r < n_rows; ++r)
-      frames[r] = {{tangent_of(normals[r]), normals[r]}};
-    const ElasticSubproblem &sub = *subproblems[s];
-    const auto              &fe  = sub.fe();
+    const unsigned int       n_rows = frames.size();
+    const ElasticSubproblem &sub    = *subproblems[s];
+    const auto              &fe     = sub.fe();
     const auto &sfaces = faces[static_cast<unsigned int>(Layout::subdomain(s))];
     std::vector<double> starts;
     for (const auto &face : sfaces)

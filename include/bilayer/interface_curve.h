@@ -81,6 +81,11 @@ namespace bilayer
       /// segment of the rectangle).
       dealii::Tensor<1, 2> tau;
       double               offset = 0;
+      /// Whether the piece continues the previous one as the next chord of
+      /// one curve given only by its polygon (a curved Gmsh curve that is
+      /// neither straight nor a circle): their junction is no corner of
+      /// Sigma (the turn there is O(h)).
+      bool continues = false;
     };
 
     InterfaceCurve() = default;
@@ -97,6 +102,17 @@ namespace bilayer
     /// segment pointing in +x).
     static InterfaceCurve
     segment(const dealii::Point<2> &a, const dealii::Point<2> &b);
+
+    /**
+     * Whether s is a corner of Sigma: a junction of two pieces whose
+     * tangents differ there (not a chord of a curve given by its polygon,
+     * Piece::continues). Then @p before and @p after are the unit normals
+     * (into Omega+) of the piece ending and of the piece starting at s.
+     */
+    bool
+    corner(const double          s,
+           dealii::Tensor<1, 2> &before,
+           dealii::Tensor<1, 2> &after) const;
 
     /// Parameter of the point of Sigma closest to @p p.
     double

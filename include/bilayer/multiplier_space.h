@@ -66,8 +66,10 @@ namespace bilayer
    * <h3>Sets</h3>
    * mu_c nu at the nodes of mu_1 inside the crack (only the normal
    * component, 0 <= mu_c <= p; the tangential one is fixed to 0: no
-   * friction), -p <= . <= p elsewhere. The crack tips belong to
-   * Sigma \ gamma_c (glued). Nodes on Gamma_D (the ends of Sigma on a
+   * friction), -p <= . <= p elsewhere. At a corner of Sigma inside the
+   * crack both components are contact components in [0, p], along the
+   * normals of the two pieces that meet there (node_frame()). The crack tips
+   * belong to Sigma \ gamma_c (glued). Nodes on Gamma_D (the ends of Sigma on a
    * clamped side) carry no multipliers (bounds [0, 0]); without
    * non-penetration neither do the crack nodes. A component is "free" when
    * its lower bound is below its upper bound.
@@ -207,6 +209,32 @@ namespace bilayer
       return meshes[b].normal[a];
     }
 
+    /**
+     * The frame of node @p a of block @p b: the two vectors along which the
+     * node's multiplier components (Layout::tangential, Layout::normal) act
+     * and along which the jumps of its constraints are measured. At every
+     * node but a corner of Sigma inside the crack it is (tangent_of(n), n)
+     * with n = node_normal(a, b). At a crack corner of mu_1 (corner()) it is
+     * (nu_before, nu_after), the normals of the two pieces of Sigma that
+     * meet there, and both components are contact components: two
+     * non-penetration constraints [u].nu_before >= 0, [u].nu_after >= 0 and
+     * the multiplier a nu_before + b nu_after in the cone a, b in [0, p].
+     */
+    const std::array<dealii::Tensor<1, 2>, 2> &
+    node_frame(const unsigned int a,
+               const unsigned int b = Layout::across_sigma) const
+    {
+      return meshes[b].frame[a];
+    }
+
+    /// Whether node @p a of mu_1 is a corner of Sigma inside the crack
+    /// (two contact components, see node_frame()).
+    bool
+    corner(const unsigned int a) const
+    {
+      return corner_nodes[a];
+    }
+
     /// The lumped mass D of node @p a of block @p b (with the masses of the
     /// end nodes merged into it, see row()).
     double
@@ -274,14 +302,38 @@ namespace bilayer
       return crack_nodes[a];
     }
 
-    /// The contact multiplier mu_c at node @p a of mu_1 (0 off the crack).
+    /**
+     * The contact multiplier mu_c at node @p a of mu_1 (0 off the crack):
+     * the normal component. At a crack corner, the component along
+     * node_normal() of the multiplier vector a nu_before + b nu_after (the
+     * compressive force the corner transmits; >= 0 with a, b >= 0).
+     */
     double
     contact_multiplier(const dealii::BlockVector<double> &mu,
                        const unsigned int                 a) const
     {
-      return crack_nodes[a] ? mu.block(Layout::across_sigma)(
-                                Layout::entry(a, Layout::normal)) :
-                              0.;
+      if (!crack_nodes[a])
+        return 0.;
+      const auto &m = mu.block(Layout::across_sigma);
+      if (!corner_nodes[a])
+        return m(Layout::entry(a, Layout::normal));
+      const auto &f = node_frame(a);
+      return (m(Layout::entry(a, 0)) * f[0] + m(Layout::entry(a, 1)) * f[1]) *
+             node_normal(a);
+    }
+
+    /**
+     * The components of mu_1 at node @p a that are contact components: the
+     * normal one at a crack node, both at a crack corner, none elsewhere.
+     */
+    std::vector<unsigned int>
+    contact_components(const unsigned int a) const
+    {
+      if (!crack_nodes[a])
+        return {};
+      if (corner_nodes[a])
+        return {Layout::tangential, Layout::normal};
+      return {Layout::normal};
     }
 
     /// Component @p c of the gluing multiplier mu_g at node @p a of mu_1
@@ -361,17 +413,19 @@ namespace bilayer
       std::vector<double> breakpoints, node_x, node_weight, node_mass;
       /// Unit normal of each node (weighted nodal normal).
       std::vector<dealii::Tensor<1, 2>> normal;
-      std::vector<unsigned int>         row;
-      std::array<bool, 2>               nodal  = {{true, true}};
-      unsigned int                      degree = 1;
-      std::shared_ptr<dealii::FE_Q<1>>  fe;
+      /// The frame of each node (node_frame()).
+      std::vector<std::array<dealii::Tensor<1, 2>, 2>> frame;
+      std::vector<unsigned int>                        row;
+      std::array<bool, 2>                              nodal  = {{true, true}};
+      unsigned int                                     degree = 1;
+      std::shared_ptr<dealii::FE_Q<1>>                 fe;
       /// psi_i = sum_k dual(i, k) phi_k on every segment.
       dealii::FullMatrix<double> dual;
     };
 
     PerBlock<Mesh> meshes;
     /// Per node of mu_1.
-    std::vector<bool>           crack_nodes;
+    std::vector<bool>           crack_nodes, corner_nodes;
     dealii::BlockVector<double> lower, upper;
   };
 } // namespace bilayer

@@ -157,17 +157,17 @@ namespace bilayer
     /**
      * The matrix with rows 2 r + c whose product with the dofs of
      * subproblem s gives sum_k weight_k * (component c of the trace at x_k),
-     * for the entries (r, x_k, weight_k) of @p points; the components are
-     * those in the frame (tangent, normal) of the unit normal
-     * @p normals[r] of row r (multiplier rows: their node's normal,
-     * MultiplierSpace::node_normal; Gauss points: the curve's), the tangent
-     * being the normal turned by -90 degrees.
+     * for the entries (r, x_k, weight_k) of @p points; component c is the
+     * trace's component along @p frames[r][c] (multiplier rows: their
+     * node's frame, MultiplierSpace::node_frame; the traces at the nodes
+     * and at the Gauss points: (tangent, normal) of the node's normal and
+     * of the curve's, the tangent being the normal turned by -90 degrees).
      */
     void
     build_point_matrix(
       const unsigned int                                           s,
       const std::vector<std::tuple<unsigned int, double, double>> &points,
-      const std::vector<dealii::Tensor<1, 2>>                     &normals,
+      const std::vector<std::array<dealii::Tensor<1, 2>, 2>>      &frames,
       PointMatrix &result) const;
 
     PerSubproblem<const ElasticSubproblem *> subproblems;
