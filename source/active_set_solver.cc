@@ -478,7 +478,7 @@ namespace bilayer
             curvature -= gradient; // F x
             mu       = previous_mu;
             gradient = previous_gradient;
-            BlockVector<double> best_step;
+            BlockVector<double> best_step, best_face;
             double              best_increase = 0;
             result.subdomain_solves +=
               projected_gradient_candidate(subproblems,
@@ -501,73 +501,83 @@ namespace bilayer
             const auto truncated = best_on_segment(gradient * newton_direction,
                                                    newton_curvature,
                                                    a_max);
-            // Reduced Newton step: the free component i that the Newton
-            // direction carries across a bound first is moved onto that
-            // bound and held there, the others J = I \ {i} solve
-            // F_JJ d_J = (D g)_J exactly (as a primal active-set method adds
-            // the blocking constraint); the best point of the segment
-            // mu + a d, a in [0, a_max] inside the box (F d: 4 solves).
-            BlockVector<double> reduced_mask(mask), face_step(mu);
-            face_step              = 0;
-            unsigned int n_clipped = 0, first = 0;
-            double       first_hit = std::numeric_limits<double>::infinity();
-            for (unsigned int i = 0; i < mu.size(); ++i)
-              if (mask(i) > 0 && newton_direction(i) != 0)
-                {
-                  const double bound =
-                    newton_direction(i) < 0 ? lower(i) : upper(i);
-                  const double hit = (bound - mu(i)) / newton_direction(i);
-                  if (hit < 1. && hit < first_hit)
-                    first_hit = hit, first = i, n_clipped = 1;
-                }
-            if (n_clipped > 0)
-              {
-                reduced_mask(first) = 0;
-                face_step(first) =
-                  (newton_direction(first) < 0 ? lower(first) : upper(first)) -
-                  mu(first);
-              }
+            // Reduced Newton steps (a primal active-set method from mu_k):
+            // the free component that the direction d carries across a
+            // bound first joins the set B of components moved onto their
+            // bound (d_B = bound - mu_B), and the others J = I \ B take
+            // the exact Newton step of that face,
+            //   F_JJ d_J = (D g - F d_B)_J,
+            // until d stays inside the box or max_reductions components are
+            // held; then the best point of the segment mu + a d, a in
+            // [0, a_max] inside the box (4 solves for F d_B and F d).
+            constexpr unsigned int max_reductions = 8;
+            BlockVector<double> reduced_mask(mask), face_step(mu), held(mu), Fd;
+            held                              = 0;
             std::pair<double, double> on_face = {0., 0.};
-            if (n_clipped > 0)
+            face_step                         = newton_direction;
+            for (unsigned int reduction = 0;; ++reduction)
               {
+                unsigned int first     = mu.size();
+                double       first_hit = 1.;
+                for (unsigned int i = 0; i < mu.size(); ++i)
+                  if (reduced_mask(i) > 0 && face_step(i) != 0)
+                    {
+                      const double bound =
+                        face_step(i) < 0 ? lower(i) : upper(i);
+                      const double hit = (bound - mu(i)) / face_step(i);
+                      if (hit < first_hit)
+                        first_hit = hit, first = i;
+                    }
+                if (reduction > 0)
+                  {
+                    // The line search of the face step of this reduction.
+                    apply_dual_operator(subproblems, interface, face_step, Fd);
+                    result.subdomain_solves += Layout::n_subproblems;
+                    const auto candidate = best_on_segment(gradient * face_step,
+                                                           face_step * Fd,
+                                                           first_hit);
+                    if (candidate.second > on_face.second)
+                      {
+                        on_face   = candidate;
+                        best_face = face_step;
+                      }
+                  }
+                if (first == mu.size() || reduction == max_reductions)
+                  break;
+                // Hold component first at the bound it crosses.
+                reduced_mask(first) = 0;
+                held(first) =
+                  (face_step(first) < 0 ? lower(first) : upper(first)) -
+                  mu(first);
+                BlockVector<double> rhs(gradient), face_delta;
+                apply_dual_operator(subproblems, interface, held, Fd);
+                result.subdomain_solves += Layout::n_subproblems;
+                rhs -= Fd;
+                rhs.scale(reduced_mask);
                 preconditioner.reinit(reduced_mask);
                 stale_preconditioner = true;
-                BlockVector<double> face_r(gradient), face_delta, Fd;
-                face_r.scale(reduced_mask);
                 const ConjugateGradientOutcome face_cg =
                   conjugate_gradients_on_free_set(
                     subproblems,
                     interface,
                     preconditioner,
                     reduced_mask,
-                    largest_jump(interface, face_r),
+                    largest_jump(interface, rhs),
                     0.1 * parameters.tolerance *
                       displacement_scale(interface, w),
                     parameters.max_inner_iterations,
-                    face_r,
+                    rhs,
                     face_delta);
                 result.subdomain_solves += face_cg.subdomain_solves;
                 result.preconditioner_solves += face_cg.preconditioner_solves;
                 result.linear_iterations += face_cg.iterations;
+                face_step = held;
                 face_step += face_delta;
-                double face_a_max = 1.;
-                for (unsigned int i = 0; i < mu.size(); ++i)
-                  if (reduced_mask(i) > 0 && face_step(i) < 0)
-                    face_a_max =
-                      std::min(face_a_max, (lower(i) - mu(i)) / face_step(i));
-                  else if (reduced_mask(i) > 0 && face_step(i) > 0)
-                    face_a_max =
-                      std::min(face_a_max, (upper(i) - mu(i)) / face_step(i));
-                apply_dual_operator(subproblems, interface, face_step, Fd);
-                result.subdomain_solves += Layout::n_subproblems;
-                on_face = best_on_segment(gradient * face_step,
-                                          face_step * Fd,
-                                          face_a_max);
               }
             const char *kind = "projected-gradient";
             if (on_face.second > best_increase)
               {
-                best_step = face_step;
+                best_step = best_face;
                 best_step *= on_face.first;
                 best_increase = on_face.second;
                 kind          = "reduced Newton";

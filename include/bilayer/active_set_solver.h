@@ -46,12 +46,13 @@ namespace bilayer
    * one that does not is rejected and replaced by the best of four steps
    * from the previous iterate (a projected-gradient step with exact line
    * search, the segment to the rejected iterate, the Newton direction up to
-   * its first bound, a reduced Newton step with the blocking multiplier
-   * held at its bound). The projected-gradient step bounds the increase
-   * from below by a positive function of the projected gradient, hence the
-   * iterates approach the solution set: docs/problem.md §4.3 gives the
-   * argument. Where no step is rejected the iterates are those of the plain
-   * method.
+   * its first bound, and reduced Newton steps: the exact Newton steps of
+   * the faces on which the blocking multipliers, one more at a time, are
+   * held at the bounds they cross, as in a primal active-set method). The
+   * projected-gradient step bounds the increase from below by a positive
+   * function of the projected gradient, hence the iterates approach the
+   * solution set: docs/problem.md §4.3 gives the argument. Where no step is
+   * rejected the iterates are those of the plain method.
    *
    * <h3>Linear solves</h3>
    * Conjugate gradients on F_II, preconditioned by the FetiPreconditioner
