@@ -302,7 +302,7 @@ namespace bilayer
         // step a delta (the Galerkin property of CG: delta^T F delta =
         // (D g)_I . delta_I). An inexact step that does not switches to
         // exact steps (above); an exact step that does not is rejected: the
-        // iterate returns to mu_k and takes the best of four steps from
+        // iterate returns to mu_k and takes the best of several steps from
         // there (below), one of them the projected-gradient step with exact
         // line search, which increases Phi by at least a positive function
         // of |P(mu + t D g) - mu|. So every step but one increases Phi by
@@ -342,8 +342,8 @@ namespace bilayer
                         << " changed the dual function by " << std::scientific
                         << std::setprecision(3) << change << " < "
                         << sufficient_increase << " x " << predicted_increase
-                        << " (its model): rejected, the best of four steps "
-                           "from step "
+                        << " (its model): rejected, the best of the "
+                           "replacement steps from step "
                         << k - 1 << " instead" << std::defaultfloat
                         << std::endl;
               }
@@ -415,7 +415,7 @@ namespace bilayer
                      "not increase the dual function enough)";
             return finish(msg.str());
           }
-        // No step of the four increases Phi at mu_k (to which the loop has
+        // No replacement step increases Phi at mu_k (to which the loop has
         // returned): mu_k is optimal to the round-off of Phi.
         if (no_ascent)
           {
@@ -464,15 +464,15 @@ namespace bilayer
         if (reject)
           {
             // Back to mu_k (its jumps: previous_gradient) and the best of
-            // four steps from there, each with its exact increase of Phi
-            // (a concave quadratic on each segment):
+            // four kinds of step from there, each with its exact increase of
+            // Phi (a concave quadratic on each segment):
             //  - the projected-gradient step, which needs F s (4 solves) and
             //    guarantees the increase of the convergence argument;
             //  - on the segment to the rejected iterate, x = mu_{k+1} - mu_k
             //    (x^T F x from the two gradients);
             //  - along the Newton direction d up to the first bound it meets
             //    (d^T F d from the conjugate gradients);
-            //  - a reduced Newton step (below).
+            //  - reduced Newton steps (below).
             BlockVector<double> x(mu), curvature(previous_gradient);
             x -= previous_mu;
             curvature -= gradient; // F x
@@ -504,12 +504,12 @@ namespace bilayer
             // Reduced Newton steps (a primal active-set method from mu_k):
             // the free component that the direction d carries across a
             // bound first joins the set B of components moved onto their
-            // bound (d_B = bound - mu_B), and the others J = I \ B take
+            // bound (d_H = bound - mu_H), and the others J = I \ H take
             // the exact Newton step of that face,
-            //   F_JJ d_J = (D g - F d_B)_J,
+            //   F_JJ d_J = (D g - F d_H)_J,
             // until d stays inside the box or max_reductions components are
             // held; then the best point of the segment mu + a d, a in
-            // [0, a_max] inside the box (4 solves for F d_B and F d).
+            // [0, a_max] inside the box (4 solves for F d_H and F d).
             constexpr unsigned int max_reductions = 8;
             BlockVector<double> reduced_mask(mask), face_step(mu), held(mu), Fd;
             held                              = 0;

@@ -43,8 +43,8 @@ namespace bilayer
    * step is known exactly from the jumps at both ends. A Newton step must
    * increase it by 1e-4 times the increase its conjugate gradients predict;
    * the first inexact step that does not switches to exact steps, an exact
-   * one that does not is rejected and replaced by the best of four steps
-   * from the previous iterate (a projected-gradient step with exact line
+   * one that does not is rejected and replaced by the best of four kinds of
+   * step from the previous iterate (a projected-gradient step with exact line
    * search, the segment to the rejected iterate, the Newton direction up to
    * its first bound, and reduced Newton steps: the exact Newton steps of
    * the faces on which the blocking multipliers, one more at a time, are
