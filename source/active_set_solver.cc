@@ -118,6 +118,93 @@ namespace bilayer
         }
       return outcome;
     }
+
+
+    /// F x = minus the weighted jumps of the homogeneous solutions with the
+    /// multiplier loads of x (4 subdomain solves).
+    void
+    apply_dual_operator(const Subproblems         &subproblems,
+                        const Interface           &interface,
+                        const BlockVector<double> &x,
+                        BlockVector<double>       &result)
+    {
+      Solutions homogeneous;
+      solve_homogeneous_subproblems(subproblems, interface, x, homogeneous);
+      interface.jumps(homogeneous, result);
+      interface.space().scale_by_weights(result);
+      result *= -1.;
+    }
+
+
+    /**
+     * The projected-gradient candidate of a rejected Newton step, with exact
+     * line search on the dual function Phi (concave quadratic, gradient
+     * @p gradient = D g at @p mu, Hessian -F): s = P(mu + t D g) - mu and
+     * @p step = a s with the maximiser a = min(1, D g . s / s^T F s) of Phi
+     * on the segment (which lies in the box). The length @p t is the
+     * Rayleigh quotient |x|^2 / x^T F x of the rejected Newton step x (a
+     * Barzilai-Borwein length), that of D g where it is not a positive
+     * number. Phi grows by the returned @p increase = a D g . s - a^2 / 2
+     * s^T F s, at least |s|^2 / (2 t) min(1, 1 / (t lambda_max(F))) (as
+     * D g . s >= |s|^2 / t, a property of the projection). Returns the
+     * subdomain solves.
+     */
+    unsigned long
+    projected_gradient_candidate(const Subproblems         &subproblems,
+                                 const Interface           &interface,
+                                 const BlockVector<double> &gradient,
+                                 double                     t,
+                                 const BlockVector<double> &mu,
+                                 BlockVector<double>       &step,
+                                 double                    &increase)
+    {
+      unsigned long       solves = 0;
+      BlockVector<double> Fs;
+      step     = gradient;
+      increase = 0;
+      interface.space().restrict_to_free(step);
+      if (!(t > 0) || !std::isfinite(t))
+        {
+          apply_dual_operator(subproblems, interface, step, Fs);
+          solves += Layout::n_subproblems;
+          t = (step * step) / (step * Fs);
+          if (!(t > 0) || !std::isfinite(t))
+            {
+              step = 0; // D g = 0 on the free components
+              return solves;
+            }
+        }
+      step.sadd(t, 1., mu);
+      interface.space().project(step);
+      step -= mu;
+      apply_dual_operator(subproblems, interface, step, Fs);
+      solves += Layout::n_subproblems;
+      const double slope = gradient * step, curvature = step * Fs;
+      const double a = curvature > 0 ? std::min(1., slope / curvature) : 1.;
+      if (!(a > 0))
+        {
+          step = 0;
+          return solves;
+        }
+      increase = a * slope - 0.5 * a * a * curvature;
+      step *= a;
+      return solves;
+    }
+
+
+    /// The maximiser a in [0, a_max] of Phi(mu + a x) - Phi(mu) =
+    /// a slope - a^2 / 2 curvature, and that increase.
+    std::pair<double, double>
+    best_on_segment(const double slope,
+                    const double curvature,
+                    const double a_max)
+    {
+      if (!(slope > 0) || !(a_max > 0))
+        return {0., 0.};
+      const double a =
+        curvature > 0 ? std::min(a_max, slope / curvature) : a_max;
+      return {a, a * slope - 0.5 * a * a * curvature};
+    }
   } // namespace
 
 
@@ -126,6 +213,14 @@ namespace bilayer
                                    const ConditionalOStream &pcout)
     : OuterSolver(parameters, output, pcout)
   {}
+
+
+  namespace
+  {
+    /// A Newton step must increase the dual function by this fraction of
+    /// the increase its quadratic model predicts (Armijo's constant).
+    constexpr double sufficient_increase = 1e-4;
+  } // namespace
 
 
   SolverResult
@@ -168,6 +263,15 @@ namespace bilayer
     unsigned int inner_iterations = 0, n_cycling = 0, n_stalled = 0;
     bool         exact_steps  = false;
     double       best_settled = std::numeric_limits<double>::infinity();
+    // The globalisation: the increase of Phi that the conjugate gradients
+    // predict for the last Newton step (0 after a replacement step, which is
+    // not tested), that step's direction and its curvature d^T F d, and the
+    // number of rejected Newton steps.
+    double              predicted_increase = 0, newton_curvature = 0;
+    BlockVector<double> newton_direction;
+    unsigned int        n_replaced     = 0;
+    bool                after_fallback = false, stale_preconditioner = false,
+         no_ascent = false;
     interface.space().project(mu);
 
     for (unsigned int k = 0;; ++k)
@@ -191,48 +295,87 @@ namespace bilayer
         // ill-conditioned F_II can decrease it and then cycle through a
         // chain of active sets (seen with Young's moduli 5e5 apart): after
         // the first decrease every following step is solved exactly.
+        //
+        // Sufficient increase (globalisation): a Newton step must increase
+        // Phi by at least sufficient_increase times the increase predicted
+        // by its conjugate gradients, a (1 - a / 2) (D g)_I . delta_I for a
+        // step a delta (the Galerkin property of CG: delta^T F delta =
+        // (D g)_I . delta_I). An inexact step that does not switches to
+        // exact steps (above); an exact step that does not is rejected: the
+        // iterate returns to mu_k and takes the best of several steps from
+        // there (below), one of them the projected-gradient step with exact
+        // line search, which increases Phi by at least a positive function
+        // of |P(mu + t D g) - mu|. So every step but one increases Phi by
+        // that much, and the measure tends to zero: docs/problem.md §4.3.
         gradient = g;
         interface.space().scale_by_weights(gradient);
-        if (k > 0 && !exact_steps && kkt.value() > parameters.tolerance)
+        bool reject = false;
+        if (k > 0 && predicted_increase > 0 && std::isfinite(kkt.value()) &&
+            kkt.value() > parameters.tolerance)
           {
             BlockVector<double> step(mu);
             step -= previous_mu;
             const double before = step * previous_gradient,
                          after  = step * gradient;
             const double change = 0.5 * (before + after);
-            if (change < -1e-12 * (std::abs(before) + std::abs(after)))
+            const double round_off =
+              1e-12 * (std::abs(before) + std::abs(after));
+            const bool sufficient =
+              change >= sufficient_increase * predicted_increase - round_off;
+            if (!exact_steps && !sufficient)
               {
                 exact_steps = true;
                 if (output.progress_interval > 0)
-                  pcout << "    the inexact Newton step decreased the dual "
-                           "function by "
-                        << std::scientific << std::setprecision(3) << -change
+                  pcout << "    the inexact Newton step "
+                        << (change < 0 ? "decreased" : "increased")
+                        << " the dual function by " << std::scientific
+                        << std::setprecision(3) << std::abs(change)
                         << std::defaultfloat
                         << ": the following steps are solved exactly"
                         << std::endl;
               }
+            else if (!sufficient)
+              {
+                reject = true;
+                if (output.progress_interval > 0)
+                  pcout << "    Newton step " << k
+                        << " changed the dual function by " << std::scientific
+                        << std::setprecision(3) << change << " < "
+                        << sufficient_increase << " x " << predicted_increase
+                        << " (its model): rejected, the best of the "
+                           "replacement steps from step "
+                        << k - 1 << " instead" << std::defaultfloat
+                        << std::endl;
+              }
           }
 
-        // The active set at mu: components held at a bound.
-        older_mask = previous_mask;
-        previous_mask.swap(mask);
+        // The active set at mu: components held at a bound (at a rejected
+        // iterate the sets stay those of mu_k, to which it returns).
+        if (!reject)
+          {
+            older_mask = previous_mask;
+            previous_mask.swap(mask);
+          }
         unsigned int n_active = 0, n_changed = 0;
         for (unsigned int i = 0; i < mu.size(); ++i)
           {
             const bool held = !(lower(i) < upper(i)) ||
                               (mu(i) <= lower(i) && g(i) <= 0) ||
                               (mu(i) >= upper(i) && g(i) >= 0);
-            mask(i) = held ? 0. : 1.;
             if (held && lower(i) < upper(i))
               ++n_active;
-            n_changed += (mask(i) != previous_mask(i));
+            const double free = held ? 0. : 1.;
+            n_changed += (free != (reject ? mask(i) : previous_mask(i)));
+            if (!reject)
+              mask(i) = free;
           }
-        const bool settled = k > 0 && n_changed == 0;
+        const bool settled =
+          !reject && !after_fallback && k > 0 && n_changed == 0;
         // Cycling: the active set of two steps ago again (the inexact
         // steps of a changing set can alternate between two sets): the
         // next steps are solved as if the set had settled, and from the
         // third such return on they are halved (damped).
-        bool cycling = k > 1 && n_changed > 0;
+        bool cycling = !reject && k > 1 && n_changed > 0;
         for (unsigned int i = 0; cycling && i < mask.size(); ++i)
           cycling = mask(i) == older_mask(i);
         n_cycling += cycling;
@@ -266,6 +409,25 @@ namespace bilayer
                 << " <= " << parameters.tolerance << " after " << k
                 << " Newton steps and " << result.linear_iterations
                 << " conjugate-gradient iterations";
+            if (n_replaced > 0)
+              msg << " (" << n_replaced
+                  << " of them in place of rejected Newton steps that did "
+                     "not increase the dual function enough)";
+            return finish(msg.str());
+          }
+        // No replacement step increases Phi at mu_k (to which the loop has
+        // returned): mu_k is optimal to the round-off of Phi.
+        if (no_ascent)
+          {
+            std::ostringstream msg;
+            msg << "no step from Newton step " << k
+                << " increases the dual function (the Newton step was "
+                   "rejected, the projected-gradient step and the others "
+                   "gain nothing) with KKT residual "
+                << std::setprecision(3) << kkt.value() << " > Solver/Tolerance "
+                << parameters.tolerance
+                << ": the tolerance is below the round-off of this "
+                   "ill-conditioned problem; raise Solver/Tolerance";
             return finish(msg.str());
           }
         // Round-off floor: with the active set settled every step is solved
@@ -286,7 +448,7 @@ namespace bilayer
                    "stretched cells); raise Solver/Tolerance";
             return finish(msg.str());
           }
-        else if (!settled)
+        else if (!settled && !reject)
           best_settled = std::numeric_limits<double>::infinity(), n_stalled = 0;
         if (k >= parameters.max_newton_iterations)
           {
@@ -299,11 +461,162 @@ namespace bilayer
             return finish(msg.str());
           }
 
+        if (reject)
+          {
+            // Back to mu_k (its jumps: previous_gradient) and the best of
+            // four kinds of step from there, each with its exact increase of
+            // Phi (a concave quadratic on each segment):
+            //  - the projected-gradient step, which needs F s (4 solves) and
+            //    guarantees the increase of the convergence argument;
+            //  - on the segment to the rejected iterate, x = mu_{k+1} - mu_k
+            //    (x^T F x from the two gradients);
+            //  - along the Newton direction d up to the first bound it meets
+            //    (d^T F d from the conjugate gradients);
+            //  - reduced Newton steps (below).
+            BlockVector<double> x(mu), curvature(previous_gradient);
+            x -= previous_mu;
+            curvature -= gradient; // F x
+            mu       = previous_mu;
+            gradient = previous_gradient;
+            BlockVector<double> best_step, best_face;
+            double              best_increase = 0;
+            result.subdomain_solves +=
+              projected_gradient_candidate(subproblems,
+                                           interface,
+                                           gradient,
+                                           (x * x) / (x * curvature),
+                                           mu,
+                                           best_step,
+                                           best_increase);
+            const auto on_segment =
+              best_on_segment(gradient * x, x * curvature, 1.);
+            double a_max = 1.;
+            for (unsigned int i = 0; i < mu.size(); ++i)
+              if (newton_direction(i) < 0)
+                a_max =
+                  std::min(a_max, (lower(i) - mu(i)) / newton_direction(i));
+              else if (newton_direction(i) > 0)
+                a_max =
+                  std::min(a_max, (upper(i) - mu(i)) / newton_direction(i));
+            const auto truncated = best_on_segment(gradient * newton_direction,
+                                                   newton_curvature,
+                                                   a_max);
+            // Reduced Newton steps (a primal active-set method from mu_k):
+            // the free component that the direction d carries across a
+            // bound first joins the set B of components moved onto their
+            // bound (d_H = bound - mu_H), and the others J = I \ H take
+            // the exact Newton step of that face,
+            //   F_JJ d_J = (D g - F d_H)_J,
+            // until d stays inside the box or max_reductions components are
+            // held; then the best point of the segment mu + a d, a in
+            // [0, a_max] inside the box (4 solves for F d_H and F d).
+            constexpr unsigned int max_reductions = 8;
+            BlockVector<double> reduced_mask(mask), face_step(mu), held(mu), Fd;
+            held                              = 0;
+            std::pair<double, double> on_face = {0., 0.};
+            face_step                         = newton_direction;
+            for (unsigned int reduction = 0;; ++reduction)
+              {
+                unsigned int first     = mu.size();
+                double       first_hit = 1.;
+                for (unsigned int i = 0; i < mu.size(); ++i)
+                  if (reduced_mask(i) > 0 && face_step(i) != 0)
+                    {
+                      const double bound =
+                        face_step(i) < 0 ? lower(i) : upper(i);
+                      const double hit = (bound - mu(i)) / face_step(i);
+                      if (hit < first_hit)
+                        first_hit = hit, first = i;
+                    }
+                if (reduction > 0)
+                  {
+                    // The line search of the face step of this reduction.
+                    apply_dual_operator(subproblems, interface, face_step, Fd);
+                    result.subdomain_solves += Layout::n_subproblems;
+                    const auto candidate = best_on_segment(gradient * face_step,
+                                                           face_step * Fd,
+                                                           first_hit);
+                    if (candidate.second > on_face.second)
+                      {
+                        on_face   = candidate;
+                        best_face = face_step;
+                      }
+                  }
+                if (first == mu.size() || reduction == max_reductions)
+                  break;
+                // Hold component first at the bound it crosses.
+                reduced_mask(first) = 0;
+                held(first) =
+                  (face_step(first) < 0 ? lower(first) : upper(first)) -
+                  mu(first);
+                BlockVector<double> rhs(gradient), face_delta;
+                apply_dual_operator(subproblems, interface, held, Fd);
+                result.subdomain_solves += Layout::n_subproblems;
+                rhs -= Fd;
+                rhs.scale(reduced_mask);
+                preconditioner.reinit(reduced_mask);
+                stale_preconditioner = true;
+                const ConjugateGradientOutcome face_cg =
+                  conjugate_gradients_on_free_set(
+                    subproblems,
+                    interface,
+                    preconditioner,
+                    reduced_mask,
+                    largest_jump(interface, rhs),
+                    0.1 * parameters.tolerance *
+                      displacement_scale(interface, w),
+                    parameters.max_inner_iterations,
+                    rhs,
+                    face_delta);
+                result.subdomain_solves += face_cg.subdomain_solves;
+                result.preconditioner_solves += face_cg.preconditioner_solves;
+                result.linear_iterations += face_cg.iterations;
+                face_step = held;
+                face_step += face_delta;
+              }
+            const char *kind = "projected-gradient";
+            if (on_face.second > best_increase)
+              {
+                best_step = best_face;
+                best_step *= on_face.first;
+                best_increase = on_face.second;
+                kind          = "reduced Newton";
+              }
+            if (on_segment.second > best_increase &&
+                on_segment.second >= truncated.second)
+              {
+                best_step = x;
+                best_step *= on_segment.first;
+                best_increase = on_segment.second;
+                kind          = "segment";
+              }
+            else if (truncated.second > best_increase)
+              {
+                best_step = newton_direction;
+                best_step *= truncated.first;
+                best_increase = truncated.second;
+                kind          = "truncated Newton";
+              }
+            no_ascent = !(best_increase > 0);
+            if (output.progress_interval > 0)
+              pcout << "    " << kind << " step from step " << k - 1
+                    << ": dual function +" << std::scientific
+                    << std::setprecision(3) << best_increase
+                    << std::defaultfloat << std::endl;
+            mu += best_step;
+            interface.space().project(mu);
+            ++n_replaced;
+            predicted_increase = 0;
+            after_fallback     = true;
+            continue;
+          }
+        after_fallback = false;
+
         // Newton step: F_II delta_I = (D g)_I by preconditioned conjugate
         // gradients from delta = 0, to a relative reduction of the largest
         // jump while the active set changes, else to the tolerance.
-        if (k == 0 || n_changed > 0)
-          preconditioner.reinit(mask);
+        if (k == 0 || n_changed > 0 || stale_preconditioner)
+          preconditioner.reinit(mask), stale_preconditioner = false;
         r = gradient;
         r.scale(mask);
         const double scale  = displacement_scale(interface, w);
@@ -335,9 +648,20 @@ namespace bilayer
             return finish(msg.str());
           }
         result.linear_iterations += inner_iterations;
-        previous_mu       = mu;
-        previous_gradient = gradient;
-        mu.add(cycling && n_cycling > 2 ? 0.5 : 1., delta);
+        previous_mu         = mu;
+        previous_gradient   = gradient;
+        const double length = cycling && n_cycling > 2 ? 0.5 : 1.;
+        // r0 . delta with r0 = (D g)_I = the masked gradient.
+        BlockVector<double> masked_gradient(gradient);
+        masked_gradient.scale(mask);
+        predicted_increase =
+          length * (1. - 0.5 * length) * (masked_gradient * delta);
+        // The step direction and its curvature d^T F d (F delta = r0 - r).
+        newton_direction = delta;
+        newton_direction *= length;
+        masked_gradient -= r;
+        newton_curvature = length * length * (delta * masked_gradient);
+        mu.add(length, delta);
         interface.space().project(mu);
       }
   }

@@ -38,6 +38,22 @@ namespace bilayer
    * at every iterate, so the reported solution and its residuals belong
    * together.
    *
+   * <h3>Globalisation</h3>
+   * The dual function Phi = -q is a concave quadratic; its change over a
+   * step is known exactly from the jumps at both ends. A Newton step must
+   * increase it by 1e-4 times the increase its conjugate gradients predict;
+   * the first inexact step that does not switches to exact steps, an exact
+   * one that does not is rejected and replaced by the best of four kinds of
+   * step from the previous iterate (a projected-gradient step with exact line
+   * search, the segment to the rejected iterate, the Newton direction up to
+   * its first bound, and reduced Newton steps: the exact Newton steps of
+   * the faces on which the blocking multipliers, one more at a time, are
+   * held at the bounds they cross, as in a primal active-set method). The
+   * projected-gradient step bounds the increase from below by a positive
+   * function of the projected gradient, hence the iterates approach the
+   * solution set: docs/problem.md §4.3 gives the argument. Where no step is
+   * rejected the iterates are those of the plain method.
+   *
    * <h3>Linear solves</h3>
    * Conjugate gradients on F_II, preconditioned by the FetiPreconditioner
    * of Solver/Active set/Preconditioner (dirichlet, lumped or none), which
