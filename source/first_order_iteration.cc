@@ -202,21 +202,9 @@ namespace bilayer
                         const double               increment,
                         const BlockVector<double> &next)
   {
-    if (!std::isfinite(increment) || (k >= 1 && !std::isfinite(value)))
-      {
-        if (k == 0)
-          return "the first subdomain solutions or jumps are not finite: the "
-                 "loads and moduli (Loads, Materials) give displacements "
-                 "beyond the range of double; state them in other units";
-        const std::string  advice = safe_step_advice();
-        std::ostringstream msg;
-        msg << "diverged: the iterates are no longer finite at iteration " << k;
-        if (advice.empty() || advice[0] == ';')
-          msg << " (reduce Solver/Uzawa step theta" << advice << ")";
-        else
-          msg << "; theta = " << theta << advice;
-        return msg.str();
-      }
+    const std::string finite = check_finite(k, value, increment);
+    if (!finite.empty())
+      return finite;
     // Increments at round-off level of the multipliers do not count.
     if (growth.add(increment) &&
         increment > 1e-12 * interface.space().weighted_norm(next))
@@ -235,6 +223,30 @@ namespace bilayer
               << advice;
         else
           msg << advice;
+        return msg.str();
+      }
+    return std::string();
+  }
+
+
+  std::string
+  DivergenceTest::check_finite(const unsigned int k,
+                               const double       value,
+                               const double       increment) const
+  {
+    if (!std::isfinite(increment) || (k >= 1 && !std::isfinite(value)))
+      {
+        if (k == 0)
+          return "the first subdomain solutions or jumps are not finite: the "
+                 "loads and moduli (Loads, Materials) give displacements "
+                 "beyond the range of double; state them in other units";
+        const std::string  advice = safe_step_advice();
+        std::ostringstream msg;
+        msg << "diverged: the iterates are no longer finite at iteration " << k;
+        if (advice.empty() || advice[0] == ';')
+          msg << " (reduce Solver/Uzawa step theta" << advice << ")";
+        else
+          msg << "; theta = " << theta << advice;
         return msg.str();
       }
     return std::string();

@@ -858,6 +858,18 @@ namespace bilayer
                       Patterns::Double(0, 1),
                       "theta = fraction * 2 / lambda_max for 'auto' [-], in "
                       "(0, 1).");
+    prm.declare_entry("Auto theta steps",
+                      "adaptive",
+                      Patterns::Selection("adaptive|constant"),
+                      "Steps of Method = uzawa with theta = auto [-]: "
+                      "adaptive (projected gradient ascent on the dual with "
+                      "Barzilai-Borwein steps, the first one theta = auto, "
+                      "and a non-monotone line search along the projected "
+                      "direction, no extra subdomain solves; it needs far "
+                      "fewer iterations under material contrast and on "
+                      "fine or graded meshes) or constant (the step theta = "
+                      "auto in every iteration). A given theta is always "
+                      "constant.");
     prm.declare_entry("Spectrum estimate iterations",
                       "30",
                       Patterns::Integer(1, 1000),
@@ -998,6 +1010,7 @@ namespace bilayer
                 ExcMessage("Solver/Auto theta fraction must lie in (0, 1), "
                            "got " +
                            prm.get("Auto theta fraction")));
+    adaptive_auto_steps = prm.get("Auto theta steps") == "adaptive";
     spectrum_iterations = prm.get_integer("Spectrum estimate iterations");
     dual_spectrum_steps = prm.get_integer("Dual spectrum steps");
     max_iterations      = prm.get_integer("Maximum iterations");

@@ -196,6 +196,18 @@ namespace bilayer
           const double                       increment,
           const dealii::BlockVector<double> &next);
 
+    /**
+     * The first part of check(): why the iteration diverged if the
+     * increment, or the stopping value at k >= 1, is not finite, else an
+     * empty string. The iterations whose line search keeps the dual
+     * objective from decreasing (Uzawa with adaptive steps) need no more:
+     * their increments may grow and shrink with the step.
+     */
+    std::string
+    check_finite(const unsigned int k,
+                 const double       value,
+                 const double       increment) const;
+
   private:
     /**
      * "; estimated safe step: theta <= ... (...)", the step of theta = auto

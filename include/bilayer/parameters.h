@@ -393,8 +393,11 @@ namespace bilayer
     /// The Uzawa step; ignored when auto_theta is set.
     double theta = 65.0;
     /// theta = auto_theta_fraction * 2 / lambda_max(S), S estimated.
-    bool         auto_theta          = false;
-    double       auto_theta_fraction = 0.9;
+    bool   auto_theta          = false;
+    double auto_theta_fraction = 0.9;
+    /// Method = uzawa with theta = auto: Barzilai-Borwein steps with a
+    /// non-monotone line search (UzawaSolver) instead of the constant step.
+    bool         adaptive_auto_steps = true;
     unsigned int spectrum_iterations = 30;
     /// Lanczos steps for the extreme eigenvalues of the dual operator
     /// reported per cycle (0: none).

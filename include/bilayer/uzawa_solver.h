@@ -43,6 +43,26 @@ namespace bilayer
             Solutions                   &w,
             SolverResult                &result) const override;
 
+    /**
+     * theta = auto with Solver/Auto theta steps = adaptive: the spectral
+     * projected gradient iteration on the dual problem, mu^{k+1} = mu^k +
+     * t_k d^k, d^k = P(mu^k + alpha_k g^k) - mu^k, alpha_0 = theta = auto,
+     * alpha_k the Barzilai-Borwein step <s, S s>_D / <S s, S s>_D of the
+     * last change s of the multipliers, t_k = 1 or the maximiser of the dual
+     * objective on the segment (non-monotone line search). Every iterate is
+     * feasible (a convex combination of feasible points), so the
+     * projection still defines the iteration; four subdomain solves per
+     * iteration (at mu^k + d^k, the solutions being affine in the
+     * multipliers). The line search keeps the dual objective above its
+     * lowest recent value, so only non-finite iterates count as divergence.
+     */
+    void
+    iterate_adaptive(const Subproblems           &subproblems,
+                     const Interface             &interface,
+                     dealii::BlockVector<double> &mu,
+                     Solutions                   &w,
+                     SolverResult                &result) const;
+
     /// 2 / lambda_max of S restricted to the multipliers that the projected
     /// step from the solution @p mu with jumps @p g does not hold at a bound.
     void
