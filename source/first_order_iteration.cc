@@ -205,9 +205,21 @@ namespace bilayer
     const std::string finite = check_finite(k, value, increment);
     if (!finite.empty())
       return finite;
-    // Increments at round-off level of the multipliers do not count.
+    if (k >= 1 && increment < smallest_increment)
+      {
+        smallest_increment = increment;
+        value_at_smallest  = value;
+      }
+    // Increments at round-off level of the multipliers do not count, nor
+    // do increments that grew while a scale-invariant stopping value (kkt,
+    // relative) fell to half; the paper's ratios of solution norms fall
+    // under divergence too.
+    const bool scale_invariant =
+      parameters.stopping_rule == StoppingRule::kkt ||
+      parameters.stopping_rule == StoppingRule::relative;
     if (growth.add(increment) &&
-        increment > 1e-12 * interface.space().weighted_norm(next))
+        increment > 1e-12 * interface.space().weighted_norm(next) &&
+        !(scale_invariant && value <= 0.5 * value_at_smallest))
       {
         std::ostringstream msg;
         msg << "diverged at iteration " << k

@@ -11,6 +11,7 @@
 #include <bilayer/subdomain_solves.h>
 
 #include <deque>
+#include <limits>
 #include <string>
 
 /**
@@ -161,9 +162,16 @@ namespace bilayer
    * factor and the window of the method): for theta below the threshold
    * 2 / lambda_max(D^{-1} C A^{-1} C^T) the projected Uzawa step is
    * non-expansive, so its increments cannot grow; the accelerated iteration
-   * is not monotone, hence the window. Its message ends with the step that
-   * theta = auto would take (safe_step_advice()), unless theta is already
-   * that small.
+   * is not monotone, hence the window. A growth of the increments over a
+   * span of iterations in which a scale-invariant stopping value
+   * (Solver/Stopping rule = kkt or relative) fell to half or less
+   * (since the iteration of the smallest increment) is no divergence: on a
+   * nearly singular dual operator the iterates of a converging accelerated
+   * iteration drift along a flat direction with growing momentum while the
+   * stopping value keeps falling, with plateaus of many thousand
+   * iterations; a diverging iteration's relative stopping value does not
+   * fall. Its message ends with the step that theta = auto would take
+   * (safe_step_advice()), unless theta is already that small.
    */
   class DivergenceTest
   {
@@ -224,6 +232,10 @@ namespace bilayer
     const Interface        &interface;
     const double            theta, lambda_max;
     GrowthWindow            growth;
+    /// The smallest increment from iteration 1 on and the stopping value
+    /// at its iteration.
+    double smallest_increment = std::numeric_limits<double>::infinity();
+    double value_at_smallest  = std::numeric_limits<double>::infinity();
   };
   /**
    * The frame of the two first-order iterations: theta = auto (the power
