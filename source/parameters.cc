@@ -776,9 +776,10 @@ namespace bilayer
                       "true",
                       Patterns::Bool(),
                       "true: compute the energy release rate G = -dPi/dl at "
-                      "every crack tip of every cycle (both layers, and each "
-                      "layer's share) by the domain integral of "
-                      "docs/fracture.md [stress x length].");
+                      "every crack tip of every cycle (of both layers "
+                      "together; each layer's share is not a domain "
+                      "integral: scripts/crack_growth) by the domain "
+                      "integral of docs/fracture.md [stress x length].");
     prm.declare_entry("Support radius",
                       "0",
                       Patterns::Double(0),
