@@ -5,8 +5,9 @@
 // there by 20, 45 or 90 degrees (tests/corner_contact_TURN.msh, matching
 // Q1 traces, 8 cells along Sigma, refined globally 3 times; twice for the
 // opening load). Omega- is clamped at the bottom, both subdomains on the
-// left; the top of Omega+ is pressed and sheared (traction (q/2, -q)): the crack closes and its faces
-// slide over the corner; pulled up (traction (q/2, q)) it opens.
+// left; the top of Omega+ is pressed and sheared (traction (q/2, -q)): the
+// crack closes and its faces slide over the corner; pulled up (traction (q/2,
+// q)) it opens.
 //
 // At a corner of Sigma the constraint [u].nu >= 0 holds against the
 // normals of both pieces that meet there. With the multiplier in the cone
