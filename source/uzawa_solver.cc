@@ -62,27 +62,18 @@ namespace bilayer
                                       last_increment,
                                       result);
 
-        if (value < parameters.tolerance)
-          {
-            result.converged = true;
-            if (parameters.auto_theta)
-              threshold_at_solution(subproblems, interface, mu, g, result);
-            std::ostringstream msg;
-            msg << "stopping rule met after " << k << " iterations";
-            result.message = msg.str();
-            return;
-          }
-        if (k >= parameters.max_iterations)
-          {
-            result.message = iteration_limit_message(
-              parameters,
-              value,
-              "; first-order iterations slow down as the dual "
-              "operator's condition number grows (fine meshes, "
-              "material contrast): Solver/Method = accelerated or "
-              "active set");
-            return;
-          }
+        if (stopped(k,
+                    value,
+                    subproblems,
+                    interface,
+                    mu,
+                    g,
+                    "; first-order iterations slow down as the dual "
+                    "operator's condition number grows (fine meshes, "
+                    "material contrast): Solver/Method = accelerated or "
+                    "active set",
+                    result))
+          return;
 
         // Step 3: mu^{k+1} = P(mu^k + theta g^k).
         projected_step(interface, theta, mu, g, mu_new);
@@ -151,25 +142,17 @@ namespace bilayer
                            last_increment,
                            result);
 
-        if (value < parameters.tolerance)
-          {
-            result.converged = true;
-            threshold_at_solution(subproblems, interface, mu, g, result);
-            std::ostringstream msg;
-            msg << "stopping rule met after " << k << " iterations";
-            result.message = msg.str();
-            return;
-          }
-        if (k >= parameters.max_iterations)
-          {
-            result.message = iteration_limit_message(
-              parameters,
-              value,
-              "; first-order iterations slow down as the dual "
-              "operator's condition number grows (fine meshes, "
-              "material contrast): Solver/Method = active set");
-            return;
-          }
+        if (stopped(k,
+                    value,
+                    subproblems,
+                    interface,
+                    mu,
+                    g,
+                    "; first-order iterations slow down as the dual "
+                    "operator's condition number grows (fine meshes, "
+                    "material contrast): Solver/Method = active set",
+                    result))
+          return;
 
         // The projected direction d = P(mu + alpha g) - mu, an ascent
         // direction: <g, d>_D >= |d|_D^2 / alpha.
@@ -283,5 +266,35 @@ namespace bilayer
              "at the solution: "
           << std::setprecision(6) << result.threshold_at_solution
           << std::defaultfloat << std::endl;
+  }
+
+
+  bool
+  UzawaSolver::stopped(const unsigned int         k,
+                       const double               value,
+                       const Subproblems         &subproblems,
+                       const Interface           &interface,
+                       const BlockVector<double> &mu,
+                       const BlockVector<double> &g,
+                       const std::string         &limit_advice,
+                       SolverResult              &result) const
+  {
+    if (value < parameters.tolerance)
+      {
+        result.converged = true;
+        if (parameters.auto_theta)
+          threshold_at_solution(subproblems, interface, mu, g, result);
+        std::ostringstream msg;
+        msg << "stopping rule met after " << k << " iterations";
+        result.message = msg.str();
+        return true;
+      }
+    if (k >= parameters.max_iterations)
+      {
+        result.message =
+          iteration_limit_message(parameters, value, limit_advice);
+        return true;
+      }
+    return false;
   }
 } // namespace bilayer

@@ -71,6 +71,22 @@ namespace bilayer
                           const dealii::BlockVector<double> &mu,
                           const dealii::BlockVector<double> &g,
                           SolverResult                      &result) const;
+
+    /**
+     * Whether the iteration ends at step @p k with stopping value @p value:
+     * the stopping rule met (then with theta = auto the threshold at the
+     * solution) or the iteration limit reached (its message ends with
+     * @p limit_advice); the message in @p result.
+     */
+    bool
+    stopped(const unsigned int                 k,
+            const double                       value,
+            const Subproblems                 &subproblems,
+            const Interface                   &interface,
+            const dealii::BlockVector<double> &mu,
+            const dealii::BlockVector<double> &g,
+            const std::string                 &limit_advice,
+            SolverResult                      &result) const;
   };
 } // namespace bilayer
 
