@@ -122,20 +122,6 @@ def vtk_arrays(path, tags):
             for a in section if a.get("Name")}
 
 
-def header_names(line, known):
-    """The column names of a header line whose names may hold spaces: the
-    line cut into the README's names (longest first); what is left over is
-    returned as names of its own (words), so that a missing one is seen."""
-    line = tips(line)
-    found = []
-    for name in sorted(known, key=len, reverse=True):
-        pattern = r"(?<!\S)" + re.escape(name) + r"(?!\S)"
-        if re.search(pattern, line):
-            found.append(name)
-            line = re.sub(pattern, " ", line)
-    return found + line.split()
-
-
 def main(argv):
     if len(argv) != 3:
         print(__doc__.split("\n")[-4], file=sys.stderr)
@@ -177,7 +163,7 @@ def main(argv):
         elif f == "summary.json":
             with open(p) as h:
                 summary = json.load(h)
-            add("summary.json", [k for k in json_keys(summary) if k != "cycles"])
+            add("summary.json", json_keys({k: v for k, v in summary.items() if k != "cycles"}))
             for cycle in summary["cycles"]:
                 add("summary.json", json_keys(cycle))
         elif f == "table.csv":
@@ -185,14 +171,15 @@ def main(argv):
                 add("table.csv", {tips(k) for k in h.readline().strip().split(",")})
         elif f == "table.txt":
             with open(p) as h:
-                add("table.txt", header_names(h.readline(), tables.get("table.txt", set())))
+                # "| cycle | P | ... | time [s] | G tip 1 |": cells between bars
+                add("table.txt", [tips(c.strip()) for c in h.readline().strip().strip("|").split("|")])
         elif f == "table.tex":
             with open(p) as h:
                 tex = h.read()
             # the header row: the first row of cells ("a & b & ... \\")
             row = next(l for l in tex.split("\n") if "&" in l)
-            add("table.txt", [tips(c.strip().rstrip("\\").strip().strip("$"))
-                              for c in row.split("&")])
+            row = row.replace("\\hline", "").replace("\\\\", "")
+            add("table.txt", [tips(c.strip().strip("$")) for c in row.split("&")])
         elif f == ".bilayer-output":
             kinds = tables.get(".bilayer-output", set())
             with open(p) as h:
