@@ -404,7 +404,18 @@ def render(args):
         line1 += ": %s dofs, energy %s" % (r.get("dofs", "?"), "%.6g" % r["energy"] if "energy" in r else "?")
         if r.get("converged") is False:
             line1 += " (NOT converged)"
-    title = Text(registrationName="title", Text=line1)
+    def title_lines(side, wrapped):
+        if len(present) == 1:
+            line2 = "layer 1 (u) only (one layer), warped by the displacement x %g" % scale
+        else:
+            line2 = "layer 1 (u) %s, layer 2 (v) %s; both warped by the displacement x %g" % (
+                "left" if side else "above", "right" if side else "below", scale)
+        if wrapped:  # a narrow picture: more, shorter lines
+            return line1.replace(": ", ":\n") + "\n" + line2.replace("; ", ";\n")
+        return line1 + "\n" + line2
+
+    wrapped = False
+    title = Text(registrationName="title", Text=title_lines(False, wrapped))
     tdisplay = Show(title, view)
     tdisplay.WindowLocation = "Upper Center"
     tdisplay.Color = [0, 0, 0]
@@ -435,6 +446,10 @@ def render(args):
         need = sum(r_[3] - r_[1] for r_ in relative) + (n_rect[3] - n_rect[1]) + gap * len(column)
         avail = height - top_margin - pad
         fits_w = (t_rect[2] - t_rect[0] <= width - 2 * pad) and col_w <= 0.45 * width
+        if t_rect[2] - t_rect[0] > width - 2 * pad and not wrapped and attempt >= 2:
+            wrapped = True
+            title.Text = title_lines(False, wrapped)
+            continue
         if need > avail:
             titles = sum(r_[3] - r_[1] for r_ in relative) - len(column) * length
             shorter = (avail - (n_rect[3] - n_rect[1]) - gap * len(column) - titles) / max(1, len(column))
@@ -485,12 +500,7 @@ def render(args):
         offsets = {1: (0.0, 0.0), 2: (0.0, -(h + (lgap + label) / k))}
         content = (b[0], b[1], b[2] - h - (lgap + label) / k, b[3] + label / k)
     eps = 1e-3 * size
-    if len(present) == 1:
-        line2 = "layer 1 (u) only (one layer), warped by the displacement x %g" % scale
-    else:
-        line2 = "layer 1 (u) %s, layer 2 (v) %s; both warped by the displacement x %g" % (
-            "left" if side else "above", "right" if side else "below", scale)
-    title.Text = line1 + "\n" + line2
+    title.Text = title_lines(side, wrapped)
 
     # The cell edges: the same on both layers (colour, width, opacity),
     # shown where the cells of the coarser-drawn layer are at least 7 pixels
@@ -565,8 +575,8 @@ def render(args):
 
     scene = {"written_by": MARKER, "size": [width, height], "field": field, "cycle": info["cycle"],
              "displacement_scale": scale, "edges": bool(edges), "layers": [],
-             "title": {"rect": normalised(text_rect(tdisplay, view)), "font_size": tdisplay.FontSize},
-             "legend": {"rect": normalised(text_rect(ndisplay, view)), "font_size": ndisplay.FontSize},
+             "title": {"rect": normalised(text_rect(tdisplay, view)), "font_size": int(tdisplay.FontSize)},
+             "legend": {"rect": normalised(text_rect(ndisplay, view)), "font_size": int(ndisplay.FontSize)},
              "contact_pressure_bar": None}
     for layer in present:
         d = displays[layer]
@@ -574,15 +584,17 @@ def render(args):
         region = [width / 2 + (lb[0] - fx) * k, height / 2 + (lb[2] - fy) * k,
                   width / 2 + (lb[1] - fx) * k, height / 2 + (lb[3] - fy) * k]
         entry = dict(scales[layer])
-        entry.update({"colour_map": d.LookupTable.GetXMLLabel() if d.LookupTable else None,
-                      "representation": d.Representation, "edge_color": list(d.EdgeColor),
-                      "line_width": d.LineWidth, "opacity": d.Opacity,
+        entry.update({"colour_map": str(d.LookupTable.GetXMLLabel()) if d.LookupTable else None,
+                      "representation": d.SMProxy.GetProperty("Representation").GetElement(0),
+                      "edge_color": [float(c) for c in d.GetPropertyValue("EdgeColor")],
+                      "line_width": float(d.GetPropertyValue("LineWidth")),
+                      "opacity": float(d.GetPropertyValue("Opacity")),
                       "region": normalised(region),
-                      "bar": {"title": bars[layer].Title, "visible": bool(bars[layer].Visibility),
+                      "bar": {"title": str(bars[layer].Title), "visible": bool(bars[layer].Visibility),
                               "rect": normalised(bar_rect(bars[layer], width, height))}})
         scene["layers"].append(entry)
     if cbar is not None:
-        scene["contact_pressure_bar"] = {"title": cbar.Title, "visible": bool(cbar.Visibility),
+        scene["contact_pressure_bar"] = {"title": str(cbar.Title), "visible": bool(cbar.Visibility),
                                          "rect": normalised(bar_rect(cbar, width, height))}
 
     if args.get("png"):
