@@ -1,10 +1,13 @@
 """The ParaView side of scripts/view (see its --help): one bilayer result
 directory, one cycle, both layers side by side (or one above the other for
-wide scenes), each warped by its displacement, coloured by a point field,
+wide scenes), each warped by its displacement, coloured by a point field on
+its own colour scale (its own colour bar), the cell edges alike on both,
 with the interface Sigma drawn on top: the crack faces of each layer warped
 by their traces (u_minus/u_plus, v_minus/v_plus) and coloured by the contact
 pressure (grey: 0, an open or untouched face), the glued part as a thin black
-line. Writes a PNG and/or a ParaView state file.
+line. The title, the colour bars and the legend are measured as drawn and
+fitted into the picture. Writes a PNG and/or a ParaView state file, and with
+"describe" a JSON account of what was drawn (tests/cli/view_scene.py).
 
 Two modes:
   python3 view.py check RESULT_DIR CYCLE FIELD

@@ -2,7 +2,8 @@
 --describe JSON, its PNG and the solution files themselves (read here with
 VTK's own reader, piece by piece, independently of scripts/view.py):
   - each layer has its own colour range: the 99th percentile of |value| over
-    the layer's area (cell averages of the point values, weighted by the
+    the layer's area (|cell average| of the point values, of the vector for
+    a vector field, weighted by the
     cell areas, computed here from the pieces solution-NN-u-* for layer 1
     and solution-NN-v-* for layer 2) when the largest value exceeds it by
     more than 1.2 (then "saturated"), else the largest |value|; from 0 for
@@ -51,12 +52,9 @@ def own_scale(files, field):
         array = grid.GetPointData().GetArray(field)
         c = array.GetNumberOfComponents()
 
-        def value(i):
-            if c == 1 or field != "displacement":
-                return array.GetComponent(i, 0)
-            return math.sqrt(sum(array.GetComponent(i, j) ** 2 for j in range(c)))
-
-        values = [value(i) for i in range(grid.GetNumberOfPoints())]
+        vectors = [[array.GetComponent(i, j) for j in range(c)]
+                   for i in range(grid.GetNumberOfPoints())]
+        values = [v[0] if c == 1 else math.sqrt(sum(x * x for x in v)) for v in vectors]
         largest = max([largest] + [abs(v) for v in values])
         smallest = min([smallest] + values)
         for cell in range(grid.GetNumberOfCells()):
@@ -69,7 +67,9 @@ def own_scale(files, field):
             else:
                 area = 0.5 * abs(sum(p[k][0] * p[(k + 1) % n][1] - p[(k + 1) % n][0] * p[k][1]
                                      for k in range(n)))
-            pairs.append((abs(sum(values[ids.GetId(k)] for k in range(n)) / n), area))
+            # |the cell average| (of the vector, for a vector field)
+            mean = [sum(vectors[ids.GetId(k)][j] for k in range(n)) / n for j in range(c)]
+            pairs.append((math.sqrt(sum(x * x for x in mean)), area))
     pairs.sort()
     total, running = sum(a for _, a in pairs), 0.0
     for v, a in pairs:
