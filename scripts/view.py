@@ -469,12 +469,11 @@ def render(args):
     for bar, r_ in zip(column, relative):
         bar.Position = [(x0 - r_[0]) / width, (cursor - r_[3]) / height]
         cursor -= (r_[3] - r_[1]) + gap
-    placed_n = ndisplay.GetClientSideObject()  # (the text's offset from its position)
+    # (the text's offset from its position, measured at the origin)
     ndisplay.Position = [0.0, 0.0]
     Render(view)
     n0 = text_rect(ndisplay, view)
     ndisplay.Position = [(x0 - n0[0]) / width, (cursor - (n_rect[3] - n_rect[1]) - n0[1]) / height]
-    del placed_n
 
     # Layout: one box for each layer (the union of the warped bounds of both),
     # side by side or one above the other, whichever shows them larger, in the
