@@ -1,10 +1,13 @@
 """The ParaView side of scripts/view (see its --help): one bilayer result
 directory, one cycle, both layers side by side (or one above the other for
-wide scenes), each warped by its displacement, coloured by a point field,
+wide scenes), each warped by its displacement, coloured by a point field on
+its own colour scale (its own colour bar), the cell edges alike on both,
 with the interface Sigma drawn on top: the crack faces of each layer warped
 by their traces (u_minus/u_plus, v_minus/v_plus) and coloured by the contact
 pressure (grey: 0, an open or untouched face), the glued part as a thin black
-line. Writes a PNG and/or a ParaView state file.
+line. The title, the colour bars and the legend are measured as drawn and
+fitted into the picture. Writes a PNG and/or a ParaView state file, and with
+"describe" a JSON account of what was drawn (tests/cli/view_scene.py).
 
 Two modes:
   python3 view.py check RESULT_DIR CYCLE FIELD
@@ -13,7 +16,8 @@ Two modes:
       and exit 1.
   pvbatch view.py render JSON
       JSON: {"dir", "cycle", "field", "png" (or null), "state", "width",
-      "height", "scale" (null: automatic)}. Prints "view-info: ..." lines for
+      "height", "scale" (null: automatic), "edges" (null: automatic, true,
+      false), "describe" (a JSON file to write, or null)}. Prints "view-info: ..." lines for
       the wrapper, "view-error: ..." on a failure it understands and
       "view-done" when both files are written (pvbatch of Debian's ParaView
       5.11 sometimes crashes at exit; the wrapper retries on a missing
@@ -255,7 +259,7 @@ def render(args):
         else "%d" % info["cycles"][0], "%g" % scale, how))
 
     # The layers, warped, each with its own offset (decided below).
-    layers = {}
+    layers, thresholds = {}, {}
     for layer in (1, 2):
         threshold = Threshold(registrationName="layer %d" % layer, Input=solution)
         threshold.Scalars = [info["layer_association"], "layer"]
@@ -267,6 +271,7 @@ def render(args):
         warp.UpdatePipeline()
         if warp.GetDataInformation().GetNumberOfCells() > 0:
             layers[layer] = warp
+            thresholds[layer] = threshold
         else:  # Materials/Number of layers = 1
             Delete(warp)
             Delete(threshold)
@@ -292,35 +297,9 @@ def render(args):
         glued.UpdatePipeline()
         pmax = interface.PointData["contact_pressure"].GetRange()[1]
 
-    # Layout: one box for each layer (the union of the warped bounds of both),
-    # side by side or one above the other, whichever shows them larger, in the
-    # part of the picture left free by the title (top) and the colour bars
-    # (right).
-    b = [min(layers[l].GetDataInformation().GetBounds()[i] for l in present) if i % 2 == 0 else
-         max(layers[l].GetDataInformation().GetBounds()[i] for l in present) for i in range(4)]
-    w, h = max(b[1] - b[0], 1e-12 * size), max(b[3] - b[2], 1e-12 * size)
-    px = max(0.5, max(width, height) / 1600.0)  # the size of the fonts and margins
-    top, bottom, left, right = 96 * px, 24 * px, 24 * px, 250 * px
-    label, gap = 34 * px, 50 * px
-    box_w, box_h = width - left - right, height - top - bottom
-    k_side = min((box_w - gap) / (2 * w), (box_h - label) / h)
-    k_stack = min(box_w / w, (box_h - 2 * label - gap) / (2 * h))
-    # (one above the other also when it is almost as large: Sigma's points
-    # then lie at the same x in both layers)
-    side = k_side > k_stack / 0.9
-    k = max(k_side if side else k_stack, 1e-30)  # pixels per unit length
-    if len(present) == 1:
-        k = max(min(box_w / w, (box_h - label) / h), 1e-30)
-        offsets = {1: (0.0, 0.0)}
-        content = (b[0], b[1], b[2], b[3] + label / k)
-    elif side:
-        offsets = {1: (0.0, 0.0), 2: (w + gap / k, 0.0)}
-        content = (b[0], b[0] + 2 * w + gap / k, b[2], b[3] + label / k)
-    else:
-        offsets = {1: (0.0, 0.0), 2: (0.0, -(h + (gap + label) / k))}
-        content = (b[0], b[1], b[2] - h - (gap + label) / k, b[3] + label / k)
-    eps = 1e-3 * size
-
+    # The picture: px scales the fonts and margins with the picture (1 at
+    # the default 1600x800; the smaller of the two ratios, so that a narrow
+    # or a flat picture keeps room for the legends).
     view = CreateView("RenderView")
     view.ViewSize = [width, height]
     view.OrientationAxesVisibility = 0
@@ -333,73 +312,63 @@ def render(args):
     # The GUI shows the view with the picture's proportions (View > Preview):
     # the camera, the colour bars and the texts are placed for them.
     layout.PreviewMode = [width, height]
+    px = max(0.5, min(width / 1600.0, height / 800.0))
+    pad = max(4.0, 10 * px)  # the free border of the picture [pixels]
 
-    # The field: sequential map for von Mises and magnitudes, diverging and
-    # symmetric for signed components.
-    lut = GetColorTransferFunction(field)
-    GetOpacityTransferFunction(field)
-    fmin, fmax = None, None
-    for layer in present:
-        placed = Transform(registrationName="layer %d placed" % layer, Input=layers[layer])
-        placed.Transform = "Transform"
-        placed.Transform.Translate = [offsets[layer][0], offsets[layer][1], 0.0]
-        display = Show(placed, view)
-        # the cell edges where the cells are at least 7 pixels wide on average
-        lb = layers[layer].GetDataInformation().GetBounds()
-        cells = layers[layer].GetDataInformation().GetNumberOfCells()
-        cell_px = math.sqrt(max(lb[1] - lb[0], 1e-30) * max(lb[3] - lb[2], 1e-30) / cells) * k
-        display.SetRepresentationType("Surface With Edges" if cell_px >= 7 * px else "Surface")
-        display.EdgeColor = [0.45, 0.45, 0.45]
-        ColorBy(display, ("POINTS", field, "Magnitude") if info["field_components"] > 1
-                else ("POINTS", field))
-        display.LookupTable = lut
-        placed.UpdatePipeline()
-        r = placed.PointData[field].GetRange(-1 if info["field_components"] > 1 else 0)
-        fmin = r[0] if fmin is None else min(fmin, r[0])
-        fmax = r[1] if fmax is None else max(fmax, r[1])
-        text = a3DText(registrationName="label layer %d" % layer,
-                       Text="layer %d (%s)" % (layer, "u" if layer == 1 else "v"))
-        moved = Transform(registrationName="label layer %d placed" % layer, Input=text)
-        moved.Transform = "Transform"
-        th = 20 * px / k  # the height of the letters in lengths
-        moved.Transform.Scale = [th, th, 1]
-        moved.Transform.Translate = [b[0] + offsets[layer][0], b[3] + offsets[layer][1] + 10 * px / k, 0]
-        tdisplay = Show(moved, view)
-        tdisplay.AmbientColor = [0, 0, 0]
-        tdisplay.DiffuseColor = [0, 0, 0]
-    # The colours end at the 99th percentile of |value| over the area of both
-    # layers: the corners where a clamped side meets a free one are singular
-    # and would leave everything else in the lowest colour. The largest value
-    # is named in the colour bar's title.
-    signed = field.startswith("stress_") and fmin < 0 < fmax
-    top = percentile_abs(solution, field, 99.0)
-    largest = max(abs(fmin), abs(fmax))
-    saturated = top is not None and 0 < top < largest / 1.2
-    if not saturated:
-        top = largest
-    if signed:
-        lut.ApplyPreset("Cool to Warm", True)
-        lut.RescaleTransferFunction(-top, top)
-    else:
-        lut.ApplyPreset("Viridis (matplotlib)", True)
-        low = min(0.0, fmin)
-        lut.RescaleTransferFunction(low, top if top > low else low + 1.0)
-    lut.AutomaticRescaleRangeMode = "Never"
+    # Each layer its own colour scale: a compliant layer carries smaller
+    # stresses and would be one dark colour on the scale of a stiff one.
+    # The colours of a layer end at the 99th percentile of |value| over its
+    # area: the corners where a clamped side meets a free one are singular
+    # and would leave everything else in the lowest colour. The largest
+    # value is named in the colour bar's title.
+    components = -1 if info["field_components"] > 1 else 0
     if field in STRESS_FIELDS:
         unit = "units of E"
     elif field == "displacement":
         unit = "length unit"
     else:
         unit = None
-    bar = GetScalarBar(lut, view)
-    name = "%s magnitude" % field if info["field_components"] > 1 else field
-    bar.Title = name + ("" if not unit else " [%s]" % unit if len(name + unit) < 22 else "\n[%s]" % unit)
-    if saturated:
-        bar.Title += ("\ndata %s to %s (saturated)" % (fmt(fmin), fmt(fmax)) if signed
-                      else "\nlargest %s (saturated)" % fmt(largest))
-    bar.ComponentTitle = ""
-    style_bar(bar, px, width, height, 0.56, right)
+    field_name = {"von_mises": "von Mises"}.get(field, field)
+    if info["field_components"] > 1:
+        field_name += " magnitude"
+    placed, displays, scales, bars = {}, {}, {}, {}
+    for layer in present:
+        placed[layer] = Transform(registrationName="layer %d placed" % layer, Input=layers[layer])
+        placed[layer].Transform = "Transform"
+        display = Show(placed[layer], view)
+        display.UseSeparateColorMap = 1
+        ColorBy(display, ("POINTS", field, "Magnitude") if components < 0 else ("POINTS", field))
+        lut = GetColorTransferFunction(field, display, separate=True)
+        GetOpacityTransferFunction(field, display, separate=True)
+        display.LookupTable = lut
+        displays[layer] = display
+        fmin, fmax = layers[layer].PointData[field].GetRange(components)
+        signed = field.startswith("stress_") and fmin < 0 < fmax
+        p99 = percentile_abs(thresholds[layer], field, 99.0)
+        largest = max(abs(fmin), abs(fmax))
+        saturated = p99 is not None and 0 < p99 < largest / 1.2
+        top = p99 if saturated else largest
+        if signed:
+            lut.ApplyPreset("Cool to Warm", True)
+            low, high = -top, top
+        else:
+            lut.ApplyPreset("Viridis (matplotlib)", True)
+            low = min(0.0, fmin)
+            high = top if top > low else low + 1.0
+        lut.RescaleTransferFunction(low, high)
+        lut.AutomaticRescaleRangeMode = "Never"
+        bar = GetScalarBar(lut, view)
+        letter = "u" if layer == 1 else "v"
+        bar.Title = "layer %d (%s): %s%s" % (layer, letter, field_name, "\n[%s]" % unit if unit else "")
+        if saturated:
+            bar.Title += ("\ndata %s to %s (saturated)" % (fmt(fmin), fmt(fmax)) if signed
+                          else "\nlargest %s (saturated)" % fmt(largest))
+        bar.ComponentTitle = ""
+        bars[layer] = bar
+        scales[layer] = {"layer": layer, "name": letter, "range": [low, high], "data_range": [fmin, fmax],
+                         "percentile_99": p99, "saturated": saturated, "signed": signed}
 
+    cbar = None
     if interface is not None:
         cp = GetColorTransferFunction("contact_pressure")
         GetOpacityTransferFunction("contact_pressure")
@@ -412,6 +381,159 @@ def render(args):
                         top_value, 0.35, 0.0, 0.0]
         cp.ColorSpace = "RGB"
         cp.AutomaticRescaleRangeMode = "Never"
+        cbar = GetScalarBar(cp, view)
+        cbar.Title = "Sigma: contact_pressure\n[units of E]"
+        cbar.ComponentTitle = ""
+        cp.RescaleTransferFunction(0.0, top_value)
+        legend = ("Sigma, thick: the crack faces\n"
+                  "(traces %s),\n"
+                  "coloured by contact_pressure,\n"
+                  "grey: 0 (open); thin black: %s") % (
+                      "u-, u+ and v-, v+" if 2 in layers else "u-, u+",
+                      "glued" if 2 in layers else "no crack")
+        if pmax <= 0:  # no colour bar for a pressure that is 0 everywhere
+            cbar.Visibility = 0
+            legend += "\n\ncontact_pressure = 0 everywhere:\nno contact on the crack"
+    else:
+        legend = "Sigma not drawn:\nno interface file"
+    column = [bars[layer] for layer in present] + ([cbar] if cbar is not None and pmax > 0 else [])
+
+    # The title
+    r = info["record"]
+    line1 = "%s, cycle %d%s" % (info["scene"], info["cycle"],
+                                " (the last)" if info["cycle"] == info["cycles"][-1] and len(info["cycles"]) > 1
+                                else "")
+    if r:
+        line1 += ": %s dofs, energy %s" % (r.get("dofs", "?"), "%.6g" % r["energy"] if "energy" in r else "?")
+        if r.get("converged") is False:
+            line1 += " (NOT converged)"
+    def title_lines(side, wrapped):
+        if len(present) == 1:
+            line2 = "layer 1 (u) only (one layer), warped by the displacement x %g" % scale
+        else:
+            line2 = "layer 1 (u) %s, layer 2 (v) %s; both warped by the displacement x %g" % (
+                "left" if side else "above", "right" if side else "below", scale)
+        if wrapped:  # a narrow picture: more, shorter lines
+            return line1.replace(": ", ":\n") + "\n" + line2.replace("; ", ";\n")
+        return line1 + "\n" + line2
+
+    wrapped = False
+    title = Text(registrationName="title", Text=title_lines(False, wrapped))
+    tdisplay = Show(title, view)
+    tdisplay.WindowLocation = "Upper Center"
+    tdisplay.Color = [0, 0, 0]
+    tdisplay.Justification = "Center"
+    note = Text(registrationName="legend", Text=legend)
+    ndisplay = Show(note, view)
+    ndisplay.WindowLocation = "Any Location"
+    ndisplay.Color = [0.2, 0.2, 0.2]
+
+    # The legends, measured as ParaView draws them and fitted into the
+    # picture: the title across the top, the colour bars and the legend text
+    # one below the other in a column at the right; the fonts shrink (and
+    # the bars get shorter) until all of it lies inside the picture.
+    Render(view)
+    f, length = 1.0, min(0.22 * height, 230 * px)
+    for attempt in range(12):
+        tdisplay.FontSize = max(6, int(round(19 * px * f)))
+        ndisplay.FontSize = max(6, int(round(14 * px * f)))
+        for bar in column:
+            style_bar(bar, px * f, length / height)
+        Render(view)
+        t_rect = text_rect(tdisplay, view)
+        relative = [bar_rect(bar, width, height, relative=True) for bar in column]
+        n_rect = text_rect(ndisplay, view)
+        gap = 16 * px * f
+        top_margin = (t_rect[3] - t_rect[1]) + 2 * pad
+        col_w = max([r_[2] - r_[0] for r_ in relative] + [n_rect[2] - n_rect[0]]) + 2 * pad
+        need = sum(r_[3] - r_[1] for r_ in relative) + (n_rect[3] - n_rect[1]) + gap * len(column)
+        avail = height - top_margin - pad
+        fits_w = (t_rect[2] - t_rect[0] <= width - 2 * pad) and col_w <= 0.45 * width
+        if t_rect[2] - t_rect[0] > width - 2 * pad and not wrapped and attempt >= 2:
+            wrapped = True
+            title.Text = title_lines(False, wrapped)
+            continue
+        if need > avail:
+            titles = sum(r_[3] - r_[1] for r_ in relative) - len(column) * length
+            shorter = (avail - (n_rect[3] - n_rect[1]) - gap * len(column) - titles) / max(1, len(column))
+            if fits_w and shorter >= max(30.0, 50 * px * f):
+                length = shorter - 1
+                continue
+        elif fits_w:
+            break
+        f *= 0.85
+        length *= 0.85
+    right = col_w
+    x0 = width - col_w + pad
+    cursor = height - top_margin
+    for bar, r_ in zip(column, relative):
+        bar.Position = [(x0 - r_[0]) / width, (cursor - r_[3]) / height]
+        cursor -= (r_[3] - r_[1]) + gap
+    # (the text's offset from its position, measured at the origin)
+    ndisplay.Position = [0.0, 0.0]
+    Render(view)
+    n0 = text_rect(ndisplay, view)
+    ndisplay.Position = [(x0 - n0[0]) / width, (cursor - (n_rect[3] - n_rect[1]) - n0[1]) / height]
+
+    # Layout: one box for each layer (the union of the warped bounds of both),
+    # side by side or one above the other, whichever shows them larger, in the
+    # part of the picture left free by the title (top) and the colour bars
+    # (right).
+    b = [min(layers[l].GetDataInformation().GetBounds()[i] for l in present) if i % 2 == 0 else
+         max(layers[l].GetDataInformation().GetBounds()[i] for l in present) for i in range(4)]
+    w, h = max(b[1] - b[0], 1e-12 * size), max(b[3] - b[2], 1e-12 * size)
+    top, bottom, left = top_margin, 2 * pad, 2 * pad
+    label, lgap = 34 * px * f, 50 * px * f
+    box_w, box_h = max(width - left - right, 10.0), max(height - top - bottom, 10.0)
+    k_side = min((box_w - lgap) / (2 * w), (box_h - label) / h)
+    k_stack = min(box_w / w, (box_h - 2 * label - lgap) / (2 * h))
+    # (one above the other also when it is almost as large: Sigma's points
+    # then lie at the same x in both layers)
+    side = k_side > k_stack / 0.9
+    k = max(k_side if side else k_stack, 1e-30)  # pixels per unit length
+    if len(present) == 1:
+        k = max(min(box_w / w, (box_h - label) / h), 1e-30)
+        offsets = {1: (0.0, 0.0)}
+        content = (b[0], b[1], b[2], b[3] + label / k)
+    elif side:
+        offsets = {1: (0.0, 0.0), 2: (w + lgap / k, 0.0)}
+        content = (b[0], b[0] + 2 * w + lgap / k, b[2], b[3] + label / k)
+    else:
+        offsets = {1: (0.0, 0.0), 2: (0.0, -(h + (lgap + label) / k))}
+        content = (b[0], b[1], b[2] - h - (lgap + label) / k, b[3] + label / k)
+    eps = 1e-3 * size
+    title.Text = title_lines(side, wrapped)
+
+    # The cell edges: the same on both layers (colour, width, opacity),
+    # shown where the cells of the coarser-drawn layer are at least 7 pixels
+    # wide on average (or as --edges/--no-edges say).
+    cell_px = {}
+    for layer in present:
+        lb = layers[layer].GetDataInformation().GetBounds()
+        cells = max(1, layers[layer].GetDataInformation().GetNumberOfCells())
+        cell_px[layer] = math.sqrt(max(lb[1] - lb[0], 1e-30) * max(lb[3] - lb[2], 1e-30) / cells) * k
+    edges = args.get("edges")
+    if edges is None:
+        edges = min(cell_px.values()) >= 7 * px
+    for layer in present:
+        placed[layer].Transform.Translate = [offsets[layer][0], offsets[layer][1], 0.0]
+        display = displays[layer]
+        display.SetRepresentationType("Surface With Edges" if edges else "Surface")
+        display.EdgeColor = [0.45, 0.45, 0.45]
+        display.LineWidth = 1.0
+        display.Opacity = 1.0
+        text = a3DText(registrationName="label layer %d" % layer,
+                       Text="layer %d (%s)" % (layer, "u" if layer == 1 else "v"))
+        moved = Transform(registrationName="label layer %d placed" % layer, Input=text)
+        moved.Transform = "Transform"
+        th = 20 * px * f / k  # the height of the letters in lengths
+        moved.Transform.Scale = [th, th, 1]
+        moved.Transform.Translate = [b[0] + offsets[layer][0], b[3] + offsets[layer][1] + 10 * px * f / k, 0]
+        ldisplay = Show(moved, view)
+        ldisplay.AmbientColor = [0, 0, 0]
+        ldisplay.DiffuseColor = [0, 0, 0]
+
+    if interface is not None:
         for layer, letter in ((1, "u"), (2, "v")):
             if layer not in layers:
                 continue
@@ -436,48 +558,6 @@ def render(args):
                     ColorBy(d, ("POINTS", "contact_pressure"))
                     d.LookupTable = cp
                     d.LineWidth = 3.5 * px
-        cbar = GetScalarBar(cp, view)
-        cbar.Title = "contact_pressure\n[units of E]"
-        cbar.ComponentTitle = ""
-        style_bar(cbar, px, width, height, 0.19, right)
-        cp.RescaleTransferFunction(0.0, top_value)
-        legend = ("Sigma, thick: the crack faces\n"
-                  "(traces %s),\n"
-                  "coloured by contact_pressure,\n"
-                  "grey: 0 (open); thin black: %s") % (
-                      "u-, u+ and v-, v+" if 2 in layers else "u-, u+",
-                      "glued" if 2 in layers else "no crack")
-        if pmax <= 0:  # no colour bar for a pressure that is 0 everywhere
-            cbar.Visibility = 0
-            legend += "\n\ncontact_pressure = 0 everywhere:\nno contact on the crack"
-    else:
-        legend = "Sigma not drawn:\nno interface file"
-
-    # The title
-    r = info["record"]
-    line1 = "%s, cycle %d%s" % (info["scene"], info["cycle"],
-                                " (the last)" if info["cycle"] == info["cycles"][-1] and len(info["cycles"]) > 1
-                                else "")
-    if r:
-        line1 += ": %s dofs, energy %s" % (r.get("dofs", "?"), "%.6g" % r["energy"] if "energy" in r else "?")
-        if r.get("converged") is False:
-            line1 += " (NOT converged)"
-    if len(present) == 1:
-        line2 = "layer 1 (u) only (one layer), warped by the displacement x %g" % scale
-    else:
-        line2 = "layer 1 (u) %s, layer 2 (v) %s; both warped by the displacement x %g" % (
-            "left" if side else "above", "right" if side else "below", scale)
-    title = Text(registrationName="title", Text=line1 + "\n" + line2)
-    tdisplay = Show(title, view)
-    tdisplay.WindowLocation = "Upper Center"
-    tdisplay.FontSize = int(round(19 * px))
-    tdisplay.Color = [0, 0, 0]
-    tdisplay.Justification = "Center"
-    note = Text(registrationName="legend", Text=legend)
-    ndisplay = Show(note, view)
-    ndisplay.WindowLocation = "Lower Right Corner"
-    ndisplay.FontSize = int(round(14 * px))
-    ndisplay.Color = [0.2, 0.2, 0.2]
 
     # The camera: the content's box centred in the free part of the picture.
     Render(view)
@@ -491,12 +571,65 @@ def render(args):
     view.CameraParallelScale = height / (2 * k)
     Render(view)
 
+    # What was drawn, as measured: for scripts/view --describe and its test.
+    def normalised(rect):
+        return [rect[0] / width, rect[1] / height, rect[2] / width, rect[3] / height]
+
+    scene = {"written_by": MARKER, "size": [width, height], "field": field, "cycle": info["cycle"],
+             "displacement_scale": scale, "edges": bool(edges), "layers": [],
+             "title": {"rect": normalised(text_rect(tdisplay, view)), "font_size": int(tdisplay.FontSize)},
+             "legend": {"rect": normalised(text_rect(ndisplay, view)), "font_size": int(ndisplay.FontSize)},
+             "contact_pressure_bar": None}
+    for layer in present:
+        d = displays[layer]
+        lb = placed[layer].GetDataInformation().GetBounds()
+        region = [width / 2 + (lb[0] - fx) * k, height / 2 + (lb[2] - fy) * k,
+                  width / 2 + (lb[1] - fx) * k, height / 2 + (lb[3] - fy) * k]
+        entry = dict(scales[layer])
+        entry.update({"colour_map": str(d.LookupTable.GetXMLLabel()) if d.LookupTable else None,
+                      "representation": d.SMProxy.GetProperty("Representation").GetElement(0),
+                      "edge_color": [float(c) for c in d.GetPropertyValue("EdgeColor")],
+                      "line_width": float(d.GetPropertyValue("LineWidth")),
+                      "opacity": float(d.GetPropertyValue("Opacity")),
+                      "region": normalised(region),
+                      "bar": {"title": str(bars[layer].Title), "visible": bool(bars[layer].Visibility),
+                              "rect": normalised(bar_rect(bars[layer], width, height))}})
+        scene["layers"].append(entry)
+    if cbar is not None:
+        scene["contact_pressure_bar"] = {"title": str(cbar.Title), "visible": bool(cbar.Visibility),
+                                         "rect": normalised(bar_rect(cbar, width, height))}
+
     if args.get("png"):
         SaveScreenshot(args["png"], view, ImageResolution=[width, height])
         add_png_text(args["png"], "Software", MARKER)
     SaveState(args["state"])
     mark_state(args["state"], info)
+    if args.get("describe"):
+        with open(args["describe"], "w") as out:
+            json.dump(scene, out, indent=1)
+            out.write("\n")
     print("view-done")
+
+
+def bar_rect(bar, width, height, relative=False):
+    """[x0, y0, x1, y1] in pixels (from the lower left corner) of a colour bar
+    as drawn (bar, labels and title), after a Render; relative: from the
+    bar's Position."""
+    rep = bar.GetClientSideObject().GetRepresentation()
+    r = rep.GetScalarBarActor().GetBoundingRect()
+    ox, oy = (0.0, 0.0) if relative else (rep.GetPosition()[0] * width, rep.GetPosition()[1] * height)
+    return [ox + r.GetX(), oy + r.GetY(), ox + r.GetX() + r.GetWidth(), oy + r.GetY() + r.GetHeight()]
+
+
+def text_rect(display, view):
+    """[x0, y0, x1, y1] in pixels of a Text source's text as drawn."""
+    rep = display.GetClientSideObject().GetTextWidgetRepresentation().GetRepresentation()
+    actor = rep.GetTextActor()
+    renderer = view.GetRenderer()
+    bb = [0.0] * 4
+    actor.GetBoundingBox(renderer, bb)
+    o = actor.GetPositionCoordinate().GetComputedDisplayValue(renderer)
+    return [o[0] + bb[0], o[1] + bb[2], o[0] + bb[1], o[1] + bb[3]]
 
 
 def percentile_abs(source, field, q):
@@ -534,14 +667,15 @@ def percentile_abs(source, field, q):
     return pairs[-1][0]
 
 
-def style_bar(bar, px, width, height, y, right):
+def style_bar(bar, px, length):
+    """A vertical colour bar of the given length (a fraction of the
+    picture's height), fonts and thickness scaled by px; placed later."""
     bar.Orientation = "Vertical"
     bar.WindowLocation = "Any Location"
-    bar.Position = [(width - right + 30 * px) / width, y]
-    bar.ScalarBarLength = 0.28
-    bar.ScalarBarThickness = int(round(18 * px))
-    bar.TitleFontSize = int(round(17 * px))
-    bar.LabelFontSize = int(round(15 * px))
+    bar.ScalarBarLength = length
+    bar.ScalarBarThickness = max(4, int(round(18 * px)))
+    bar.TitleFontSize = max(6, int(round(17 * px)))
+    bar.LabelFontSize = max(6, int(round(15 * px)))
     bar.TitleColor = [0, 0, 0]
     bar.LabelColor = [0, 0, 0]
     bar.HorizontalTitle = 1

@@ -4,6 +4,13 @@
 #  - --png of a requested size: exit 0, a PNG of that size (its IHDR), a
 #    ParaView state that names the solution and interface files of the
 #    directory and that pvpython loads back and renders;
+#  - what the picture shows (--describe JSON, the PNG, and the solution
+#    pieces read independently by view_scene.py), at 900x500, at a tall
+#    800x1200 (--no-edges) and a wide 2400x600 (--edges): each layer on its
+#    own colour scale (its own 99th percentile over its area) with a bar
+#    titled with the layer, every bar, the title and the legend inside the
+#    picture and apart, the PNG's border background, both layers drawn
+#    alike (edges on both or neither), many colours in each layer;
 #  - a second run with other options (--cycle, --field, --scale 0) replaces
 #    the files of the first (written by scripts/view) without --force;
 #  - refusals with exit status 1 and exactly one stderr line "view: ...",
@@ -59,7 +66,7 @@ PY
 # 1. The picture and the state.
 start=$(date +%s)
 "$view" "$result" --png "$work/view.png" --state "$work/view.pvsm" --size 900x500 \
-  > "$work/stdout" 2> "$work/stderr"
+  --describe "$work/view.json" > "$work/stdout" 2> "$work/stderr"
 rc=$?
 why=""
 [[ $rc -eq 0 ]] || why="$why; exit status $rc"
@@ -71,6 +78,27 @@ size=$([[ -f $work/view.png ]] && png_size "$work/view.png")
 grep -qF "$result/solution-" "$work/view.pvsm" 2> /dev/null || why="$why; the state names no $result/solution-NN.pvtu"
 grep -qF "$result/interface-" "$work/view.pvsm" 2> /dev/null || why="$why; the state names no $result/interface-NN.vtu"
 verdict "png and state ($(($(date +%s) - start)) s)" "$why"
+
+# 1b. What the picture shows, at three sizes.
+scene() { # NAME PNG JSON EDGES
+  local why=""
+  if [[ -s $3 && -s $2 ]]; then
+    pvpython "$root/tests/cli/view_scene.py" "$3" "$2" "$result" "$4" > "$work/scene.log" 2>&1 ||
+      why=$(grep -a ": NO\|Error\|error" "$work/scene.log" | head -5 | tr '\n' ';')
+  else
+    why="no picture or no --describe file"
+  fi
+  verdict "the scene at $1" "$why"
+  [[ -z $why ]] || cat "$work/scene.log"
+}
+scene "900x500 (edges auto)" "$work/view.png" "$work/view.json" auto
+for case in "800x1200 --no-edges off" "2400x600 --edges on"; do
+  read -r size option edges <<< "$case"
+  "$view" "$result" --png "$work/view-$size.png" --state "$work/view-$size.pvsm" --size "$size" \
+    "$option" --describe "$work/view-$size.json" > "$work/stdout" 2> "$work/stderr" ||
+    echo "scripts/view --size $size $option failed: $(head -3 "$work/stderr")"
+  scene "$size ($option)" "$work/view-$size.png" "$work/view-$size.json" "$edges"
+done
 
 # 2. The state loads back and renders (pvpython; Debian's ParaView 5.11
 # sometimes crashes at exit: up to three tries, the picture is the verdict).
@@ -128,6 +156,8 @@ refusal "foreign --png file" "not written by scripts/view" "$result" --png "$wor
   verdict "the foreign file is kept" "it was changed"
 refusal "--png in the result directory" "inside the result directory" "$result" --png "$result/view.png" \
   --state "$work/other.pvsm"
+refusal "--describe in the result directory" "inside the result directory" "$result" --png "$work/x.png" \
+  --state "$work/other.pvsm" --describe "$result/view.json"
 refusal "cycle out of range" "--cycle 999" "$result" --cycle 999 --png "$work/x.png" \
   --state "$work/other.pvsm"
 why=""
