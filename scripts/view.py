@@ -528,7 +528,7 @@ def render(args):
         moved.Transform = "Transform"
         th = 20 * px * f / k  # the height of the letters in lengths
         moved.Transform.Scale = [th, th, 1]
-        moved.Transform.Translate = [b[0] + offsets[layer][0], b[3] + offsets[layer][1] + 10 * px * f / k, 0]
+        moved.Transform.Translate = [b[0] + offsets[layer][0] + 4 * px * f / k, b[3] + offsets[layer][1] + 10 * px * f / k, 0]
         ldisplay = Show(moved, view)
         ldisplay.AmbientColor = [0, 0, 0]
         ldisplay.DiffuseColor = [0, 0, 0]
