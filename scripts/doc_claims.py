@@ -1,0 +1,221 @@
+"""The numbers README.md and docs/*.md quote, and how to reproduce each.
+
+Read by scripts/check_docs (see its --help). Two tables:
+
+COMMANDS: name -> {"command": a bash command line run in the repository
+    root}. {bilayer} is the program ($BILAYER or build/bilayer), {out} an
+    empty scratch folder of this command (removed afterwards), {build} the
+    build folder. Each command runs once, however many claims read it.
+
+CLAIMS: one dict per quoted number:
+    id         unique name (check_docs --only ID)
+    doc        the file, relative to the repository root
+    pattern    a regular expression with one group, the quoted number; it
+               must match the doc exactly once. Whitespace in the doc (line
+               breaks included) counts as one space. Q("text {} text")
+               escapes the text around {} and puts the number group there.
+    command    a name of COMMANDS
+    extract    "wall" (the command's wall time, seconds), {"regex": R}
+               (group 1 of the first match in stdout and stderr;
+               "match": k takes the k-th, "reduce": "max"/"min" all), or
+               {"json": "FILE under {out}", "key": "cycles.-1.energy"}
+    scale      the measured number times scale is compared (100: percent)
+    unit       the quoted number times unit is compared (60: minutes)
+    tolerance  ("exact",) counts and iterations; ("rounded",) the quoted
+               number is the measured one rounded to the quoted digits;
+               ("rel", 1e-3) relative; ("factor", 3) timings
+    fast       True when the command takes a few seconds (CI runs these)
+    kind       "test_table" (the README's test table against ctest -N) or
+               "ctest_count" (the quoted number of tests), no command
+
+To add a claim: add the command if it is new (give its runs an output
+folder under {out}), add the claim, run `scripts/check_docs --only ID` and
+write the command, the machine and the date beside the number in the doc.
+"""
+import re
+
+NUM = r"(\d{1,3}(?: \d{3})+|[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?)"
+
+
+def Q(text):
+    """The regex of TEXT with {} the number group (whitespace collapsed)."""
+    before, after = " ".join(text.split()).split("{}")
+    return re.escape(before) + NUM + re.escape(after)
+
+
+def json_key(key, file="r/summary.json"):
+    return {"json": file, "key": key}
+
+
+RUN = '{bilayer} %s --set "Output/Output directory={out}/r" --set "Output/Write VTU=false" > {out}/log'
+AS = '--set "Solver/Method=active set" '
+COMMANDS = {
+    # README: the paper's run and the one-line converged command against a
+    # 16-cycle reference, with wall times.
+    "paper_settings": {"command": "scripts/paper_settings"},
+    # README: the paper's three scenes at their default meshes.
+    "run_examples": {"command": "scripts/run_examples --output {out}/r"},
+    # docs/reproduction.md: Table 1 (theta = 65), meshes 1-4 (a few seconds).
+    "table1_4": {"command": RUN % 'parameter_files/table1.prm --set "Mesh/Number of cycles=4"'},
+    "table1": {"command": RUN % "parameter_files/table1.prm"},
+    "table1_auto_constant_4": {"command": RUN % ('parameter_files/table1.prm --set "Mesh/Number of cycles=4" '
+                                                 '--set "Solver/Uzawa step theta=auto" '
+                                                 '--set "Solver/Auto theta steps=constant"')},
+    "table1_auto": {"command": RUN % 'parameter_files/table1.prm --set "Solver/Uzawa step theta=auto"'},
+    "table1_quads_3": {"command": RUN % 'parameter_files/table1_quads.prm --set "Mesh/Number of cycles=3"'},
+    # docs/performance.md: the active set on the Table 1 triangles (KKT 1e-10, as bench_solvers).
+    "table1_active_set": {"command": RUN % ('parameter_files/table1.prm ' + AS +
+                                            '--set "Solver/Tolerance=1e-10"')},
+    # README: the efficiency index of eta on Example 1, Q1, four uniform cycles.
+    "mesh_convergence_ex1": {"command": 'scripts/mesh_convergence parameter_files/partial_closure.prm '
+                                        '--output {out}/m --set "Mesh/Number of cycles=4" '
+                                        '--set "Solver/Method=active set"'},
+    # Slow (minutes).
+    "mesh_convergence_table1": {"command": "scripts/mesh_convergence parameter_files/table1.prm --output {out}/m"},
+    "mesh_convergence_quads": {"command": "scripts/mesh_convergence parameter_files/table1_quads.prm --output {out}/m"},
+    "hard_cases": {"command": "scripts/hard_cases --output {out}/h"},
+    "work_precision": {"command": "scripts/work_precision --output {out}/w"},
+    "crack_growth_end": {"command": "scripts/crack_growth parameter_files/partial_closure.prm "
+                                    "--tip end --output {out}/c"},
+}
+
+PAPER = r"paper's settings \(Uzawa, theta = 65, 16 cells\).*?"
+QUICK = r"one-line converged command \(12 adaptive Q2 cycles\).*?"
+EFFICIENCY = r"^\s*\d+\s+\d+(?:\s+\S+){6}\s+(\S+)\s+\d+\s*$"  # the column efficiency of its table
+RATIO = r"energy error \|dPi\|/\|Pi\| (\S+)"
+
+CLAIMS = [
+    # The counts of the test suite.
+    {"id": "tests.count", "doc": "README.md", "kind": "ctest_count", "fast": True,
+     "pattern": Q("ctest knows {} tests"), "tolerance": ("exact",)},
+    {"id": "tests.table", "doc": "README.md", "kind": "test_table", "fast": True},
+
+    # README, the paper's settings against the converged solution.
+    {"id": "readme.paper.energy_error", "doc": "README.md", "fast": True,
+     "pattern": Q("the main command's energy error |Pi_h − Pi|/|Pi| is {} %"),
+     "command": "paper_settings", "extract": {"regex": PAPER + RATIO}, "scale": 100,
+     "tolerance": ("rounded",)},
+    {"id": "readme.paper.energy_norm_error", "doc": "README.md", "fast": True,
+     "pattern": Q("(an energy-norm error of {} %"),
+     "command": "paper_settings", "extract": {"regex": PAPER + r"energy-norm error (\S+)"},
+     "scale": 100, "tolerance": ("rounded",)},
+    {"id": "readme.paper.opening_next_to_contact", "doc": "README.md", "fast": True,
+     "pattern": Q("13–18 % ({} % next to the contact zone)"),
+     "command": "paper_settings", "extract": {"regex": r"^\s+\S+\s+\S+\s+\S+\s+(\S+) %$", "reduce": "max"},
+     "tolerance": ("rounded",)},
+    {"id": "readme.paper.wall", "doc": "README.md", "fast": True,
+     "pattern": Q("run: {} s wall time, most of it the start of the process"),
+     "command": "paper_settings", "extract": {"regex": PAPER + r"dofs\s+(\S+) s"},
+     "tolerance": ("factor", 3)},
+    {"id": "readme.converged.energy_error", "doc": "README.md", "fast": True,
+     "pattern": Q("an energy error |Pi_h − Pi|/|Pi| of {} (energy-norm error"),
+     "command": "paper_settings", "extract": {"regex": QUICK + RATIO}, "tolerance": ("rounded",)},
+    {"id": "readme.converged.energy_norm_error", "doc": "README.md", "fast": True,
+     "pattern": Q("(energy-norm error {}; against a 16-cycle run)"),
+     "command": "paper_settings", "extract": {"regex": QUICK + r"energy-norm error (\S+)"},
+     "tolerance": ("rounded",)},
+    {"id": "readme.converged.dofs", "doc": "README.md", "fast": True,
+     "pattern": Q("in 12 cycles, {} dofs and"),
+     "command": "paper_settings", "extract": {"regex": QUICK + r"(\d+) dofs"}, "tolerance": ("exact",)},
+    {"id": "readme.converged.wall", "doc": "README.md", "fast": True,
+     "pattern": Q("dofs and {} s of wall time with every cycle written"),
+     "command": "paper_settings", "extract": {"regex": QUICK + r"dofs\s+(\S+) s"},
+     "tolerance": ("factor", 3)},
+
+    # README, scripts/run_examples.
+    {"id": "readme.run_examples.iterations_1", "doc": "README.md", "fast": True,
+     "pattern": r"it printed (\d+), \d+ and \d+ iterations",
+     "command": "run_examples", "extract": {"regex": r"^partial_closure\s+(\d+)"}, "tolerance": ("exact",)},
+    {"id": "readme.run_examples.iterations_2", "doc": "README.md", "fast": True,
+     "pattern": r"it printed \d+, (\d+) and \d+ iterations",
+     "command": "run_examples", "extract": {"regex": r"^full_opening\s+(\d+)"}, "tolerance": ("exact",)},
+    {"id": "readme.run_examples.iterations_3", "doc": "README.md", "fast": True,
+     "pattern": r"it printed \d+, \d+ and (\d+) iterations",
+     "command": "run_examples", "extract": {"regex": r"^partial_closure_linear\s+(\d+)"},
+     "tolerance": ("exact",)},
+
+    # README, the efficiency index of eta (scripts/mesh_convergence).
+    {"id": "readme.eta.efficiency_min", "doc": "README.md", "fast": True,
+     "pattern": Q("Its efficiency index eta / e_h on Example 1, Q1, uniform refinement is {}–"),
+     "command": "mesh_convergence_ex1", "extract": {"regex": EFFICIENCY, "reduce": "min"},
+     "tolerance": ("rounded",)},
+    {"id": "readme.eta.efficiency_max", "doc": "README.md", "fast": True,
+     "pattern": r"uniform refinement is \d\.\d+–" + Q("{} on its four cycles"),
+     "command": "mesh_convergence_ex1", "extract": {"regex": EFFICIENCY, "reduce": "max"},
+     "tolerance": ("rounded",)},
+
+    # docs/reproduction.md, Table 1 (theta = 65) and theta = auto.
+] + [
+    {"id": "reproduction.table1.iterations_%d" % k, "doc": "docs/reproduction.md", "fast": k < 4,
+     "pattern": r"\| %d \| %d \|(?: [^|]+ \|){8} (\d+) \| %d \|" % (p, m, paper),
+     "command": "table1_4" if k < 4 else "table1",
+     "extract": json_key("cycles.%d.iterations" % k), "tolerance": ("exact",)}
+    for k, (p, m, paper) in enumerate([(12, 32, 843), (24, 48, 1164), (48, 80, 1416),
+                                       (96, 144, 1909), (200, 256, 2402)])
+] + [
+    {"id": "reproduction.table1.energy_%d" % k, "doc": "docs/reproduction.md", "fast": k < 4,
+     "pattern": r"\| %d \| %d \|(?: [^|]+ \|){10} (-\d\.\d+e-06) \|" % (p, m),
+     "command": "table1_4" if k < 4 else "table1",
+     "extract": json_key("cycles.%d.energy" % k), "tolerance": ("rounded",)}
+    for k, (p, m) in enumerate([(12, 32), (24, 48), (48, 80), (96, 144), (200, 256)])
+] + [
+    {"id": "reproduction.theta_auto_constant.iterations_%d" % k, "doc": "docs/reproduction.md",
+     "fast": True, "pattern": r"converged on all five Table 1 meshes \(" + r"\d+, " * k + r"(\d+)",
+     "command": "table1_auto_constant_4", "extract": json_key("cycles.%d.iterations" % k),
+     "tolerance": ("exact",)}
+    for k in range(4)
+] + [
+    {"id": "reproduction.theta_auto_adaptive.iterations_%d" % k, "doc": "docs/reproduction.md",
+     "fast": True, "pattern": r"with the adaptive steps \(the default\) in " + r"\d+, " * min(k, 3)
+     + (r"\d+ and " if k == 4 else "") + r"(\d+)",
+     "command": "table1_auto", "extract": json_key("cycles.%d.iterations" % k),
+     "tolerance": ("exact",)}
+    for k in range(5)
+] + [
+    {"id": "reproduction.quads.iterations_%d" % k, "doc": "docs/reproduction.md", "fast": True,
+     "pattern": r"\| %d \| %d \|(?: [^|]+ \|){3} (\d+) \| %d \|" % (p, m, paper),
+     "command": "table1_quads_3", "extract": json_key("cycles.%d.iterations" % k),
+     "tolerance": ("exact",)}
+    for k, (p, m, paper) in enumerate([(13, 48, 843), (25, 96, 1164), (49, 192, 1416)])
+] + [
+    {"id": "performance.active_set.newton_triangles_%d" % k, "doc": "docs/performance.md", "fast": True,
+     "pattern": r"\*\*Newton steps\*\* " + r"\d+, " * k + r"(\d+)",
+     "command": "table1_active_set", "extract": json_key("cycles.%d.iterations" % k),
+     "tolerance": ("exact",)}
+    for k in range(5)
+] + [
+    # Timings of the study scripts (slow: minutes).
+    {"id": "reproduction.table1.time", "doc": "docs/reproduction.md", "fast": False,
+     "pattern": Q("(P1 triangles; about {} s,"), "command": "mesh_convergence_table1",
+     "extract": "wall", "tolerance": ("factor", 2)},
+    {"id": "reproduction.quads.time", "doc": "docs/reproduction.md", "fast": False,
+     "pattern": Q("12 · 2^k cells along Sigma; about {} s on"), "command": "mesh_convergence_quads",
+     "extract": "wall", "tolerance": ("factor", 2)},
+    {"id": "readme.hard_cases.time", "doc": "README.md", "fast": False,
+     "pattern": Q("cleanly refused/stopped ([docs/robustness.md](docs/robustness.md)); {} s"),
+     "command": "hard_cases", "extract": "wall", "tolerance": ("factor", 2)},
+    {"id": "robustness.hard_cases.time", "doc": "docs/robustness.md", "fast": False,
+     "pattern": Q("60 runs in 140 s on 2026-11-29; {} s on 2026-12-02"), "command": "hard_cases",
+     "extract": {"regex": r"\d+ runs in (\d+) s"}, "tolerance": ("factor", 2)},
+    {"id": "readme.work_precision.time", "doc": "README.md", "fast": False,
+     "pattern": Q("gnuplot PNGs ([docs/accuracy.md](docs/accuracy.md)); {} s"),
+     "command": "work_precision", "extract": "wall", "tolerance": ("factor", 2)},
+    {"id": "accuracy.work_precision.time", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("Total wall time of the study: 216 s (2026-11-29; {} s on 2026-12-02"), "command": "work_precision",
+     "extract": {"regex": r"Total wall time of the study: (\d+) s"}, "tolerance": ("factor", 2)},
+    {"id": "readme.work_precision.one_percent_time", "doc": "README.md", "fast": False,
+     "pattern": Q("docs/accuracy.md; {} s on 2026-12-02, the same VM"), "command": "work_precision",
+     "extract": {"regex": r"^\| adaptive Q1, active set \|(?: [^|]+ \|){8} (\S+) \|"},
+     "tolerance": ("factor", 2)},
+    {"id": "accuracy.work_precision.one_percent_time", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("2.6e5 DoFs and 13 s (measured; {} s on 2026-12-02"), "command": "work_precision",
+     "extract": {"regex": r"^\| adaptive Q1, active set \|(?: [^|]+ \|){8} (\S+) \|"},
+     "tolerance": ("factor", 2)},
+    {"id": "readme.work_precision.one_percent_dofs", "doc": "README.md", "fast": False,
+     "pattern": Q("and 1 % with {} DoFs in 13 s"), "command": "work_precision",
+     "extract": {"regex": r"^\| adaptive Q1, active set \|(?: [^|]+ \|){7} (\S+) \|"},
+     "tolerance": ("rounded",)},
+    {"id": "fracture.crack_growth.time", "doc": "docs/fracture.md", "fast": False,
+     "pattern": Q("- Example 1, `--tip end`: {} s."), "command": "crack_growth_end",
+     "extract": "wall", "tolerance": ("factor", 2)},
+]
