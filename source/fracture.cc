@@ -228,8 +228,7 @@ namespace bilayer
                 at || (cell->vertex(v) - tip.point).norm() <= 1e-8 * diameter;
             if (!at)
               continue;
-            const double size =
-              std::sqrt(cell->measure() * (cell->n_vertices() == 3 ? 2. : 1.));
+            const double size = cell_size(cell);
             if (size > cells.size)
               cells.size = size, cells.mesh = m;
           }

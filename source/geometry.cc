@@ -98,7 +98,8 @@ namespace bilayer
 
 
   void
-  Geometry::refine(const std::array<Vector<double>, 2> &indicators)
+  Geometry::refine(const std::array<Vector<double>, 2> &indicators,
+                   const std::vector<PointResolution>  &resolve)
   {
     // The indicators divided by a power of two of the largest (exact), in
     // single precision: in (0, 1], ties as among the float indicators.
@@ -151,8 +152,16 @@ namespace bilayer
         const auto  &eta  = relative[static_cast<unsigned int>(s)];
         unsigned int i    = 0;
         for (const auto &cell : tria.active_cell_iterators())
-          if (eta[i++] >= threshold && threshold > 0)
-            cell->set_refine_flag();
+          {
+            if (eta[i++] >= threshold && threshold > 0)
+              cell->set_refine_flag();
+            for (const PointResolution &p : resolve)
+              if (cell_size(cell) * (1 - 1e-9) > p.size)
+                for (const unsigned int v : cell->vertex_indices())
+                  if ((cell->vertex(v) - p.point).norm() <=
+                      1e-8 * cell->diameter())
+                    cell->set_refine_flag();
+          }
         tria.execute_coarsening_and_refinement();
       }
     check_crack_vertices();

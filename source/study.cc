@@ -206,7 +206,14 @@ namespace bilayer
                     ExcMessage("adaptive cycle " + std::to_string(cycle) +
                                " needs cycle " + std::to_string(cycle - 1) +
                                " of the same study first"));
-        domain.refine(indicators);
+        // The cells at a tip whose support of theta holds too few of them
+        // are refined as well (G is asked for at every tip).
+        std::vector<PointResolution> resolve;
+        for (const CrackTip &tip : tips)
+          if (tip.defined())
+            resolve.push_back(
+              {tip.point, tip.support_radius / min_cells_per_support_radius});
+        domain.refine(indicators, resolve);
       }
     else
       domain.create_meshes(cycle);

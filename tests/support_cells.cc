@@ -20,6 +20,14 @@
 // 6. Mesh/Fit crack tips with a tip within half a cell of an end of Sigma
 //    (x = -0.97 and its mirror 0.97, 16 cells) or of the other tip (-0.5,
 //    -0.45): each tip becomes a mesh vertex and the run passes.
+// 7. Adaptive refinement refines the cells at a tip whose support holds too
+//    few of them, whatever the indicators say: the crack (-0.5, 0.9) on 16
+//    cells (0.125) with Mesh/Fit crack tips has the automatic radius
+//    R = 0.05 at the tip x = 0.9 (half its distance to the clamped side),
+//    a tip in the contact zone that the indicators do not refine. Each
+//    cycle halves the cells at the tip: 0.0625 > R on cycle 1, 0.03125 <= R
+//    on cycle 2, so G is NaN on cycles 0 and 1 and finite from cycle 2 on,
+//    and the run passes.
 
 #include <bilayer/fracture.h>
 #include <bilayer/parameters.h>
@@ -210,4 +218,29 @@ main()
                 << ": meshed (the tips are vertices) and the run passes: "
                 << yes(study.run()) << std::endl;
     }
+  // 7.
+  {
+    std::ostringstream sink;
+    Study              study(scene_from_string(
+                  scene("subsection Geometry\n set Crack interval on Sigma "
+                                     "= -0.5, 0.9\nend\n"
+                                     "subsection Mesh\n set Cells along Sigma = 16\n"
+                                     " set Fit crack tips = true\n"
+                                     " set Refinement = adaptive\n"
+                                     " set Number of cycles = 4\nend\n"),
+                  "support_cells"),
+                sink);
+    const bool         accepted = study.run();
+    const auto        &records  = study.records();
+    bool               pattern  = records.size() == 4;
+    for (unsigned int c = 0; pattern && c < records.size(); ++c)
+      pattern = records[c].release.size() == 2 &&
+                std::isfinite(records[c].release[0].G) &&
+                std::isnan(records[c].release[1].G) == (c < 2);
+    std::cout << "adaptive, the automatic R = 0.05 at x = 0.9 on cells of "
+                 "0.125: the cells at the tip are refined, G not resolved "
+                 "on cycles 0 and 1, finite from cycle 2 on, the run "
+                 "passes: "
+              << yes(accepted && pattern) << std::endl;
+  }
 }

@@ -9,6 +9,7 @@
 #include <bilayer/parameters.h>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <vector>
@@ -40,6 +41,24 @@ namespace bilayer
       return static_cast<dealii::types::boundary_id>(side);
     }
   } // namespace BoundaryIds
+
+  /**
+   * The size of a cell as the cells at a crack tip are measured: sqrt(area)
+   * for a quadrilateral, sqrt(2 area) for a triangle (the side of the square
+   * of two).
+   */
+  inline double
+  cell_size(const dealii::Triangulation<2>::active_cell_iterator &cell)
+  {
+    return std::sqrt(cell->measure() * (cell->n_vertices() == 3 ? 2. : 1.));
+  }
+
+  /// A point of a mesh whose cells must be no larger than @p size.
+  struct PointResolution
+  {
+    dealii::Point<2> point;
+    double           size = 0;
+  };
 
   /// Size data of one subdomain mesh (the columns of the paper's Table 1).
   struct MeshStatistics
@@ -80,9 +99,15 @@ namespace bilayer
      * single precision, so that indicators equal up to round-off (cells of
      * symmetric meshes) tie and refine together, and indicators scaled by a
      * power of two mark exactly the same cells.
+     *
+     * Besides, every active cell that has one of the points of @p resolve
+     * as a vertex and is larger (cell_size()) than that point's size is
+     * refined: the cells at a crack tip are refined until the support of
+     * its velocity field theta holds them (fracture.h).
      */
     void
-    refine(const std::array<dealii::Vector<double>, 2> &indicators);
+    refine(const std::array<dealii::Vector<double>, 2> &indicators,
+           const std::vector<PointResolution>          &resolve = {});
 
     const dealii::Triangulation<2> &
     triangulation(const Subdomain subdomain) const;
