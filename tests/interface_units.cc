@@ -394,6 +394,13 @@ namespace
           mu(half, half, MultiplierMesh::finer_trace)[0].breakpoints == half &&
             mu(half, half, MultiplierMesh::coarser_trace)[0].breakpoints ==
               half);
+    // A tie between different traces: 2 segments each on the one macro
+    // segment [0, 1] (only the ends shared).
+    check("tie between 0 0.25 1 and 0 0.75 1: Omega-, either rule",
+          mu({0, 0.25, 1}, {0, 0.75, 1}, MultiplierMesh::finer_trace)[0]
+                .breakpoints == std::vector<double>({0, 0.25, 1}) &&
+            mu({0, 0.25, 1}, {0, 0.75, 1}, MultiplierMesh::coarser_trace)[0]
+                .breakpoints == std::vector<double>({0, 0.25, 1}));
     // Macro segments [0, 0.5] (Omega- finer) and [0.5, 1] (Omega+ finer).
     const std::vector<double> left  = {0, 0.25, 0.5, 1},
                               right = {0, 0.5, 0.75, 1};
