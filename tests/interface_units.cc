@@ -285,6 +285,39 @@ namespace
             close(reversed.crack().pieces()[0].end, r2 + 0.5));
   }
 
+  /// The ends of Sigma on Gamma_D and the chord flags under reverse().
+  void
+  ends_and_reverse()
+  {
+    std::cout << "InterfaceCurve: clamped ends and reverse()\n";
+    InterfaceCurve curve = corner_curve();
+    const double   r2    = std::sqrt(2.);
+    // Omega- clamped at s_begin only, Omega+ at both ends.
+    curve.set_clamped_ends({{{{true, false}}, {{true, true}}}});
+    check("on Gamma_D: s_begin (both sides), not s_end (Omega- free there)",
+          curve.on_gamma_d(0.) && !curve.on_gamma_d(1 + r2) &&
+            curve.on_gamma_d(1 + r2, 1) && !curve.on_gamma_d(1 + r2, 0) &&
+            !curve.on_gamma_d(1.));
+    // Three chords of one curve, the second junction a true corner: the
+    // flags follow their junctions when the direction is reversed.
+    auto pieces = std::vector<InterfaceCurve::Piece>(
+      {segment_piece(Point<2>(0, 0), Point<2>(1, 0)),
+       segment_piece(Point<2>(1, 0), Point<2>(2, 0.1)),
+       segment_piece(Point<2>(2, 0.1), Point<2>(2, 1))});
+    pieces[1].continues = true;
+    InterfaceCurve chords(pieces, 0.);
+    const double   l0 = 1, l1 = std::sqrt(1.01), l2 = 0.9;
+    Tensor<1, 2>   before, after;
+    check("chords: no corner at s = 1, a corner at s = 1 + sqrt(1.01)",
+          !chords.corner(l0, before, after) &&
+            chords.corner(l0 + l1, before, after));
+    chords.reverse();
+    check("reversed chords: a corner at s = 0.9, none at 0.9 + sqrt(1.01)",
+          chords.corner(l2, before, after) &&
+            !chords.corner(l2 + l1, before, after));
+    std::cout << "  description: " << chords.description() << "\n";
+  }
+
   // ------------------------------------------------------------------
   void
   circular_arc()
@@ -841,6 +874,7 @@ main()
   std::cout << std::setprecision(6);
   straight_sigma();
   polygonal_sigma();
+  ends_and_reverse();
   circular_arc();
   mortar_choice();
   multiplier_nodes();
