@@ -298,6 +298,11 @@ namespace
           curve.on_gamma_d(0.) && !curve.on_gamma_d(1 + r2) &&
             curve.on_gamma_d(1 + r2, 1) && !curve.on_gamma_d(1 + r2, 0) &&
             !curve.on_gamma_d(1.));
+    curve.reverse();
+    check("reversed: the ends swap (s_end on Gamma_D, s_begin only for "
+          "Omega+)",
+          curve.on_gamma_d(1 + r2) && !curve.on_gamma_d(0.) &&
+            curve.on_gamma_d(0., 1));
     // Three chords of one curve, the second junction a true corner: the
     // flags follow their junctions when the direction is reversed.
     auto pieces = std::vector<InterfaceCurve::Piece>(
