@@ -236,10 +236,14 @@ namespace bilayer
       cracks.push_back(
         {start + (start + length - c.end), start + (start + length - c.start)});
     std::reverse(cracks.begin(), cracks.end());
-    *this  = InterfaceCurve(reversed, start);
-    crack_ = CrackSet(cracks, tolerance());
-    for (auto &ends : clamped_ends)
+    // The clamped ends, kept across the assignment below (which resets
+    // them) and swapped: the end at s_begin is the old end at s_end.
+    auto clamped = clamped_ends;
+    for (auto &ends : clamped)
       std::swap(ends[0], ends[1]);
+    *this        = InterfaceCurve(reversed, start);
+    crack_       = CrackSet(cracks, tolerance());
+    clamped_ends = clamped;
   }
 
 
