@@ -538,13 +538,13 @@ namespace bilayer
         for (unsigned int t = 0; t < record.release.size(); ++t)
           {
             // G at this tip on this cycle and the consecutive ones before
-            // it (the last three are used).
+            // it (the last four are used).
             std::vector<double> sequence = {record.release[t].G};
             unsigned int        expected = record.cycle;
             for (auto previous = cycle_records.rbegin();
                  previous != cycle_records.rend() && expected > 0 &&
                  previous->cycle + 1 == expected &&
-                 t < previous->release.size() && sequence.size() < 3;
+                 t < previous->release.size() && sequence.size() < 4;
                  ++previous, --expected)
               sequence.insert(sequence.begin(), previous->release[t].G);
             set_g_error(record.release[t], g_error_from_cycles(sequence));
