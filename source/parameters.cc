@@ -780,11 +780,13 @@ namespace bilayer
                       "together; each layer's share is not a domain "
                       "integral: scripts/crack_growth) by the domain "
                       "integral of docs/fracture.md [stress x length], "
-                      "with an error bar dG [stress x length]: the larger of "
-                      "the change of G over the last cycles (extrapolated "
-                      "by their contraction) and |G(R) - G(R/2)| on the "
-                      "same mesh (R the support radius), where available "
-                      "(docs/fracture.md, The error bar of G).");
+                      "with an error bar dG [stress x length]: the largest "
+                      "of the last three changes of G over the cycles, "
+                      "their geometric extrapolation where they contract, "
+                      "and |G(R) - G(R/2)| on the same mesh (R the support "
+                      "radius), where available (docs/fracture.md, section "
+                      "4: an estimate of the error, not a guaranteed "
+                      "bound).");
     prm.declare_entry("Support radius",
                       "0",
                       Patterns::Double(0),
