@@ -410,7 +410,10 @@ namespace bilayer
                 << json(g.tip.direction[1] + 0.)
                 << "], \"support_radius\": " << json(g.tip.support_radius)
                 << ", \"G\": " << json(g.G)
-                << ", \"G_contact\": " << json(g.contact) << "}";
+                << ", \"G_contact\": " << json(g.contact)
+                << ", \"G_error\": " << json(g.error)
+                << ", \"G_error_estimate\": " << json(g.error_estimate)
+                << ", \"G_half_support\": " << json(g.G_half_support) << "}";
           }
         out << "]}";
       }
@@ -419,15 +422,21 @@ namespace bilayer
 
 
   void
-  write_csv_table(std::ostream &out, const std::vector<CycleRecord> &records)
+  write_csv_table(std::ostream                   &out,
+                  const std::vector<CycleRecord> &records,
+                  const bool                      along_x)
   {
     const std::vector<const RecordField *> columns = csv_fields();
     // The fields, then G at each tip (the tips are the same in every cycle).
     const unsigned int n_tips = records.empty() ? 0 : records[0].release.size();
+    // Where the tips are: '#' lines before the header.
+    if (n_tips > 0)
+      for (const std::string &note : tip_notes(records[0].release, along_x))
+        out << "# " << note << '\n';
     for (unsigned int c = 0; c < columns.size(); ++c)
       out << (c ? "," : "") << columns[c]->csv_key;
     for (unsigned int t = 0; t < n_tips; ++t)
-      out << ",G_tip" << t + 1;
+      out << ",G_tip" << t + 1 << ",dG_tip" << t + 1;
     out << '\n';
     for (const CycleRecord &record : records)
       {
@@ -436,6 +445,9 @@ namespace bilayer
         for (unsigned int t = 0; t < n_tips; ++t)
           out << ","
               << (t < record.release.size() ? json(record.release[t].G) :
+                                              std::string("null"))
+              << ","
+              << (t < record.release.size() ? json(record.release[t].error) :
                                               std::string("null"));
         out << '\n';
       }
@@ -470,6 +482,10 @@ namespace bilayer
         table.add_value(header, record.release[t].G);
         table.set_precision(header, 4);
         table.set_scientific(header, true);
+        const std::string error = "dG tip " + std::to_string(t + 1);
+        table.add_value(error, record.release[t].error);
+        table.set_precision(error, 1);
+        table.set_scientific(error, true);
       }
   }
 } // namespace bilayer

@@ -779,7 +779,14 @@ namespace bilayer
                       "every crack tip of every cycle (of both layers "
                       "together; each layer's share is not a domain "
                       "integral: scripts/crack_growth) by the domain "
-                      "integral of docs/fracture.md [stress x length].");
+                      "integral of docs/fracture.md [stress x length], "
+                      "with an error bar dG [stress x length]: the largest "
+                      "of the last three changes of G over the cycles, "
+                      "their geometric extrapolation where they contract, "
+                      "and |G(R) - G(R/2)| on the same mesh (R the support "
+                      "radius), where available (docs/fracture.md, section "
+                      "4: an estimate of the error, not a guaranteed "
+                      "bound).");
     prm.declare_entry("Support radius",
                       "0",
                       Patterns::Double(0),
@@ -789,7 +796,8 @@ namespace bilayer
                       "R. 0 chooses half the distance from the tip to the "
                       "nearest other crack tip, corner of Sigma or point of "
                       "the outer boundary; a given R must be smaller than that "
-                      "distance.");
+                      "distance. G is also evaluated with R/2 (where R/2 holds "
+                      "a cell at the tip) for its error bar.");
     prm.leave_subsection();
   }
 

@@ -124,6 +124,7 @@ namespace bilayer
     if (scene.output.terminal == TerminalOutput::full && distribution.is_root())
       {
         out << "\n";
+        write_tip_notes(out);
         table.write_text(out, TableHandler::org_mode_table);
       }
     return true;
@@ -237,6 +238,17 @@ namespace bilayer
 
 
   void
+  Study::write_tip_notes(std::ostream &out) const
+  {
+    if (!cycle_records.empty())
+      for (const std::string &note :
+           tip_notes(cycle_records.back().release,
+                     scene.geometry.gmsh_file.empty()))
+        out << "# " << note << "\n";
+  }
+
+
+  void
   Study::check_supports(const CycleRecord &record)
   {
     const bool rectangle =
@@ -248,6 +260,7 @@ namespace bilayer
                                    scene.mesh.n_cycles - record.cycle - 1 :
                                    0;
     unresolved_tips.assign(tips.size(), "");
+    tip_cell_sizes.assign(tips.size(), 0.);
     for (unsigned int t = 0; t < tips.size(); ++t)
       {
         const CrackTip &tip = tips[t];
@@ -257,7 +270,8 @@ namespace bilayer
           support_cells(tip,
                         {{&domain.triangulation(Subdomain::minus),
                           &domain.triangulation(Subdomain::plus)}});
-        const double R = tip.support_radius;
+        tip_cell_sizes[t] = cells.size;
+        const double R    = tip.support_radius;
         if (R >= min_cells_per_support_radius * cells.size * (1 - 1e-9))
           continue;
         const double last_size =
@@ -505,6 +519,43 @@ namespace bilayer
                 std::numeric_limits<double>::quiet_NaN();
               record.release[t].unresolved = unresolved_tips[t];
             }
+        // The error bar: G once more with the support radius halved where
+        // R/2 still holds enough cells (the same mesh: a single-mesh
+        // indicator), and the sequence of G over the cycles.
+        std::vector<CrackTip> halved = tips;
+        bool                  any    = false;
+        for (unsigned int t = 0; t < halved.size(); ++t)
+          {
+            const bool resolved =
+              tips[t].defined() && unresolved_tips[t].empty() &&
+              0.5 * tips[t].support_radius >=
+                min_cells_per_support_radius * tip_cell_sizes[t] * (1 - 1e-9);
+            halved[t].support_radius =
+              resolved ? 0.5 * tips[t].support_radius : 0.;
+            any = any || resolved;
+          }
+        if (any)
+          {
+            const std::vector<EnergyReleaseRate> half =
+              energy_release_rates(subproblem_views(), coupling, w, mu, halved);
+            for (unsigned int t = 0; t < half.size(); ++t)
+              if (halved[t].defined())
+                record.release[t].G_half_support = half[t].G;
+          }
+        for (unsigned int t = 0; t < record.release.size(); ++t)
+          {
+            // G at this tip on this cycle and the consecutive ones before
+            // it (the last four are used).
+            std::vector<double> sequence = {record.release[t].G};
+            unsigned int        expected = record.cycle;
+            for (auto previous = cycle_records.rbegin();
+                 previous != cycle_records.rend() && expected > 0 &&
+                 previous->cycle + 1 == expected &&
+                 t < previous->release.size() && sequence.size() < 4;
+                 ++previous, --expected)
+              sequence.insert(sequence.begin(), previous->release[t].G);
+            set_g_error(record.release[t], g_error_from_cycles(sequence));
+          }
       }
     // The indicators mark the next adaptive cycle; their global sum is
     // reported on every mesh (and must be finite, checked below).
@@ -592,12 +643,13 @@ namespace bilayer
       write_summary_json(o, scene.name, cycle_records);
     });
     write_atomically(dir + "/table.txt", [&](std::ostream &o) {
+      write_tip_notes(o);
       table.write_text(o, TableHandler::org_mode_table);
     });
     write_atomically(dir + "/table.tex",
                      [&](std::ostream &o) { table.write_tex(o); });
     write_atomically(dir + "/table.csv", [&](std::ostream &o) {
-      write_csv_table(o, cycle_records);
+      write_csv_table(o, cycle_records, scene.geometry.gmsh_file.empty());
     });
   }
 
@@ -752,7 +804,13 @@ namespace bilayer
           pcout << "not resolved: " << g.unresolved << "\n";
         else
           {
-            pcout << g.G << " (";
+            pcout << "G = " << g.G;
+            if (std::isfinite(g.error))
+              pcout << " ± " << std::setprecision(1) << g.error
+                    << std::setprecision(4) << " (error estimate from the "
+                    << g.error_estimate << "; ";
+            else
+              pcout << " ± ? (error estimate " << g.error_estimate << "; ";
             if (g.tip.arc)
               pcout << "contact term " << g.contact << "; ";
             pcout << std::defaultfloat << std::setprecision(3)

@@ -127,18 +127,28 @@ main()
     }
   std::cout << "summary.json has every key of the contract: " << yes(all_keys)
             << std::endl;
+  // Where the tips are ("# tip k: ...", one per tip), then the header.
   std::ifstream csv("results/table.csv");
   std::string   header;
-  std::getline(csv, header);
+  while (std::getline(csv, header) && header.rfind("# ", 0) == 0)
+    std::cout << "table.csv note: " << header << std::endl;
   std::cout << "table.csv header: " << header << std::endl;
-  // The fields, then G at each of the two crack tips.
+  // The fields, then G and its error bar at each of the two crack tips.
   std::string keys_csv;
   for (const std::string &key : CycleRecord::csv_keys())
     keys_csv += (keys_csv.empty() ? "" : ",") + key;
-  keys_csv += ",G_tip1,G_tip2";
+  keys_csv += ",G_tip1,dG_tip1,G_tip2,dG_tip2";
   if (header != keys_csv)
     std::cout << "table.csv header is not CycleRecord::csv_keys(): " << keys_csv
               << std::endl;
+  // table.txt: the same notes, then the table with G and dG at each tip.
+  std::ifstream table_txt("results/table.txt");
+  while (std::getline(table_txt, header) && header.rfind("# ", 0) == 0)
+    std::cout << "table.txt note: " << header << std::endl;
+  std::cout << "table.txt has the columns G tip k, dG tip k: "
+            << yes(header.find("| G tip 1 | dG tip 1 | G tip 2 | dG tip 2 |") !=
+                   std::string::npos)
+            << std::endl;
   // Notes (one per crack tip) start with "# ", then the header.
   std::ifstream interface_csv("results/interface-00.csv");
   unsigned int  notes = 0;

@@ -191,9 +191,12 @@ namespace bilayer
                      const std::string              &scene,
                      const std::vector<CycleRecord> &records);
 
-  /// table.csv: the header and one row per record.
+  /// table.csv: where the crack tips are ('#' lines, tip_notes(); none
+  /// without tips), the header and one row per record.
   void
-  write_csv_table(std::ostream &out, const std::vector<CycleRecord> &records);
+  write_csv_table(std::ostream                   &out,
+                  const std::vector<CycleRecord> &records,
+                  const bool                      along_x);
 
   /// Append @p record as a row of the mesh-size table.
   void

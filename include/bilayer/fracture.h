@@ -12,6 +12,7 @@
 #include <bilayer/subproblem.h>
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -128,7 +129,45 @@ namespace bilayer
     /// support of theta holds too few cells (support_cells()); empty if G
     /// is valid.
     std::string unresolved;
+    /// G on the same mesh with the support radius halved (R/2), NaN where
+    /// R/2 holds fewer than min_cells_per_support_radius cells at the tip
+    /// (the exact G does not depend on R, the discrete one does).
+    double G_half_support = std::numeric_limits<double>::quiet_NaN();
+    /// The error bar dG of G [stress x length] (g_error()): NaN where no
+    /// estimator is available (then error_estimate says why).
+    double error = std::numeric_limits<double>::quiet_NaN();
+    /// The estimator of @p error ("cycles", "support radius", "cycles and
+    /// support radius"), or "none: <why>".
+    std::string error_estimate;
   };
+
+  /**
+   * The error estimate of the last entry of @p G (the values of G at one
+   * tip on consecutive cycles 0, 1, ..., k; NaN where not reported) from
+   * the sequence of cycles: with the last changes d1 = |G_k - G_{k-1}|, d2
+   * = |G_{k-1} - G_{k-2}|, d3 = |G_{k-2} - G_{k-3}| (those that exist),
+   *
+   *   dG = max(d1, d2, d3, d1 r / (1 - r)),
+   *
+   * the last term only where the last two changes have one sign and
+   * contract, r = d1 / d2 < 1 (the remainder of the geometric sequence of
+   * ratio r: Aitken's extrapolation); dG = 2 d1 with two values only. G of
+   * adaptive cycles moves irregularly (docs/fracture.md, The error bar of
+   * G): the largest of three changes, not the last one, bounds the error
+   * there. NaN with fewer than two finite trailing values (cycle 0, or a
+   * tip not resolved on the cycle before).
+   */
+  double
+  g_error_from_cycles(const std::vector<double> &G);
+
+  /**
+   * The error bar of @p g on its cycle, given @p from_cycles
+   * (g_error_from_cycles() of the G of this tip so far): the larger of
+   * that and the single-mesh indicator |G(R) - G(R/2)|, whichever exist;
+   * sets g.error and g.error_estimate (NaN and "none: ..." if neither).
+   */
+  void
+  set_g_error(EnergyReleaseRate &g, const double from_cycles);
 
   /// The support radius of theta must be at least this many times the size
   /// of the cells at the tip: theta falls from 1 to 0 on R/2 < r < R, and
@@ -173,8 +212,18 @@ namespace bilayer
   tip_position(const CrackTip &tip, const bool along_x);
 
   /**
+   * One line per tip for the heads of table.txt and table.csv (after "# "):
+   * "tip k: x = ..., grows towards -x" (on a straight horizontal Sigma along
+   * x) or "tip k: s = ..., (x, y) = (..., ...), grows along (..., ...)":
+   * which tip the columns G tip k, dG tip k describe.
+   */
+  std::vector<std::string>
+  tip_notes(const std::vector<EnergyReleaseRate> &release, const bool along_x);
+
+  /**
    * One line per tip for the head of interface-NN.csv: where the tip is,
-   * its direction of growth, G and its parts, the support radius.
+   * its direction of growth, G and its parts, the error bar dG and its
+   * estimator, the support radius.
    */
   std::vector<std::string>
   release_notes(const std::vector<EnergyReleaseRate> &release,

@@ -133,6 +133,10 @@ namespace bilayer
     /// unresolved_tips why G is not reported at a tip on this cycle.
     void
     check_supports(const CycleRecord &record);
+    /// "# tip k: <where>, grows towards ..." for each crack tip (none
+    /// without tips): the head of table.txt and of the terminal's table.
+    void
+    write_tip_notes(std::ostream &out) const;
     /// The subproblems of the present layers, assembled and factorised as
     /// parallel tasks.
     void
@@ -194,6 +198,9 @@ namespace bilayer
     /// Per tip: why its support holds too few cells of this cycle's meshes
     /// (empty where it holds enough).
     std::vector<std::string> unresolved_tips;
+    /// Per tip: the size of the largest cell at it on this cycle's meshes
+    /// (support_cells()), 0 where G is not defined.
+    std::vector<double> tip_cell_sizes;
     /// Error indicators of the last cycle, per subdomain (adaptive
     /// refinement).
     std::array<dealii::Vector<double>, Layout::n_subdomains> indicators;

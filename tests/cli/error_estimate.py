@@ -67,10 +67,11 @@ with tempfile.TemporaryDirectory() as work:
         rate_eta = math.log(cycles[i - 1]["eta"] / cycles[i]["eta"]) / math.log(h[i - 1] / h[i])
         check("Example 1, cycles %d-%d: h-rates of e_h %.3f and eta %.3f within 0.1"
               % (i - 1, i, rate_e, rate_eta), abs(rate_e - rate_eta) <= 0.1)
-    rows = list(csv.DictReader(open(os.path.join(directory, "table.csv"))))
+    rows = list(csv.DictReader(l for l in open(os.path.join(directory, "table.csv"))
+                               if not l.startswith("#")))
     check("table.csv has eta, as in summary.json",
           len(rows) == len(cycles) and
           all(abs(float(r["eta"]) - c["eta"]) <= 1e-12 * c["eta"] for r, c in zip(rows, cycles)))
-    header = open(os.path.join(directory, "table.txt")).readline()
+    header = next(l for l in open(os.path.join(directory, "table.txt")) if not l.startswith("#"))
     check("table.txt has a column eta", "| eta" in header)
 sys.exit(1 if failures else 0)
