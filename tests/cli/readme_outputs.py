@@ -128,6 +128,8 @@ def main(argv):
         return 2
     bilayer, source = argv[1], argv[2]
     tables = readme_tables(os.path.join(source, "README.md"))
+    with open(os.path.join(source, "README.md"), encoding="utf-8") as f:
+        readme = f.read()
     work = tempfile.mkdtemp()
     out = os.path.join(work, "result")
     run = subprocess.run(
@@ -166,13 +168,23 @@ def main(argv):
             add("summary.json", json_keys({k: v for k, v in summary.items() if k != "cycles"}))
             for cycle in summary["cycles"]:
                 add("summary.json", json_keys(cycle))
-        elif f == "table.csv":
+        elif f in ("table.csv", "table.txt"):
             with open(p) as h:
-                add("table.csv", {tips(k) for k in h.readline().strip().split(",")})
-        elif f == "table.txt":
-            with open(p) as h:
+                lines = h.read().split("\n")
+            # The note lines "# tip k: <where>, grows towards ..." first: the
+            # README must show their form.
+            notes = [l for l in lines if l.startswith("#")]
+            for l in notes:
+                if not re.match(r"# tip [0-9]+: .*grows", l):
+                    add(f, ["an unexplained note line '%s'" % l])
+                elif "`# tip k:" not in readme:
+                    add(f, ["the note line '%s'" % l])
+            header = next(l for l in lines if not l.startswith("#"))
+            if f == "table.csv":
+                add("table.csv", {tips(k) for k in header.strip().split(",")})
+            else:
                 # "| cycle | P | ... | time [s] | G tip 1 |": cells between bars
-                add("table.txt", [tips(c.strip()) for c in h.readline().strip().strip("|").split("|")])
+                add("table.txt", [tips(c.strip()) for c in header.strip().strip("|").split("|")])
         elif f == "table.tex":
             with open(p) as h:
                 tex = h.read()
