@@ -746,7 +746,7 @@ namespace bilayer
         else
           {
             pcout << g.G << " (";
-            if (g.tip.arc)
+            if (g.tip.curved())
               pcout << "contact term " << g.contact << "; ";
             pcout << std::defaultfloat << std::setprecision(3)
                   << "support radius " << g.tip.support_radius << ")"
