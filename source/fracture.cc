@@ -56,6 +56,78 @@ namespace bilayer
              std::abs(ka - kb) <= 1e-6 * std::max(std::abs(ka), std::abs(kb));
     }
 
+    /// The unit tangent of @p piece at its point @p p, in the direction of
+    /// increasing s.
+    Tensor<1, 2>
+    piece_tangent(const Piece &piece, const Point<2> &p)
+    {
+      return piece.kind == Piece::Kind::segment ? piece.tau :
+                                                  arc_tangent(piece, p);
+    }
+
+    /// Whether the consecutive pieces @p a and @p b of Sigma meet with one
+    /// tangent (within an angle of 1e-6): Sigma is C1 there, only its
+    /// curvature may jump (a segment and a tangent arc, arcs of different
+    /// radii), and theta can move a tip across the junction with the field
+    /// of the closest point (ThetaField). The chords of a curve given by its
+    /// polygon (Piece::continues) turn by O(h): no such junction.
+    bool
+    smooth_junction(const Piece &a, const Piece &b)
+    {
+      if (same_shape(a, b))
+        return true;
+      if (b.continues)
+        return false;
+      const Point<2>     p  = 0.5 * (a.b + b.a);
+      const Tensor<1, 2> ta = piece_tangent(a, p), tb = piece_tangent(b, p);
+      return ta * tb > 0 && std::abs(ta[0] * tb[1] - ta[1] * tb[0]) < 1e-6;
+    }
+
+    /// The closest point of the @p piece of Sigma to @p x: its distance,
+    /// the unit tangent @p t there (direction of increasing s) and the
+    /// gradient @p grad_t of that tangent as a function of x (0 on a
+    /// segment and where the closest point is an end of an arc,
+    /// J (I - e e^T) / |x - c| inside the angles of an arc, e = (x - c) /
+    /// |x - c|).
+    double
+    closest_tangent(const Piece    &piece,
+                    const Point<2> &x,
+                    Tensor<1, 2>   &t,
+                    Tensor<2, 2>   &grad_t)
+    {
+      grad_t = Tensor<2, 2>();
+      if (piece.kind == Piece::Kind::segment)
+        {
+          t = piece.tau;
+          const double l =
+            std::clamp((x - piece.a) * piece.tau, 0., piece.length);
+          return (x - (piece.a + l * piece.tau)).norm();
+        }
+      const double       sign = piece.sweep >= 0 ? 1. : -1.;
+      const double       r    = (x - piece.centre).norm();
+      const Tensor<1, 2> e    = (x - piece.centre) / r,
+                         ea   = (piece.a - piece.centre) /
+                              piece.a.distance(piece.centre);
+      double angle = sign * std::atan2(ea[0] * e[1] - ea[1] * e[0], ea * e);
+      if (angle < 0)
+        angle += 2 * numbers::PI;
+      if (angle <= std::abs(piece.sweep))
+        {
+          t = sign * Tensor<1, 2>({-e[1], e[0]});
+          // J (I - e e^T) / r: d (J e) / dx.
+          Tensor<2, 2> J;
+          J[0][1]        = -1;
+          J[1][0]        = 1;
+          Tensor<2, 2> P = unit_symmetric_tensor<2>();
+          P -= outer_product(e, e);
+          grad_t = sign / r * (J * P);
+          return std::abs(r - piece.radius);
+        }
+      const double to_a = x.distance(piece.a), to_b = x.distance(piece.b);
+      t = arc_tangent(piece, to_a <= to_b ? piece.a : piece.b);
+      return std::min(to_a, to_b);
+    }
+
     double
     distance_to_segment(const Point<2> &p, const Point<2> &a, const Point<2> &b)
     {
@@ -173,17 +245,54 @@ namespace bilayer
           }
         // Obstacles: the ends of the chain, the other pieces, the other
         // tips, the outer boundary.
-        double d = std::min((tip.point - pieces[first].a).norm(),
-                            (tip.point - pieces[last].b).norm());
-        for (unsigned int j = 0; j < pieces.size(); ++j)
-          if (j < first || j > last)
-            d = std::min(d, InterfaceCurve::distance(pieces[j], tip.point));
-        for (const CrackTip &other : tips)
-          if (&other != &tip)
-            d = std::min(d, (other.point - tip.point).norm());
-        for (const auto *tria : meshes)
-          if (tria != nullptr)
-            d = std::min(d, distance_to_outer_boundary(tip.point, *tria));
+        const auto obstacles = [&](const unsigned int from,
+                                   const unsigned int to) {
+          double d = std::min((tip.point - pieces[from].a).norm(),
+                              (tip.point - pieces[to].b).norm());
+          for (unsigned int j = 0; j < pieces.size(); ++j)
+            if (j < from || j > to)
+              d = std::min(d, InterfaceCurve::distance(pieces[j], tip.point));
+          for (const CrackTip &other : tips)
+            if (&other != &tip)
+              d = std::min(d, (other.point - tip.point).norm());
+          for (const auto *tria : meshes)
+            if (tria != nullptr)
+              d = std::min(d, distance_to_outer_boundary(tip.point, *tria));
+          return d;
+        };
+        double d = obstacles(first, last);
+        // The chain across smooth (C1) junctions of pieces of different
+        // shape: used only where it lets theta reach farther than the chain
+        // of one shape (straight and single-circle Sigma keep the field of
+        // one line or one circle). Its support must also stay within the
+        // reach of the closest-point projection: below the radius of every
+        // arc it meets.
+        unsigned int wide_first = first, wide_last = last;
+        while (wide_first > 0 &&
+               smooth_junction(pieces[wide_first - 1], pieces[wide_first]))
+          --wide_first;
+        while (wide_last + 1 < pieces.size() &&
+               smooth_junction(pieces[wide_last], pieces[wide_last + 1]))
+          ++wide_last;
+        if (wide_first < first || wide_last > last)
+          {
+            double wide = obstacles(wide_first, wide_last);
+            for (unsigned int j = wide_first; j <= wide_last; ++j)
+              if (pieces[j].kind == Piece::Kind::arc &&
+                  InterfaceCurve::distance(pieces[j], tip.point) < wide)
+                wide = std::min(wide, pieces[j].radius);
+            const bool farther =
+              support_radius == 0 ? wide > d : support_radius >= d;
+            if (farther && wide > tol)
+              {
+                d = wide;
+                // The points of Sigma closest to the support: within 2 R of
+                // the tip, R < wide.
+                for (unsigned int j = wide_first; j <= wide_last; ++j)
+                  if (InterfaceCurve::distance(pieces[j], tip.point) < 2 * wide)
+                    tip.chain.push_back(pieces[j]);
+              }
+          }
         // 0: the tip sits on a corner of Sigma, G is not defined.
         const double free_distance = d > tol ? d : 0.;
         if (free_distance == 0)
@@ -262,12 +371,61 @@ namespace bilayer
   }
 
 
+  void
+  ThetaField::junction_tangent(const Point<2> &x,
+                               Tensor<1, 2>   &T,
+                               Tensor<2, 2>   &grad_T) const
+  {
+    // The piece of Sigma closest to x; the regions of two pieces meet on
+    // the normal line at their junction, where both tangents agree.
+    double best = std::numeric_limits<double>::max();
+    for (const Piece &piece : tip.chain)
+      {
+        Tensor<1, 2> t;
+        Tensor<2, 2> g;
+        const double distance = closest_tangent(piece, x, t, g);
+        if (distance < best)
+          {
+            best   = distance;
+            T      = tip.sign * t;
+            grad_T = tip.sign * g;
+          }
+      }
+  }
+
+
+  double
+  ThetaField::curvature(const Point<2> &x, const Tensor<1, 2> &nu) const
+  {
+    if (tip.chain.empty())
+      return ((tip.centre - x) * nu) / (tip.radius * tip.radius);
+    double       best  = std::numeric_limits<double>::max();
+    const Piece *where = nullptr;
+    for (const Piece &piece : tip.chain)
+      {
+        const double distance = InterfaceCurve::distance(piece, x);
+        if (distance < best)
+          best = distance, where = &piece;
+      }
+    if (where == nullptr || where->kind == Piece::Kind::segment)
+      return 0;
+    return ((where->centre - x) * nu) / (where->radius * where->radius);
+  }
+
+
   Tensor<1, 2>
   ThetaField::value(const Point<2> &x) const
   {
     const double psi = cutoff((x - tip.point).norm());
     if (psi == 0)
       return Tensor<1, 2>();
+    if (!tip.chain.empty())
+      {
+        Tensor<1, 2> T;
+        Tensor<2, 2> grad_T;
+        junction_tangent(x, T, grad_T);
+        return psi * T;
+      }
     if (!tip.arc)
       return psi * tip.direction;
     const Tensor<1, 2> r = x - tip.centre;
@@ -285,7 +443,13 @@ namespace bilayer
     if (r >= R)
       return g;
     Tensor<1, 2> T = tip.direction;
-    if (tip.arc)
+    if (!tip.chain.empty())
+      {
+        Tensor<2, 2> grad_T;
+        junction_tangent(x, T, grad_T);
+        g = cutoff(r) * grad_T;
+      }
+    else if (tip.arc)
       {
         const Tensor<1, 2> c = x - tip.centre;
         T                    = omega / tip.radius * Tensor<1, 2>({-c[1], c[0]});
@@ -408,7 +572,7 @@ namespace bilayer
     // multiplier and the jump interpolated from its nodes).
     bool curved_contact = false;
     for (const CrackTip &tip : tips)
-      curved_contact = curved_contact || (tip.defined() && tip.arc);
+      curved_contact = curved_contact || (tip.defined() && tip.curved());
     if (curved_contact && interface.contact_parameters().non_penetration)
       {
         const MultiplierSpace &space = interface.space();
@@ -424,7 +588,7 @@ namespace bilayer
         const QGauss<1>     gauss(space.degree() + 2);
         std::vector<double> shape;
         for (unsigned int t = 0; t < n; ++t)
-          if (tips[t].defined() && tips[t].arc)
+          if (tips[t].defined() && tips[t].curved())
             for (unsigned int e = 0; e + 1 < bp.size(); ++e)
               {
                 const double mid = 0.5 * (bp[e] + bp[e + 1]);
@@ -448,8 +612,7 @@ namespace bilayer
                     const Point<2> x = curve.point(s_q);
                     // kappa: d tau / ds = kappa nu, towards the centre.
                     const double kappa =
-                      ((tips[t].centre - x) * curve.normal(s_q)) /
-                      (tips[t].radius * tips[t].radius);
+                      fields[t].curvature(x, curve.normal(s_q));
                     result[t].contact -=
                       tips[t].sign *
                       fields[t].cutoff((x - tips[t].point).norm()) * kappa *

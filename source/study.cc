@@ -811,7 +811,7 @@ namespace bilayer
                     << g.error_estimate << "; ";
             else
               pcout << " ± ? (error estimate " << g.error_estimate << "; ";
-            if (g.tip.arc)
+            if (g.tip.curved())
               pcout << "contact term " << g.contact << "; ";
             pcout << std::defaultfloat << std::setprecision(3)
                   << "support radius " << g.tip.support_radius << ")"

@@ -52,6 +52,14 @@ namespace bilayer
     dealii::Point<2> centre;
     double           radius = 0;
     /**
+     * Empty where Sigma within the support of theta is one straight line or
+     * one circle (the fields above). Otherwise the support reaches a smooth
+     * (C1) junction of pieces of different shape (a segment and a tangent
+     * arc, arcs of different radii): the pieces of Sigma that theta sees,
+     * T(x) is the unit tangent at the closest point of these pieces.
+     */
+    std::vector<InterfaceCurve::Piece> chain;
+    /**
      * Outer radius R of the support of theta; 0 where G is not defined:
      * the tip sits on a corner of Sigma (G is a derivative along a smooth
      * Sigma).
@@ -66,6 +74,17 @@ namespace bilayer
     defined() const
     {
       return support_radius > 0;
+    }
+
+    /// Whether Sigma is curved somewhere in the support of theta (then G
+    /// has the contact term of a curved crack).
+    bool
+    curved() const
+    {
+      bool any = arc;
+      for (const auto &piece : chain)
+        any = any || piece.kind == InterfaceCurve::Piece::Kind::arc;
+      return any;
     }
   };
 
@@ -86,7 +105,11 @@ namespace bilayer
    * T the direction of growth (straight Sigma) or the rotation about the
    * arc's centre that is that direction at the tip (tangent to the arc
    * everywhere), and psi = 1 for r <= R/2, falling to 0 at r = R as a
-   * quintic with two continuous derivatives.
+   * quintic with two continuous derivatives. Across a smooth junction
+   * (CrackTip::chain) T is the unit tangent of Sigma at the closest point,
+   * oriented along the growth: constant on the region of a segment,
+   * +-J (x - c) / |x - c| on that of an arc (continuous and Lipschitz: the
+   * normal line at the junction separates the regions).
    */
   class ThetaField
   {
@@ -96,6 +119,12 @@ namespace bilayer
     /// psi at distance @p r from the tip.
     double
     cutoff(const double r) const;
+
+    /// The curvature kappa of Sigma at its point @p x (d tau / ds = kappa
+    /// nu with @p nu the normal there): 0 on a segment, +-1 / radius on an
+    /// arc.
+    double
+    curvature(const dealii::Point<2> &x, const dealii::Tensor<1, 2> &nu) const;
 
     dealii::Tensor<1, 2>
     value(const dealii::Point<2> &x) const;
@@ -115,6 +144,12 @@ namespace bilayer
     const CrackTip tip;
     /// Rotation of the arc field: grad T = omega J / radius.
     double omega = 0;
+
+    /// T(x) and grad T(x) across a smooth junction (CrackTip::chain).
+    void
+    junction_tangent(const dealii::Point<2> &x,
+                     dealii::Tensor<1, 2>   &T,
+                     dealii::Tensor<2, 2>   &grad_T) const;
   };
 
   /// G at one tip, in total and its parts [stress x length].
