@@ -794,7 +794,10 @@ namespace bilayer
                       "theta around each tip [length]: theta moves the tip "
                       "rigidly for r <= R/2 and falls smoothly to zero at r = "
                       "R. 0 chooses half the distance from the tip to the "
-                      "nearest other crack tip, corner of Sigma or point of "
+                      "nearest other crack tip, corner of Sigma (a kink: "
+                      "smooth junctions of segments and arcs are crossed, "
+                      "then R is at most half the smallest arc radius "
+                      "within reach), other piece of Sigma or point of "
                       "the outer boundary; a given R must be smaller than that "
                       "distance. G is also evaluated with R/2 (where R/2 holds "
                       "a cell at the tip) for its error bar.");
