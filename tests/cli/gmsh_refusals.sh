@@ -54,6 +54,16 @@ running() {
   local state
   state=$(ps -o stat= -p "$1" 2> /dev/null) && [[ $state != Z* ]]
 }
+# still_running PID: whether the process still runs after up to 5 s (a
+# loaded machine may take a while to end and reap a killed process).
+still_running() {
+  local _
+  for _ in $(seq 100); do
+    running "$1" || return 1
+    sleep 0.05
+  done
+  return 0
+}
 
 # refuse NAME EXPECTED-FRAGMENT [--set ...]: scene.prm (scene.geo) refused
 # (bilayer run with PATH=$run_path where set).
@@ -302,8 +312,7 @@ cp two_cracks.prm scene.prm
 rm -f gmsh.pid
 run_path=$work/fakebin:$PATH refuse "gmsh that hangs" "gmsh was stopped after 1 s" \
   --set "Mesh/Gmsh time limit=1"
-sleep 0.2
-if [[ ! -s gmsh.pid ]] || running "$(cat gmsh.pid)"; then
+if [[ ! -s gmsh.pid ]] || still_running "$(cat gmsh.pid)"; then
   echo "gmsh that hangs: no (gmsh still runs)"; failures=$((failures + 1))
 fi
 # stopped SIGNAL: bilayer stopped by SIGNAL while gmsh hangs.
@@ -316,10 +325,9 @@ stopped() {
   kill -"$signal" "$run"
   { wait "$run"; } 2> /dev/null
   local rc=$?
-  sleep 0.3
   [[ $rc -eq $((128 + $(kill -l "$signal"))) ]] || why="exit status $rc"
   [[ -s gmsh.pid ]] || why="$why; gmsh did not start"
-  ! running "$(cat gmsh.pid)" || why="$why; gmsh still runs"
+  ! still_running "$(cat gmsh.pid)" || why="$why; gmsh still runs"
   [[ $signal == KILL || -z $(ls tmp) ]] || why="$why; temporary directory left"
   report "bilayer stopped by SIG$signal while gmsh runs" "$why"
   rm -rf tmp/*
