@@ -208,7 +208,8 @@ namespace bilayer
                                " needs cycle " + std::to_string(cycle - 1) +
                                " of the same study first"));
         // The cells at a tip whose support of theta holds too few of them
-        // are refined as well (G is asked for at every tip).
+        // (support_holds()) are refined as well (G is asked for at every
+        // tip).
         std::vector<PointResolution> resolve;
         for (const CrackTip &tip : tips)
           if (tip.defined())
@@ -272,12 +273,11 @@ namespace bilayer
                           &domain.triangulation(Subdomain::plus)}});
         tip_cell_sizes[t] = cells.size;
         const double R    = tip.support_radius;
-        if (R >= min_cells_per_support_radius * cells.size * (1 - 1e-9))
+        if (support_holds(R, cells.size))
           continue;
         const double last_size =
           uniform ? std::ldexp(cells.size, -int(n_later)) : cells.size;
-        const bool last_resolved =
-          R >= min_cells_per_support_radius * last_size * (1 - 1e-9);
+        const bool         last_resolved = support_holds(R, last_size);
         std::ostringstream m;
         m << std::setprecision(3);
         if (scene.fracture.support_radius > 0)
@@ -528,8 +528,7 @@ namespace bilayer
           {
             const bool resolved =
               tips[t].defined() && unresolved_tips[t].empty() &&
-              0.5 * tips[t].support_radius >=
-                min_cells_per_support_radius * tip_cell_sizes[t] * (1 - 1e-9);
+              support_holds(0.5 * tips[t].support_radius, tip_cell_sizes[t]);
             halved[t].support_radius =
               resolved ? 0.5 * tips[t].support_radius : 0.;
             any = any || resolved;

@@ -210,6 +210,16 @@ namespace bilayer
   /// smooth there and releases nothing (G -> 0 as R -> 0 at a fixed mesh).
   constexpr double min_cells_per_support_radius = 1;
 
+  /// Whether a support of radius @p radius holds the cells of size
+  /// @p cell_size at its tip: R >= min_cells_per_support_radius h, up to
+  /// round-off (Geometry::refine refines the cells at a tip as long as this
+  /// fails).
+  inline bool
+  support_holds(const double radius, const double cell_size)
+  {
+    return radius >= min_cells_per_support_radius * cell_size * (1 - 1e-9);
+  }
+
   /// The cells at a crack tip (support_cells()).
   struct TipCells
   {
