@@ -7,7 +7,7 @@
 // FE_Q(p)^4 = (u1, u2, v1, v2), and the layers are glued on all of Sigma by
 // the constraints v = u at every dof on Sigma. The crack is closed: layer 1
 // and layer 2 are continuous across Sigma. The clamped sides, the
-// prescribed displacements, the moduli (PlaneStrainLaw) and the tractions
+// prescribed displacements, the moduli (ElasticLaw) and the tractions
 // are those of the scene. The matrix is assembled with the constraints
 // condensed (deal.II's AffineConstraints) and factorised by bilayer's
 // SparseCholesky (CHOLMOD supernodal, its ordering, the BLAS the process
@@ -56,8 +56,8 @@
 
 #include <bilayer/build_info.h>
 #include <bilayer/cholesky.h>
+#include <bilayer/elastic_law.h>
 #include <bilayer/geometry.h>
-#include <bilayer/material.h>
 #include <bilayer/parameters.h>
 
 #include <array>
@@ -180,8 +180,8 @@ namespace
   public:
     explicit GluedProblem(const Scene &scene)
       : scene(scene)
-      , law{{PlaneStrainLaw(scene.materials.layer[0]),
-             PlaneStrainLaw(scene.materials.layer[1])}}
+      , law{{make_elastic_law(scene.materials.layer[0]),
+             make_elastic_law(scene.materials.layer[1])}}
       , dofs(triangulation)
     {}
 
@@ -286,7 +286,6 @@ namespace
       for (unsigned int i = 0; i < n; ++i)
         layer_of[i] = fe->system_to_component_index(i).first / 2;
       std::vector<SymmetricTensor<2, 2>>   eps(n);
-      std::vector<double>                  div(n);
       FullMatrix<double>                   cell_matrix(n, n);
       Vector<double>                       cell_rhs(n);
       Vector<double>                       t(2);
@@ -300,18 +299,14 @@ namespace
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               for (unsigned int i = 0; i < n; ++i)
-                {
-                  const auto &layer = displacement[layer_of[i]];
-                  eps[i]            = fe_values[layer].symmetric_gradient(i, q);
-                  div[i]            = fe_values[layer].divergence(i, q);
-                }
+                eps[i] =
+                  fe_values[displacement[layer_of[i]]].symmetric_gradient(i, q);
               const double JxW = fe_values.JxW(q);
               for (unsigned int i = 0; i < n; ++i)
                 for (unsigned int j = i; j < n; ++j)
                   if (layer_of[i] == layer_of[j])
-                    cell_matrix(i, j) += law[layer_of[i]].energy_density(
-                                           eps[i], div[i], eps[j], div[j]) *
-                                         JxW;
+                    cell_matrix(i, j) +=
+                      law[layer_of[i]]->bilinear_form(eps[i], eps[j]) * JxW;
             }
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < i; ++j)
@@ -377,11 +372,7 @@ namespace
               fe_values[displacement[l]].get_function_symmetric_gradients(
                 solution, eps);
               for (const unsigned int q : fe_values.quadrature_point_indices())
-                pi += 0.5 *
-                      law[l].energy_density(eps[q],
-                                            trace(eps[q]),
-                                            eps[q],
-                                            trace(eps[q])) *
+                pi += 0.5 * law[l]->bilinear_form(eps[q], eps[q]) *
                       fe_values.JxW(q);
             }
           for (const auto f : cell->face_indices())
@@ -505,10 +496,10 @@ namespace
       return t;
     }
 
-    const Scene                                     scene;
-    const std::array<PlaneStrainLaw, 2>             law;
-    const std::array<FEValuesExtractors::Vector, 2> displacement = {
-      {FEValuesExtractors::Vector(0), FEValuesExtractors::Vector(2)}};
+    const Scene                                            scene;
+    const std::array<std::unique_ptr<const ElasticLaw>, 2> law;
+    const std::array<FEValuesExtractors::Vector, 2>        displacement = {
+             {FEValuesExtractors::Vector(0), FEValuesExtractors::Vector(2)}};
     Triangulation<2>             triangulation;
     std::unique_ptr<FESystem<2>> fe;
     DoFHandler<2>                dofs;

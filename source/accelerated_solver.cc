@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <bilayer/accelerated_solver.h>
+#include <bilayer/interface_diagnostics.h>
 
 #include <cmath>
 #include <limits>

@@ -2,6 +2,7 @@
 
 #include <bilayer/active_set_solver.h>
 #include <bilayer/feti_preconditioner.h>
+#include <bilayer/interface_diagnostics.h>
 #include <bilayer/progress.h>
 
 #include <cmath>
@@ -238,9 +239,8 @@ namespace bilayer
                                       interface);
     result.setup_seconds = timer.wall_time();
     timer.restart();
-    const BlockVector<double> &lower  = interface.space().lower_bounds();
-    const BlockVector<double> &upper  = interface.space().upper_bounds();
-    const auto                 finish = [&](const std::string &message) {
+    const MultiplierSet &set    = interface.space().set();
+    const auto           finish = [&](const std::string &message) {
       // The iterations solved on Sigma: the whole solutions of the last
       // multipliers.
       if (parameters.iterates_on_sigma())
@@ -252,17 +252,19 @@ namespace bilayer
       if (preconditioner.n_degraded_steps() > 0)
         result.message +=
           "; the preconditioner's Gram matrix of the free multipliers was "
-                          "singular (redundant multiplier constraints) in " +
+                    "singular (redundant multiplier constraints) in " +
           std::to_string(preconditioner.n_degraded_steps()) +
           " Newton steps, which used the diagonal scaling instead";
       result.iteration_seconds = timer.wall_time();
       return result;
     };
-    BlockVector<double> g, mask(lower), previous_mask(lower), older_mask(lower),
-      r, delta, gradient, previous_gradient, previous_mu;
-    unsigned int inner_iterations = 0, n_cycling = 0, n_stalled = 0;
-    bool         exact_steps  = false;
-    double       best_settled = std::numeric_limits<double>::infinity();
+    BlockVector<double> g, mask, r, delta, gradient, previous_gradient,
+      previous_mu;
+    set.initialize(mask);
+    BlockVector<double> previous_mask(mask), older_mask(mask);
+    unsigned int        inner_iterations = 0, n_cycling = 0, n_stalled = 0;
+    bool                exact_steps  = false;
+    double              best_settled = std::numeric_limits<double>::infinity();
     // The globalisation: the increase of Phi that the conjugate gradients
     // predict for the last Newton step (0 after a replacement step, which is
     // not tested), that step's direction and its curvature d^T F d, and the
@@ -359,10 +361,8 @@ namespace bilayer
         unsigned int n_active = 0, n_changed = 0;
         for (unsigned int i = 0; i < mu.size(); ++i)
           {
-            const bool held = !(lower(i) < upper(i)) ||
-                              (mu(i) <= lower(i) && g(i) <= 0) ||
-                              (mu(i) >= upper(i) && g(i) >= 0);
-            if (held && lower(i) < upper(i))
+            const bool held = set.held(i, mu(i), g(i));
+            if (held && set.free(i))
               ++n_active;
             const double free = held ? 0. : 1.;
             n_changed += (free != (reject ? mask(i) : previous_mask(i)));
@@ -490,14 +490,7 @@ namespace bilayer
                                            best_increase);
             const auto on_segment =
               best_on_segment(gradient * x, x * curvature, 1.);
-            double a_max = 1.;
-            for (unsigned int i = 0; i < mu.size(); ++i)
-              if (newton_direction(i) < 0)
-                a_max =
-                  std::min(a_max, (lower(i) - mu(i)) / newton_direction(i));
-              else if (newton_direction(i) > 0)
-                a_max =
-                  std::min(a_max, (upper(i) - mu(i)) / newton_direction(i));
+            const double a_max = set.step_to_boundary(mu, newton_direction, 1.);
             const auto truncated = best_on_segment(gradient * newton_direction,
                                                    newton_curvature,
                                                    a_max);
@@ -522,9 +515,8 @@ namespace bilayer
                 for (unsigned int i = 0; i < mu.size(); ++i)
                   if (reduced_mask(i) > 0 && face_step(i) != 0)
                     {
-                      const double bound =
-                        face_step(i) < 0 ? lower(i) : upper(i);
-                      const double hit = (bound - mu(i)) / face_step(i);
+                      const double bound = set.bound_towards(i, face_step(i));
+                      const double hit   = (bound - mu(i)) / face_step(i);
                       if (hit < first_hit)
                         first_hit = hit, first = i;
                     }
@@ -547,8 +539,7 @@ namespace bilayer
                 // Hold component first at the bound it crosses.
                 reduced_mask(first) = 0;
                 held(first) =
-                  (face_step(first) < 0 ? lower(first) : upper(first)) -
-                  mu(first);
+                  set.bound_towards(first, face_step(first)) - mu(first);
                 BlockVector<double> rhs(gradient), face_delta;
                 apply_dual_operator(subproblems, interface, held, Fd);
                 result.subdomain_solves += Layout::n_subproblems;

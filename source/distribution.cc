@@ -24,10 +24,11 @@ namespace bilayer
     , n_processes_(Utilities::MPI::n_mpi_processes(communicator))
     , process_(Utilities::MPI::this_mpi_process(communicator))
   {
-    if (n_processes_ > 4)
+    if (n_processes_ > Layout::n_subproblems)
       {
         const int ierr = MPI_Comm_split(communicator_,
-                                        static_cast<int>(process_ % 4),
+                                        static_cast<int>(process_ %
+                                                         Layout::n_subproblems),
                                         static_cast<int>(process_),
                                         &group_communicator_);
         AssertThrowMPI(ierr);
@@ -60,14 +61,20 @@ namespace bilayer
   bool
   Distribution::owns(const unsigned int s) const
   {
-    return n_processes_ <= 4 ? s % n_processes_ == process_ : process_ % 4 == s;
+    return n_processes_ <= Layout::n_subproblems ?
+             s % n_processes_ == process_ :
+             process_ % Layout::n_subproblems == s;
   }
 
 
   unsigned int
   Distribution::group_size(const unsigned int s) const
   {
-    return n_processes_ <= 4 ? 1 : (n_processes_ - s + 3) / 4;
+    // The processes p with p mod n_subproblems = s.
+    return n_processes_ <= Layout::n_subproblems ?
+             1 :
+             (n_processes_ - s + Layout::n_subproblems - 1) /
+               Layout::n_subproblems;
   }
 
 

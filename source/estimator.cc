@@ -2,9 +2,9 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/error_estimator.h>
 
+#include <bilayer/boundary_ids.h>
 #include <bilayer/estimator.h>
-#include <bilayer/geometry.h>
-#include <bilayer/material.h>
+#include <bilayer/interface_diagnostics.h>
 #include <bilayer/tasks.h>
 
 #include <algorithm>
@@ -96,13 +96,11 @@ namespace bilayer
                                     update_normal_vectors | update_JxW_values);
           const FEValuesExtractors::Vector   displacement(0);
           std::vector<SymmetricTensor<2, 2>> strain(face_quadrature.size());
-          const PlaneStrainLaw               law(sub.material());
-          const double                       mu_material = law.shear_modulus();
+          const ElasticLaw                  &law   = sub.law();
+          const double                       scale = law.energy_norm_scale();
           for (const auto &cell : sub.dof_handler().active_cell_iterators())
             for (const auto f : cell->face_indices())
-              if (cell->face(f)->at_boundary() &&
-                  (cell->face(f)->boundary_id() == BoundaryIds::glued ||
-                   cell->face(f)->boundary_id() == BoundaryIds::crack))
+              if (on_sigma(cell->face(f)))
                 {
                   fe_face.reinit(cell, f);
                   fe_face[displacement].get_function_symmetric_gradients(
@@ -120,14 +118,15 @@ namespace bilayer
                           s,
                           interface.curve().parameter(
                             fe_face.quadrature_point(q)));
-                      sum += (residual * residual) /
-                             (4 * mu_material * mu_material) * fe_face.JxW(q);
+                      sum += (residual * residual) / (scale * scale) *
+                             fe_face.JxW(q);
                     }
                   double term = cell->face(f)->diameter() / 24. * sum;
                   // Layer 1 on the crack: the complementarity of the segments
                   // of the mu_1 mesh under the face, by overlap.
                   if (Layout::layer(s) == Layer::first &&
-                      cell->face(f)->boundary_id() == BoundaryIds::crack)
+                      interface.curve().crack().contains(
+                        interface.curve().parameter(cell->face(f)->center())))
                     {
                       const double s0 = interface.curve().parameter(
                                      cell->face(f)->vertex(0)),
@@ -149,7 +148,7 @@ namespace bilayer
                           if (overlap > 0)
                             term += contact_weight *
                                     std::abs(it->complementarity) * overlap /
-                                    (it->b - it->a) / (2 * mu_material);
+                                    (it->b - it->a) / scale;
                         }
                     }
                   eta2[cell->active_cell_index()] += term;
@@ -172,9 +171,8 @@ namespace bilayer
                                     .get_triangulation()
                                     .n_active_cells());
               subproblems[s]->processes().share(s, squared[s]);
-              energy_estimate +=
-                2 * PlaneStrainLaw(subproblems[s]->material()).shear_modulus() *
-                squared[s].l1_norm();
+              energy_estimate += subproblems[s]->law().energy_norm_scale() *
+                                 squared[s].l1_norm();
               if (sum.size() == 0)
                 sum = squared[s];
               else

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <bilayer/first_order_iteration.h>
+#include <bilayer/interface_diagnostics.h>
 
 #include <algorithm>
 #include <cmath>

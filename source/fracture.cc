@@ -1,9 +1,8 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <bilayer/boundary_ids.h>
 #include <bilayer/fracture.h>
-#include <bilayer/geometry.h>
-#include <bilayer/material.h>
 #include <bilayer/similarity_breaker.h>
 #include <bilayer/tasks.h>
 
@@ -146,9 +145,7 @@ namespace bilayer
       double d = std::numeric_limits<double>::max();
       for (const auto &cell : tria.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() &&
-              face->boundary_id() != BoundaryIds::glued &&
-              face->boundary_id() != BoundaryIds::crack)
+          if (face->at_boundary() && !on_sigma(face))
             d = std::min(
               d, distance_to_segment(p, face->vertex(0), face->vertex(1)));
       return d;
@@ -497,7 +494,7 @@ namespace bilayer
           std::map<unsigned int, std::unique_ptr<FEValues<2>>> by_pieces;
           const SimilarityBreaker          fresh(sub.fe().reference_cell());
           const FEValuesExtractors::Vector displacement(0);
-          const PlaneStrainLaw             law(sub.material());
+          const ElasticLaw                &law = sub.law();
           std::vector<Tensor<2, 2>>        grad_u;
           for (const auto &cell : sub.dof_handler().active_cell_iterators())
             {

@@ -32,14 +32,13 @@ namespace bilayer
   Interface::jumps(const Solutions &w, BlockVector<double> &g) const
   {
     const bool weighted = contact.sampling == JumpSampling::weighted;
-    g.reinit(space_.lower_bounds(), true);
+    space_.initialize(g);
     coupling_.differences(w, weighted, g);
     for (const unsigned int b : Layout::blocks)
       if (active(b))
         for (unsigned int i = 0; i < g.block(b).size(); ++i)
           g.block(b)(i) =
-            space_.lower_bounds().block(b)(i) <
-                space_.upper_bounds().block(b)(i) ?
+            space_.set().free(b, i) ?
               g.block(b)(i) /
                 (weighted ? space_.node_weight(i / Layout::n_components, b) :
                             1.) :

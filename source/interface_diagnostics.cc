@@ -79,8 +79,7 @@ namespace bilayer
                const BlockVector<double> &mu)
   {
     const MultiplierSpace &space = interface.space();
-    const auto            &lower = space.lower_bounds();
-    const auto            &upper = space.upper_bounds();
+    const MultiplierSet   &set   = space.set();
     KKTResidual            kkt;
     const double           scale = displacement_scale(interface, w);
     // A multiplier held at a bound of its box by a jump that pushes it
@@ -88,15 +87,14 @@ namespace bilayer
     // residual. Only the bound p can hold a constraint violated this way.
     BlockVector<double> free_g(g);
     for (unsigned int i = 0; i < mu.size(); ++i)
-      if (space.free(i) && ((mu(i) >= upper(i) && g(i) >= 0) ||
-                            (mu(i) <= lower(i) && g(i) <= 0)))
+      if (set.held_at_bound(i, mu(i), g(i)))
         free_g(i) = 0;
     kkt.primal = scale > 0 ? space.discrete_violation(free_g) / scale :
                              space.discrete_violation(free_g);
     const double mu_scale = mu.linfty_norm();
     if (mu_scale > 0)
       for (unsigned int i = 0; i < mu.size(); ++i)
-        if (lower(i) == 0. && upper(i) > 0. && mu(i) < upper(i))
+        if (set.contact(i) && set.below_bound(i, mu(i)))
           {
             kkt.dual = std::max(kkt.dual, -mu(i) / mu_scale);
             if (scale > 0)
@@ -150,7 +148,7 @@ namespace bilayer
     // jump here).
     {
       BlockVector<double> nodal;
-      nodal.reinit(space.lower_bounds(), true);
+      space.initialize(nodal);
       coupling.differences(w, false, nodal);
       double largest = 0;
       for (const unsigned int b : Layout::blocks)
@@ -158,8 +156,7 @@ namespace bilayer
           for (unsigned int i = 0; i < nodal.block(b).size(); ++i)
             {
               const unsigned int a       = i / Layout::n_components;
-              const bool         carries = space.lower_bounds().block(b)(i) <
-                                   space.upper_bounds().block(b)(i);
+              const bool         carries = space.set().free(b, i);
               if (!carries && !(b == mu_1 && space.on_crack(a)))
                 largest = std::max(largest, std::abs(nodal.block(b)(i)));
             }
@@ -175,7 +172,7 @@ namespace bilayer
       for (const unsigned int c : space.contact_components(a))
         {
           const unsigned int n = Layout::entry(a, c);
-          if (space.upper_bounds().block(mu_1)(n) > 0)
+          if (space.set().contact(mu_1, n))
             {
               const double m = mu.block(mu_1)(n);
               report.min_contact_multiplier =

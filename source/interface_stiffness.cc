@@ -1,7 +1,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/sparse_matrix.h>
 
-#include <bilayer/geometry.h>
+#include <bilayer/boundary_ids.h>
 #include <bilayer/interface_stiffness.h>
 
 namespace bilayer
@@ -17,7 +17,7 @@ namespace bilayer
     const IndexSet on_sigma =
       DoFTools::extract_boundary_dofs(subproblem.dof_handler(),
                                       ComponentMask(),
-                                      {BoundaryIds::glued, BoundaryIds::crack});
+                                      {BoundaryIds::sigma});
     for (const auto i : on_sigma)
       if (!homogeneous.is_constrained(i))
         sigma_dofs.push_back(i);

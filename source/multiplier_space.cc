@@ -188,7 +188,7 @@ namespace bilayer
             mesh.dual(i, k) = integral(i) * inverse(i, k);
       }
 
-    // Multiplier sets (docs/problem.md §3) as bounds per component.
+    // The multiplier set (docs/problem.md §3), per component.
     const double    p     = contact.multiplier_bound;
     const CrackSet &crack = curve.crack();
     // The ends of Sigma on Gamma_D, per block: for the gluing across Sigma
@@ -200,13 +200,14 @@ namespace bilayer
       return b == Layout::across_sigma ?
                curve.on_gamma_d(s) :
                curve.on_gamma_d(
-                 s, static_cast<unsigned int>(Layout::gluing_subdomain(b)));
+                 s,
+                 static_cast<unsigned int>(
+                   Layout::subdomain(Layout::coupled(b).first)));
     };
     std::vector<types::global_dof_index> sizes;
     for (const auto &mesh : meshes)
       sizes.push_back(Layout::n_components * mesh.node_x.size());
-    lower.reinit(sizes);
-    upper.reinit(sizes);
+    set_.reinit(sizes);
     crack_nodes.assign(n_nodes(Layout::across_sigma), false);
     corner_nodes.assign(n_nodes(Layout::across_sigma), false);
     for (const unsigned int b : Layout::blocks)
@@ -219,18 +220,16 @@ namespace bilayer
           if (on_gamma_d(x, b))
             continue;
           for (unsigned int c = 0; c < Layout::n_components; ++c)
-            {
-              lower.block(b)(Layout::entry(a, c)) = -p;
-              upper.block(b)(Layout::entry(a, c)) = p;
-            }
+            set_.set_glued(b, Layout::entry(a, c), p);
           if (b == Layout::across_sigma && on_crack)
             {
               const unsigned int t = Layout::entry(a, Layout::tangential),
                                  n = Layout::entry(a, Layout::normal);
-              lower.block(b)(t)    = 0;
-              upper.block(b)(t)    = 0;
-              lower.block(b)(n)    = 0;
-              upper.block(b)(n)    = contact.non_penetration ? p : 0;
+              set_.set_none(b, t);
+              if (contact.non_penetration)
+                set_.set_contact(b, n, p);
+              else
+                set_.set_none(b, n);
               // A corner of Sigma: one contact constraint per piece, along
               // its normal (the mean normal would let the node slide
               // through the other face).
@@ -239,7 +238,8 @@ namespace bilayer
                 {
                   corner_nodes[a]    = true;
                   meshes[b].frame[a] = {{before, after}};
-                  upper.block(b)(t)  = upper.block(b)(n);
+                  if (contact.non_penetration)
+                    set_.set_contact(b, t, p);
                 }
             }
         }
@@ -266,14 +266,6 @@ namespace bilayer
 
 
   void
-  MultiplierSpace::project(BlockVector<double> &mu) const
-  {
-    for (unsigned int i = 0; i < mu.size(); ++i)
-      mu(i) = std::min(std::max(mu(i), lower(i)), upper(i));
-  }
-
-
-  void
   MultiplierSpace::restrict_to_free(BlockVector<double> &x) const
   {
     for (unsigned int i = 0; i < x.size(); ++i)
@@ -286,7 +278,7 @@ namespace bilayer
   MultiplierSpace::n_free() const
   {
     unsigned int count = 0;
-    for (unsigned int i = 0; i < lower.size(); ++i)
+    for (unsigned int i = 0; i < set_.size(); ++i)
       count += free(i);
     return count;
   }
@@ -323,10 +315,7 @@ namespace bilayer
   {
     double violation = 0;
     for (unsigned int i = 0; i < g.size(); ++i)
-      if (free(i))
-        violation =
-          std::max(violation,
-                   lower(i) == 0. ? std::max(g(i), 0.) : std::abs(g(i)));
+      violation = std::max(violation, set_.violation(i, g(i)));
     return violation;
   }
 

@@ -26,8 +26,8 @@ namespace bilayer
 {
   using namespace dealii;
 
-  StressPostprocessor::StressPostprocessor(const LayerMaterial &material)
-    : law(material)
+  StressPostprocessor::StressPostprocessor(const ElasticLaw &law)
+    : law(law)
   {}
 
 
@@ -60,7 +60,7 @@ namespace bilayer
         const SymmetricTensor<2, 2> stress = law.stress(strain);
         const double                szz    = law.out_of_plane_stress(strain);
         const double sxx = stress[0][0], syy = stress[1][1], sxy = stress[0][1];
-        computed_quantities[q](0) = PlaneStrainLaw::von_mises(stress, szz);
+        computed_quantities[q](0) = ElasticLaw::von_mises(stress, szz);
         computed_quantities[q](1) = sxx;
         computed_quantities[q](2) = syy;
         computed_quantities[q](3) = szz;
@@ -197,7 +197,7 @@ namespace bilayer
                                names,
                                DataOut<2>::type_dof_data,
                                interpretation);
-      stresses[s] = std::make_unique<StressPostprocessor>(sub.material());
+      stresses[s] = std::make_unique<StressPostprocessor>(sub.law());
       data_out.add_data_vector(solutions[s], *stresses[s]);
 
       const unsigned int n_cells =

@@ -603,14 +603,13 @@ namespace bilayer
     std::set<std::string> materials_constants;
     for (unsigned int l = 0; l < 2; ++l)
       {
-        const std::string n           = std::to_string(l + 1);
-        const auto       &m           = materials.layer[l];
-        constant_values["E" + n]      = m.youngs_modulus;
-        constant_values["nu" + n]     = m.poisson_ratio;
-        constant_values["mu" + n]     = m.mu();
-        constant_values["lambda" + n] = m.lambda();
-        for (const std::string name : {"E", "nu", "mu", "lambda"})
-          materials_constants.insert(name + n);
+        const std::string n = std::to_string(l + 1);
+        for (const auto &[name, value] :
+             make_elastic_law(materials.layer[l])->load_constants())
+          {
+            constant_values[name + n] = value;
+            materials_constants.insert(name + n);
+          }
       }
 
     prm.enter_subsection("Loads");

@@ -2,6 +2,7 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <bilayer/build_info.h>
+#include <bilayer/geometry.h>
 #include <bilayer/layout.h>
 #include <bilayer/resources.h>
 
@@ -165,9 +166,8 @@ namespace bilayer
           factor;
         const double height = s == Subdomain::minus ? g.sigma_height - g.y_min :
                                                       g.y_max - g.sigma_height;
-        const double n_y    = mesh.cells_across > 0 ?
-                                mesh.cells_across * factor :
-                                std::max(1., std::round(n_x * (height / width)));
+        const double n_y =
+          structured_cells_across(mesh, n_x, height, width, cycle);
         // Triangles: two per quadrilateral.
         cells[static_cast<unsigned int>(s)] =
           n_x * n_y * (mesh.shape == ElementShape::triangle ? 2 : 1);

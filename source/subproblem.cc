@@ -10,8 +10,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <bilayer/geometry.h>
-#include <bilayer/material.h>
+#include <bilayer/boundary_ids.h>
 #include <bilayer/similarity_breaker.h>
 #include <bilayer/subproblem.h>
 
@@ -29,7 +28,7 @@ namespace bilayer
                                        const Distribution     &distribution)
     : layer_(layer)
     , subdomain_(subdomain)
-    , material_(material)
+    , law_(make_elastic_law(material))
     , distribution(distribution)
     , dofs(triangulation)
   {
@@ -68,24 +67,32 @@ namespace bilayer
   {
 
 
-    /// The element matrix and the traction load of one cell.
+    /**
+     * The element matrix and the load of one cell: the tractions on its
+     * faces on Gamma_N and, with a VolumeLoad, the volume terms
+     * f . z + sigma(eps*) : eps(z).
+     */
     class CellSystem
     {
     public:
       CellSystem(const FiniteElement<2>                 &fe,
                  const Mapping<2>                       &mapping,
-                 const LayerMaterial                    &material,
+                 const ElasticLaw                       &law,
                  const std::vector<bool>                &clamped,
-                 const std::vector<const Function<2> *> &traction)
+                 const std::vector<const Function<2> *> &traction,
+                 const VolumeLoad                       *volume)
         : fe(fe)
         , clamped(clamped)
         , traction(traction)
-        , law(material)
-        , fe_values(mapping,
-                    fe,
-                    fe.reference_cell().get_gauss_type_quadrature<2>(fe.degree +
-                                                                     1),
-                    update_gradients | update_JxW_values)
+        , law(law)
+        , volume(volume)
+        , fe_values(
+            mapping,
+            fe,
+            fe.reference_cell().get_gauss_type_quadrature<2>(fe.degree + 1),
+            update_gradients | update_JxW_values |
+              (volume != nullptr ? update_values | update_quadrature_points :
+                                   update_default))
         , fe_face_values(
             mapping,
             fe,
@@ -93,7 +100,6 @@ namespace bilayer
             update_values | update_quadrature_points | update_JxW_values)
         , fresh(fe.reference_cell())
         , eps(fe.n_dofs_per_cell())
-        , div(fe.n_dofs_per_cell())
         , t(2)
         , cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
         , cell_rhs(fe.n_dofs_per_cell())
@@ -112,15 +118,20 @@ namespace bilayer
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             for (unsigned int i = 0; i < n; ++i)
-              {
-                eps[i] = fe_values[displacement].symmetric_gradient(i, q);
-                div[i] = fe_values[displacement].divergence(i, q);
-              }
+              eps[i] = fe_values[displacement].symmetric_gradient(i, q);
             const double JxW = fe_values.JxW(q);
-            for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int j = i; j < n; ++j)
-                cell_matrix(i, j) +=
-                  law.energy_density(eps[i], div[i], eps[j], div[j]) * JxW;
+            law.add_stiffness(eps, JxW, cell_matrix);
+            if (volume != nullptr)
+              {
+                const Point<2>             &x = fe_values.quadrature_point(q);
+                const Tensor<1, 2>          f = volume->body_force(x);
+                const SymmetricTensor<2, 2> s =
+                  law.stress(volume->eigenstrain(x));
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_rhs(i) +=
+                    (fe_values[displacement].value(i, q) * f + s * eps[i]) *
+                    JxW;
+              }
           }
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < i; ++j)
@@ -150,13 +161,13 @@ namespace bilayer
       const FiniteElement<2>                 &fe;
       const std::vector<bool>                 clamped;
       const std::vector<const Function<2> *> &traction;
-      const PlaneStrainLaw                    law;
+      const ElasticLaw                       &law;
+      const VolumeLoad *const                 volume;
       FEValues<2>                             fe_values;
       FEFaceValues<2>                         fe_face_values;
       const SimilarityBreaker                 fresh;
       const FEValuesExtractors::Vector        displacement{0};
       std::vector<SymmetricTensor<2, 2>>      eps;
-      std::vector<double>                     div;
       Vector<double>                          t;
 
     public:
@@ -172,7 +183,8 @@ namespace bilayer
                            const Function<2>                      &prescribed,
                            const std::vector<const Function<2> *> &traction,
                            const std::string &shared_solver_type,
-                           const bool         condense_on_sigma)
+                           const bool         condense_on_sigma,
+                           const VolumeLoad  *volume)
   {
     shared_solver = shared_solver_type;
     shared.reset();
@@ -198,7 +210,7 @@ namespace bilayer
     const IndexSet on_sigma =
       DoFTools::extract_boundary_dofs(dofs,
                                       ComponentMask(),
-                                      {BoundaryIds::glued, BoundaryIds::crack});
+                                      {BoundaryIds::sigma});
     trace_dofs_.assign(on_sigma.begin(), on_sigma.end());
     if (!owned())
       {
@@ -216,9 +228,9 @@ namespace bilayer
         system_matrix.reinit(sparsity);
         stiffness.reinit(sparsity);
         system_rhs.reinit(dofs.n_dofs());
-        traction_load.reinit(dofs.n_dofs());
+        load_vector.reinit(dofs.n_dofs());
       }
-    assemble(clamped, traction);
+    assemble(clamped, traction, volume);
     assembly_seconds = timer.wall_time();
 
     timer.restart();
@@ -283,6 +295,7 @@ namespace bilayer
           }
       }
     factorisation_seconds = timer.wall_time();
+    ++factorisations;
   }
 
 
@@ -358,9 +371,10 @@ namespace bilayer
 
   void
   ElasticSubproblem::assemble(const std::vector<bool>                &clamped,
-                              const std::vector<const Function<2> *> &traction)
+                              const std::vector<const Function<2> *> &traction,
+                              const VolumeLoad                       *volume)
   {
-    CellSystem system(*fe_system, mapping(), material_, clamped, traction);
+    CellSystem system(*fe_system, mapping(), *law_, clamped, traction, volume);
     for (const auto &cell : dofs.active_cell_iterators())
       if (shared == nullptr)
         {
@@ -371,7 +385,7 @@ namespace bilayer
                                                  system_matrix,
                                                  system_rhs);
           stiffness.add(system.local_dofs, system.cell_matrix);
-          traction_load.add(system.local_dofs, system.cell_rhs);
+          load_vector.add(system.local_dofs, system.cell_rhs);
         }
       else if (shared->assembles(cell->active_cell_index()))
         {
@@ -456,7 +470,8 @@ namespace bilayer
     // No boundary part: no tractions.
     const std::vector<bool>                no_loads;
     const std::vector<const Function<2> *> none;
-    CellSystem system_of_cell(*fe_system, mapping(), material_, no_loads, none);
+    CellSystem                             system_of_cell(
+      *fe_system, mapping(), *law_, no_loads, none, nullptr);
     for (const auto &cell : dofs.active_cell_iterators())
       if (system->assembles(cell->active_cell_index()))
         {
@@ -512,6 +527,6 @@ namespace bilayer
   ElasticSubproblem::energy(const Vector<double> &w) const
   {
     return 0.5 * energy_norm_squared(w) -
-           (shared ? shared->load_product(w) : ordered_dot(traction_load, w));
+           (shared ? shared->load_product(w) : ordered_dot(load_vector, w));
   }
 } // namespace bilayer

@@ -1,7 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <bilayer/geometry.h>
+#include <bilayer/boundary_ids.h>
 #include <bilayer/trace_coupling.h>
 
 #include <algorithm>
@@ -19,9 +19,7 @@ namespace bilayer
     std::vector<SigmaFace> result;
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            (cell->face(f)->boundary_id() == BoundaryIds::glued ||
-             cell->face(f)->boundary_id() == BoundaryIds::crack))
+        if (on_sigma(cell->face(f)))
           {
             const auto   face = cell->face(f);
             const double tol  = 1e-10 * face->diameter();

@@ -198,8 +198,11 @@ end
         for (unsigned int l = 0; l < 2; ++l)
           {
             const FEValuesExtractors::Vector displacement(2 * l);
-            const double                     mu = scene.materials.layer[l].mu();
-            const double lambda = scene.materials.layer[l].lambda();
+            // The Lame constants of the layer's E and nu (plane strain).
+            const double E      = scene.materials.layer[l].youngs_modulus;
+            const double nu     = scene.materials.layer[l].poisson_ratio;
+            const double mu     = E / (2. * (1. + nu));
+            const double lambda = 2. * nu * mu / (1. - 2. * nu);
             add_elasticity_matrix(
               fe_values, displacement, mu, lambda, cell_matrix);
           }

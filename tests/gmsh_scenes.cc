@@ -225,9 +225,7 @@ namespace
                                     .dof_handler()
                                     .get_triangulation()
                                     .active_face_iterators())
-            if (face->at_boundary() &&
-                (face->boundary_id() == BoundaryIds::glued ||
-                 face->boundary_id() == BoundaryIds::crack))
+            if (on_sigma(face))
               for (const unsigned int v : face->vertex_indices())
                 drift =
                   std::max(drift,
@@ -246,9 +244,7 @@ namespace
             if (sd == Subdomain::minus || cycle > 0)
               for (const auto &cell : tria.active_cell_iterators())
                 for (const auto &face : cell->face_iterators())
-                  if (face->at_boundary() &&
-                      (face->boundary_id() == BoundaryIds::glued ||
-                       face->boundary_id() == BoundaryIds::crack))
+                  if (on_sigma(face))
                     m[cell->active_cell_index()] = 1;
           }
         study.set_indicators(marks);

@@ -507,26 +507,28 @@ namespace
     check("corner node normal (-1, 2)/sqrt(5) (chords weighted by int phi)",
           close(space.node_normal(2),
                 Tensor<1, 2>({-1 / std::sqrt(5.), 2 / std::sqrt(5.)})));
+    const std::pair<double, double> in_0_p = {0., contact.multiplier_bound};
+    const std::pair<double, double> fixed  = {0., 0.};
     check("corner: two contact components in [0, p]",
           space.contact_components(2).size() == 2 &&
-            space.lower_bounds().block(0)(Layout::entry(2, 0)) == 0 &&
-            space.lower_bounds().block(0)(Layout::entry(2, 1)) == 0 &&
-            space.upper_bounds().block(0)(Layout::entry(2, 0)) ==
-              contact.multiplier_bound &&
-            space.upper_bounds().block(0)(Layout::entry(2, 1)) ==
-              contact.multiplier_bound);
+            space.set().contact(0, Layout::entry(2, 0)) &&
+            space.set().contact(0, Layout::entry(2, 1)) &&
+            space.set().box(0, Layout::entry(2, 0)) == in_0_p &&
+            space.set().box(0, Layout::entry(2, 1)) == in_0_p);
     const auto &g = space.node_frame(3);
     check("crack node 3: frame (tangent, normal) of piece 1, normal in "
           "[0, p], tangential fixed to 0",
           close(g[1], Tensor<1, 2>({-1 / r2, 1 / r2})) &&
             close(g[0], Tensor<1, 2>({1 / r2, 1 / r2})) &&
             space.contact_components(3).size() == 1 &&
-            space.upper_bounds().block(0)(Layout::entry(3, 0)) == 0 &&
-            space.upper_bounds().block(0)(Layout::entry(3, 1)) ==
-              contact.multiplier_bound);
+            !space.set().free(0, Layout::entry(3, 0)) &&
+            space.set().box(0, Layout::entry(3, 0)) == fixed &&
+            space.set().box(0, Layout::entry(3, 1)) == in_0_p);
     check("glued nodes: both components in [-p, p]; n_free = 3 x 2 + 2 + 1",
-          space.lower_bounds().block(0)(Layout::entry(1, 0)) ==
-              -contact.multiplier_bound &&
+          space.set().box(0, Layout::entry(1, 0)) ==
+              std::make_pair(-contact.multiplier_bound,
+                             contact.multiplier_bound) &&
+            !space.set().contact(0, Layout::entry(1, 0)) &&
             space.contact_components(1).empty() && space.n_free() == 9);
 
     std::cout << "MultiplierSpace::reinit: P2/P1 on a straight Sigma\n";
@@ -646,7 +648,7 @@ namespace
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
             std::abs(cell->face(f)->center()[1]) < 1e-12)
-          cell->face(f)->set_boundary_id(BoundaryIds::glued);
+          cell->face(f)->set_boundary_id(BoundaryIds::sigma);
   }
 
   /// The x coordinate and the component of each dof of @p sub on Sigma

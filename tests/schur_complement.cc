@@ -53,8 +53,7 @@ namespace
           face->set_boundary_id(c[0] < 1e-12     ? BoundaryIds::left :
                                 c[0] > 1 - 1e-12 ? BoundaryIds::right :
                                 c[1] < 1e-12     ? BoundaryIds::bottom :
-                                c[0] < 0.5       ? BoundaryIds::glued :
-                                                   BoundaryIds::crack);
+                                                   BoundaryIds::sigma);
         }
   }
 
@@ -153,8 +152,7 @@ main()
       const IndexSet on_sigma =
         DoFTools::extract_boundary_dofs(condensed.dof_handler(),
                                         ComponentMask(),
-                                        {BoundaryIds::glued,
-                                         BoundaryIds::crack});
+                                        {BoundaryIds::sigma});
       const std::vector<types::global_dof_index> sigma(on_sigma.begin(),
                                                        on_sigma.end());
       const AffineConstraints<double>           &hanging =

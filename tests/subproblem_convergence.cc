@@ -26,8 +26,10 @@ using namespace bilayer;
 int
 main()
 {
-  const LayerMaterial                 material{200.0, 0.28};
-  const std::map<std::string, double> constants = {{"mu", material.mu()}};
+  const LayerMaterial material{200.0, 0.28};
+  // The shear modulus of E and nu.
+  const std::map<std::string, double> constants = {
+    {"mu", material.youngs_modulus / (2. * (1. + material.poisson_ratio))}};
 
   FunctionParser<2> exact(2);
   exact.initialize("x,y", "exp(x)*sin(y); exp(x)*cos(y)", constants);

@@ -33,7 +33,7 @@ namespace bilayer
    * The step solves the dual problem with the active components held:
    *   F_II delta_I = (D g)_I,   delta_A = 0,
    * so that the jumps vanish on I, and mu <- P(mu + delta). The iteration
-   * stops when the relative KKT residual (Interface::kkt_residual()) of an
+   * stops when the relative KKT residual (kkt_residual() of interface_diagnostics.h) of an
    * iterate is below Solver/Tolerance; it is evaluated after a full solve
    * at every iterate, so the reported solution and its residuals belong
    * together.

@@ -6,6 +6,7 @@
 #include <bilayer/fracture.h>
 #include <bilayer/geometry.h>
 #include <bilayer/interface.h>
+#include <bilayer/interface_diagnostics.h>
 #include <bilayer/outer_solver.h>
 
 #include <array>

@@ -4,6 +4,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
+#include <bilayer/boundary_ids.h>
 #include <bilayer/gmsh_mesh.h>
 #include <bilayer/interface_curve.h>
 #include <bilayer/parameters.h>
@@ -17,40 +18,34 @@
 namespace bilayer
 {
   /**
-   * Boundary ids of the subdomain meshes. The outer boundary parts keep
-   * their own ids (so that each can carry its own traction): the
-   * rectangle's sides 0-3, a Gmsh scene's named curves 0, 1, ... in the
-   * order of BoundaryParts, its unnamed boundary curves `free` (traction
-   * free). Which parts form Gamma_D is GeometryParameters::clamped. Sigma is
-   * split into the glued part Sigma \ gamma_c and the crack gamma_c.
-   */
-  namespace BoundaryIds
-  {
-    constexpr dealii::types::boundary_id left   = 0;
-    constexpr dealii::types::boundary_id right  = 1;
-    constexpr dealii::types::boundary_id bottom = 2;
-    constexpr dealii::types::boundary_id top    = 3;
-    /// Boundary part i of a Gmsh scene has id i (< free).
-    constexpr dealii::types::boundary_id free  = 199;
-    constexpr dealii::types::boundary_id glued = 200;
-    constexpr dealii::types::boundary_id crack = 201;
-
-    inline dealii::types::boundary_id
-    of(const Side side)
-    {
-      return static_cast<dealii::types::boundary_id>(side);
-    }
-  } // namespace BoundaryIds
-
-  /**
-   * The size of a cell as the cells at a crack tip are measured: sqrt(area)
-   * for a quadrilateral, sqrt(2 area) for a triangle (the side of the square
-   * of two).
+   * The cells across one subdomain of the rectangle's structured mesh of
+   * refinement cycle 2^@p log2_factor: Mesh/Cells across times the factor,
+   * or the number of the same aspect as @p cells_along (along Sigma, the
+   * factor included) over @p width for the subdomain's @p height (rounded,
+   * at least 1). In double precision, so that the memory estimate of a
+   * cycle far too large for the mesh gets the same count.
    */
   inline double
-  cell_size(const dealii::Triangulation<2>::active_cell_iterator &cell)
+  structured_cells_across(const MeshParameters &mesh,
+                          const double          cells_along,
+                          const double          height,
+                          const double          width,
+                          const unsigned int    log2_factor)
   {
-    return std::sqrt(cell->measure() * (cell->n_vertices() == 3 ? 2. : 1.));
+    return mesh.cells_across > 0 ?
+             std::ldexp(double(mesh.cells_across), int(log2_factor)) :
+             std::max(1., std::round(cells_along * height / width));
+  }
+
+  /**
+   * Whether a cell with the signed area @p area (counter-clockwise
+   * positive) and the longest edge @p diameter is inverted or degenerate:
+   * the rule of every mesh bilayer reads (mesh files, Gmsh scenes).
+   */
+  inline bool
+  degenerate_cell(const double area, const double diameter)
+  {
+    return !(area > 1e-10 * diameter * diameter);
   }
 
   /// A point of a mesh whose cells must be no larger than @p size.
@@ -123,6 +118,17 @@ namespace bilayer
       return curve;
     }
 
+    /**
+     * Replace the crack gamma_c by @p crack on the present meshes (the one
+     * source of the crack: the multiplier spaces, the coupling, the
+     * estimator and the tips follow the interface curve's CrackSet). Its
+     * pieces must be ordered, disjoint, inside Sigma and end at vertices of
+     * both meshes on Sigma; else nothing changes and the error names the
+     * end point.
+     */
+    void
+    set_crack(const CrackSet &crack);
+
     /// P of Table 1: vertices on Sigma.
     unsigned int
     n_sigma_vertices() const;
@@ -132,7 +138,7 @@ namespace bilayer
     n_outer_vertices() const;
 
     /// The first @p how_many numbers of cells along Sigma whose structured
-    /// meshes have both crack end points as vertices.
+    /// meshes have every crack end point as a vertex.
     std::vector<unsigned int>
     valid_cells_along_sigma(const unsigned int how_many) const;
 

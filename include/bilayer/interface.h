@@ -6,7 +6,6 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
-#include <bilayer/interface_diagnostics.h>
 #include <bilayer/layout.h>
 #include <bilayer/multiplier_space.h>
 #include <bilayer/parameters.h>

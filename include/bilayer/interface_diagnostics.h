@@ -5,6 +5,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/block_vector.h>
 
+#include <bilayer/interface.h>
 #include <bilayer/trace_coupling.h>
 
 #include <algorithm>
@@ -13,7 +14,6 @@
 
 namespace bilayer
 {
-  class Interface;
 
   /**
    * The relative residual of the KKT conditions of the discrete dual

@@ -130,16 +130,6 @@ namespace bilayer
                                  std::make_pair(u_plus, v_plus);
     }
 
-    /**
-     * The subdomain whose trace defines the multiplier mesh of a gluing
-     * block (both of its subproblems live on that subdomain's mesh).
-     */
-    constexpr Subdomain
-    gluing_subdomain(const unsigned int b)
-    {
-      return b == glue_minus ? Subdomain::minus : Subdomain::plus;
-    }
-
     /// Entry of component @p c of node @p a in a multiplier block.
     constexpr unsigned int
     entry(const unsigned int a, const unsigned int c)
@@ -147,8 +137,8 @@ namespace bilayer
       return n_components * a + c;
     }
 
-    /// Components of a vector on Sigma: tangential x, normal y (Sigma is
-    /// horizontal in the structured scenes).
+    /// Components of a vector on Sigma at a multiplier node, in the node's
+    /// frame (tangent, normal) of MultiplierSpace::node_frame().
     constexpr unsigned int tangential = 0;
     constexpr unsigned int normal     = 1;
   } // namespace Layout

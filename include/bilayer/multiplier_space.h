@@ -7,6 +7,7 @@
 
 #include <bilayer/interface_curve.h>
 #include <bilayer/layout.h>
+#include <bilayer/multiplier_set.h>
 #include <bilayer/parameters.h>
 
 #include <cmath>
@@ -27,8 +28,8 @@ namespace bilayer
    * for each of the three blocks (Layout::blocks) a mesh of Sigma, continuous
    * Lagrange elements of a degree of its own on it whose nodes are the
    * Gauss-Lobatto points of each segment, the lumped mass D (one weight per
-   * node), and the multiplier set as bounds per component. A vector of
-   * multipliers is a BlockVector with one block per multiplier block and
+   * node), and the admissible set of the multipliers (MultiplierSet). A vector
+   * of multipliers is a BlockVector with one block per multiplier block and
    * entries Layout::entry(node, component).
    *
    * <h3>Meshes and degrees: the mortar choice</h3>
@@ -72,7 +73,7 @@ namespace bilayer
    * belong to Sigma \ gamma_c (glued). Nodes on Gamma_D (the ends of Sigma on a
    * clamped side) carry no multipliers (bounds [0, 0]); without
    * non-penetration neither do the crack nodes. A component is "free" when
-   * its lower bound is below its upper bound.
+   * it carries a multiplier (MultiplierSet::free()).
    */
   class MultiplierSpace
   {
@@ -122,12 +123,22 @@ namespace bilayer
     void
     initialize(dealii::BlockVector<double> &multipliers) const
     {
-      multipliers.reinit(lower);
+      set_.initialize(multipliers);
     }
 
-    /// Clamp onto the multiplier sets.
+    /// The admissible set of the multipliers.
+    const MultiplierSet &
+    set() const
+    {
+      return set_;
+    }
+
+    /// Project onto the multiplier set.
     void
-    project(dealii::BlockVector<double> &multipliers) const;
+    project(dealii::BlockVector<double> &multipliers) const
+    {
+      set_.project(multipliers);
+    }
 
     /// Zero the components that carry no multiplier (bounds [0, 0]).
     void
@@ -137,23 +148,13 @@ namespace bilayer
     bool
     free(const unsigned int i) const
     {
-      return lower(i) < upper(i);
+      return set_.free(i);
     }
 
     /// Multiplier components that are not fixed to zero.
     unsigned int
     n_free() const;
 
-    const dealii::BlockVector<double> &
-    lower_bounds() const
-    {
-      return lower;
-    }
-    const dealii::BlockVector<double> &
-    upper_bounds() const
-    {
-      return upper;
-    }
 
     /// sum_i D_i x_i y_i over all blocks.
     double
@@ -172,8 +173,9 @@ namespace bilayer
     scale_by_weights(dealii::BlockVector<double> &x,
                      const bool                   inverse = false) const;
 
-    /// Largest violation of the discrete constraints by the jumps g: |g| of
-    /// a free component, max(g, 0) of a contact component (lower bound 0).
+    /// Largest violation of the discrete constraints by the jumps g
+    /// (MultiplierSet::violation(): |g| of a gluing component, max(g, 0) of
+    /// a contact component).
     double
     discrete_violation(const dealii::BlockVector<double> &g) const;
 
@@ -425,8 +427,8 @@ namespace bilayer
 
     PerBlock<Mesh> meshes;
     /// Per node of mu_1.
-    std::vector<bool>           crack_nodes, corner_nodes;
-    dealii::BlockVector<double> lower, upper;
+    std::vector<bool> crack_nodes, corner_nodes;
+    MultiplierSet     set_;
   };
 } // namespace bilayer
 

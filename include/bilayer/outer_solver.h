@@ -66,7 +66,7 @@ namespace bilayer
     virtual ~OuterSolver() = default;
 
     /// Run from the multipliers given in @p multipliers (sized by
-    /// Interface::initialize(): zero, or a warm start); on return they and
+    /// MultiplierSpace::initialize(): zero, or a warm start); on return they and
     /// @p solutions hold the last iterate.
     virtual SolverResult
     solve(const Subproblems           &subproblems,

@@ -3,9 +3,9 @@
 
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <bilayer/elastic_law.h>
 #include <bilayer/interface.h>
 #include <bilayer/interface_diagnostics.h>
-#include <bilayer/material.h>
 #include <bilayer/outer_solver.h>
 #include <bilayer/output_directory.h>
 #include <bilayer/subproblem.h>
@@ -19,16 +19,15 @@
 namespace bilayer
 {
   /**
-   * Plane-strain stresses of one layer from the displacement gradient:
-   * sigma = 2 mu eps + lambda tr(eps) I, sigma_zz = lambda tr(eps), and the
-   * von Mises stress
+   * The stresses of one layer from the displacement gradient, by its
+   * ElasticLaw: sigma, sigma_zz, and the von Mises stress
    * sqrt(((s_xx - s_yy)^2 + (s_yy - s_zz)^2 + (s_zz - s_xx)^2) / 2
    *      + 3 s_xy^2).
    */
   class StressPostprocessor : public dealii::DataPostprocessor<2>
   {
   public:
-    explicit StressPostprocessor(const LayerMaterial &material);
+    explicit StressPostprocessor(const ElasticLaw &law);
 
     void
     evaluate_vector_field(
@@ -42,7 +41,7 @@ namespace bilayer
     get_needed_update_flags() const override;
 
   private:
-    const PlaneStrainLaw law;
+    const ElasticLaw &law;
   };
 
   /**

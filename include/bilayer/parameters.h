@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <bilayer/elastic_law.h>
 #include <bilayer/layout.h>
 
 #include <array>
@@ -95,7 +96,7 @@ namespace bilayer
    * - `paper_norm`: the same with ||w^k|| in the denominator.
    * - `relative`: the relative change of the multipliers and the relative
    *   violation of the discrete constraints both below tol.
-   * - `kkt`: the relative KKT residual (KKTResidual in interface.h) below
+   * - `kkt`: the relative KKT residual (KKTResidual in interface_diagnostics.h) below
    *   tol; the active-set solver always stops on it.
    */
   enum class StoppingRule
@@ -284,24 +285,6 @@ namespace bilayer
     degree(const Layer layer) const
     {
       return layer == Layer::first ? degree_first : degree_second;
-    }
-  };
-
-  /// Isotropic plane-strain material of one layer.
-  struct LayerMaterial
-  {
-    double youngs_modulus = 200.0;
-    double poisson_ratio  = 0.28;
-
-    double
-    mu() const
-    {
-      return youngs_modulus / (2. * (1. + poisson_ratio));
-    }
-    double
-    lambda() const
-    {
-      return 2. * poisson_ratio * mu() / (1. - 2. * poisson_ratio);
     }
   };
 

@@ -27,10 +27,19 @@
 namespace bilayer
 {
   /**
-   * The outer loop: for each cycle build the two meshes, the four
-   * subproblems (assembled and factorised once) and the interface, run the
-   * contact solver, check the residuals of the result, and write the
-   * outputs (VTU/PVD, interface-NN.csv, summary.json, the mesh-size table).
+   * A study of one scene: a sequence of states, each solved and checked and
+   * written as one record (VTU/PVD, interface-NN.csv, summary.json, the
+   * mesh-size table). Two drivers make the sequence:
+   *  - run(): the mesh cycles of the paper; each cycle builds the two
+   *    meshes (created or refined), the four subproblems (assembled and
+   *    factorised once) and the interface, and runs the contact solver;
+   *  - run_states(): states on the meshes of cycle 0 that differ in the
+   *    crack; the subproblems are assembled and factorised once, and each
+   *    state rebuilds only the interface (the crack changes which part of
+   *    Sigma is glued, not the subproblems' matrices) and recomputes the
+   *    crack tips.
+   * Each state is solved by solve_state(): interface, outer solve,
+   * assessment, outputs.
    */
   class Study
   {
@@ -53,6 +62,16 @@ namespace bilayer
     /// One cycle (mesh cycle @p cycle); appends to records().
     const CycleRecord &
     run_cycle(const unsigned int cycle);
+
+    /**
+     * The states driver: on the meshes of cycle 0, state k has the crack
+     * @p cracks[k] (its pieces on Sigma, ending at mesh vertices) and is
+     * solved from a cold start (zero multipliers); record k is numbered k.
+     * The subproblems are set up once, before state 0. True if every state
+     * converged and passed its checks; stops at the first that does not.
+     */
+    bool
+    run_states(const std::vector<CrackSet> &cracks);
 
     const std::vector<CycleRecord> &
     records() const
@@ -158,6 +177,20 @@ namespace bilayer
     assess(CycleRecord &record);
     void
     check(CycleRecord &record) const;
+    /// The crack tips (found again after the crack changed) and whether
+    /// their supports hold enough cells of the present meshes.
+    void
+    update_tips(const CycleRecord &record);
+    /**
+     * One state on the present subproblems: the interface (and the
+     * multipliers, from @p previous if given), the outer solve, the
+     * assessment and the outputs; appends the record. @p total has run
+     * since the state began.
+     */
+    const CycleRecord &
+    solve_state(CycleRecord                      &record,
+                const MultiplierSpace::Functions *previous,
+                const dealii::Timer              &total);
     /// The outputs of the cycle (solution, interface CSV, summary.json, the
     /// tables); appends @p record to records(), with the total time and the
     /// memory.
@@ -192,7 +225,7 @@ namespace bilayer
     /// The mesh-size table of the cycles so far.
     dealii::ConvergenceTable table;
     /// The crack tips and the supports of their velocity fields (from the
-    /// meshes of cycle 0).
+    /// meshes of cycle 0, or of the state's crack).
     std::vector<CrackTip> tips;
     bool                  tips_found = false;
     /// Per tip: why its support holds too few cells of this cycle's meshes

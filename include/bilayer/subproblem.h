@@ -13,7 +13,8 @@
 #include <bilayer/cholesky.h>
 #include <bilayer/distributed_system.h>
 #include <bilayer/distribution.h>
-#include <bilayer/parameters.h>
+#include <bilayer/elastic_law.h>
+#include <bilayer/volume_load.h>
 
 #include <array>
 #include <memory>
@@ -23,8 +24,8 @@ namespace bilayer
 {
   /**
    * One of the four linear elasticity subproblems of docs/problem.md §2: one
-   * layer (u or v) on one subdomain (Omega- or Omega+), plane strain, sigma(w)
-   * = 2 mu eps(w) + lambda tr(eps(w)) I.
+   * layer (u or v) on one subdomain (Omega- or Omega+), sigma(w) = C eps(w)
+   * with the layer's ElasticLaw.
    *
    * It owns its FESystem (two Lagrange components of the layer's degree, on
    * quadrilaterals or triangles as the mesh has), its DoFHandler and its
@@ -34,7 +35,8 @@ namespace bilayer
    *
    *   a(w, z) = (F, z) + (c, z)   for all z,
    *
-   * where F holds the tractions on Gamma_N and c is any extra load vector
+   * where F holds the tractions on Gamma_N and the volume terms (a
+   * VolumeLoad, where given), and c is any extra load vector
    * given in the unconstrained dof numbering (the interface's multiplier
    * terms). The subproblem knows nothing of the coupling.
    *
@@ -59,15 +61,17 @@ namespace bilayer
 
     /**
      * Distribute dofs, build constraints, assemble the stiffness matrix and
-     * the traction load, factorise. @p traction[side] is used on the sides
-     * that are not clamped; @p prescribed on the clamped ones.
+     * the load vector, factorise. @p traction[side] is used on the sides
+     * that are not clamped; @p prescribed on the clamped ones; @p volume
+     * (if not null) adds its volume terms to the load.
      */
     void
     setup(const std::vector<bool>                        &clamped,
           const dealii::Function<2>                      &prescribed,
           const std::vector<const dealii::Function<2> *> &traction,
           const std::string &shared_solver     = "Amesos_Mumps",
-          const bool         condense_on_sigma = false);
+          const bool         condense_on_sigma = false,
+          const VolumeLoad  *volume            = nullptr);
 
     /**
      * Whether setup() kept the Schur complement of the stiffness matrix on
@@ -239,15 +243,23 @@ namespace bilayer
     /// approximated to the element's order (isoparametric).
     const dealii::Mapping<2> &
     mapping() const;
-    const LayerMaterial &
-    material() const
+    /// The elastic law of the layer (the one code that knows its material).
+    const ElasticLaw &
+    law() const
     {
-      return material_;
+      return *law_;
     }
     unsigned int
     n_dofs() const
     {
       return dofs.n_dofs();
+    }
+    /// How many times setup() has assembled and factorised the matrix (on
+    /// an owner of the subproblem).
+    unsigned int
+    n_factorisations() const
+    {
+      return factorisations;
     }
     /// Wall time of assembly and of factorisation in setup() [s].
     double assembly_seconds      = 0;
@@ -256,11 +268,13 @@ namespace bilayer
   private:
     void
     assemble(const std::vector<bool>                        &clamped,
-             const std::vector<const dealii::Function<2> *> &traction);
+             const std::vector<const dealii::Function<2> *> &traction,
+             const VolumeLoad                               *volume);
 
     const Layer                        layer_;
     const Subdomain                    subdomain_;
-    const LayerMaterial                material_;
+    std::unique_ptr<const ElasticLaw>  law_;
+    unsigned int                       factorisations = 0;
     const Distribution                &distribution;
     std::string                        shared_solver;
     std::unique_ptr<DistributedSystem> shared;
@@ -276,8 +290,9 @@ namespace bilayer
     dealii::SparseMatrix<double>                 system_matrix;
     dealii::SparseMatrix<double>                 stiffness;
     dealii::Vector<double>                       system_rhs;
-    dealii::Vector<double>                       traction_load;
-    SparseCholesky                               factorisation;
+    /// The load F of tractions and volume terms (energy()).
+    dealii::Vector<double> load_vector;
+    SparseCholesky         factorisation;
     /// With condensed(): the solution without coupling (tractions and
     /// prescribed displacement), and for the Sigma dofs their position in
     /// the Schur complement's order: unconstrained ones directly,

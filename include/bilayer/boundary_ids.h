@@ -1,0 +1,58 @@
+#ifndef bilayer_boundary_ids_h
+#define bilayer_boundary_ids_h
+
+#include <deal.II/base/types.h>
+#include <deal.II/grid/tria.h>
+
+#include <cmath>
+
+/**
+ * @file
+ * The boundary ids of the subdomain meshes and the small questions asked of
+ * their faces and cells: the vocabulary that every layer may include
+ * (meshes, subproblems, coupling, estimators, fracture).
+ */
+namespace bilayer
+{
+  /**
+   * Boundary ids of the subdomain meshes. The outer boundary parts keep
+   * their own ids (so that each can carry its own traction): the
+   * rectangle's sides 0-3, a Gmsh scene's named curves 0, 1, ... in the
+   * order of BoundaryParts, its unnamed boundary curves `free` (traction
+   * free). Which parts form Gamma_D is GeometryParameters::clamped. Every
+   * face on Sigma has the id `sigma`, glued or cracked: which part of Sigma
+   * is the crack gamma_c is the interface curve's CrackSet alone, so that the
+   * crack can change on a fixed mesh.
+   */
+  namespace BoundaryIds
+  {
+    constexpr dealii::types::boundary_id left   = 0;
+    constexpr dealii::types::boundary_id right  = 1;
+    constexpr dealii::types::boundary_id bottom = 2;
+    constexpr dealii::types::boundary_id top    = 3;
+    /// Boundary part i of a Gmsh scene has id i (< free).
+    constexpr dealii::types::boundary_id free  = 199;
+    constexpr dealii::types::boundary_id sigma = 200;
+  } // namespace BoundaryIds
+
+  /// Whether the face @p face of a subdomain mesh lies on Sigma.
+  template <typename FaceIterator>
+  inline bool
+  on_sigma(const FaceIterator &face)
+  {
+    return face->at_boundary() && face->boundary_id() == BoundaryIds::sigma;
+  }
+
+  /**
+   * The size of a cell as the cells at a crack tip are measured: sqrt(area)
+   * for a quadrilateral, sqrt(2 area) for a triangle (the side of the square
+   * of two).
+   */
+  inline double
+  cell_size(const dealii::Triangulation<2>::active_cell_iterator &cell)
+  {
+    return std::sqrt(cell->measure() * (cell->n_vertices() == 3 ? 2. : 1.));
+  }
+} // namespace bilayer
+
+#endif

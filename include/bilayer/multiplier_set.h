@@ -1,0 +1,221 @@
+#ifndef bilayer_multiplier_set_h
+#define bilayer_multiplier_set_h
+
+#include <deal.II/lac/block_vector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace bilayer
+{
+  /**
+   * The admissible set K of the multipliers (docs/problem.md §3): for each
+   * component of a multiplier vector (a BlockVector in the layout of
+   * MultiplierSpace) what it constrains and the set its value lies in. The
+   * one code that knows the shape of K: the projections of the first-order
+   * solvers, the active and inactive components of the active-set method,
+   * the primal feasibility of the jumps and the KKT checks ask it.
+   *
+   * Today every component lies in a box of its own:
+   *  - Kind::none: no multiplier (fixed to 0: nodes on Gamma_D, the
+   *    tangential component on the crack, the crack without
+   *    non-penetration);
+   *  - Kind::glued: a gluing constraint [w] = 0 with the multiplier in
+   *    [-p, p] (p the bound of the paper's Uzawa method);
+   *  - Kind::contact: a non-penetration constraint [u].nu >= 0 with the
+   *    multiplier in [0, p].
+   * A set that couples the components of a node (a Tresca disk, a Coulomb
+   * cone) is a kind of its own here, with its projection and its
+   * classification.
+   */
+  class MultiplierSet
+  {
+  public:
+    enum class Kind
+    {
+      none,
+      glued,
+      contact
+    };
+
+    /// Blocks of @p sizes components, every one of kind none.
+    void
+    reinit(const std::vector<dealii::types::global_dof_index> &sizes)
+    {
+      lower.reinit(sizes);
+      upper.reinit(sizes);
+    }
+
+    /// Component @p i of block @p b: a gluing constraint, bound @p p.
+    void
+    set_glued(const unsigned int b, const unsigned int i, const double p)
+    {
+      lower.block(b)(i) = -p;
+      upper.block(b)(i) = p;
+    }
+
+    /// Component @p i of block @p b: a contact constraint, bound @p p.
+    void
+    set_contact(const unsigned int b, const unsigned int i, const double p)
+    {
+      lower.block(b)(i) = 0;
+      upper.block(b)(i) = p;
+    }
+
+    /// Component @p i of block @p b: no multiplier.
+    void
+    set_none(const unsigned int b, const unsigned int i)
+    {
+      lower.block(b)(i) = 0;
+      upper.block(b)(i) = 0;
+    }
+
+    /// The number of components.
+    unsigned int
+    size() const
+    {
+      return lower.size();
+    }
+
+    /// Zero multipliers of the layout of the set.
+    void
+    initialize(dealii::BlockVector<double> &mu) const
+    {
+      mu.reinit(lower);
+    }
+
+    /// What component @p i (global index) constrains.
+    Kind
+    kind(const unsigned int i) const
+    {
+      return !(lower(i) < upper(i)) ? Kind::none :
+             lower(i) == 0.         ? Kind::contact :
+                                      Kind::glued;
+    }
+
+    /// Whether component @p i carries a multiplier.
+    bool
+    free(const unsigned int i) const
+    {
+      return lower(i) < upper(i);
+    }
+
+    /// Whether component @p i of block @p b carries a multiplier.
+    bool
+    free(const unsigned int b, const unsigned int i) const
+    {
+      return lower.block(b)(i) < upper.block(b)(i);
+    }
+
+    /// Whether component @p i is a contact constraint.
+    bool
+    contact(const unsigned int i) const
+    {
+      return kind(i) == Kind::contact;
+    }
+
+    /// Whether component @p i of block @p b is a contact constraint.
+    bool
+    contact(const unsigned int b, const unsigned int i) const
+    {
+      return lower.block(b)(i) == 0. && upper.block(b)(i) > 0.;
+    }
+
+    /// The projection onto K.
+    void
+    project(dealii::BlockVector<double> &mu) const
+    {
+      for (unsigned int i = 0; i < mu.size(); ++i)
+        mu(i) = std::min(std::max(mu(i), lower(i)), upper(i));
+    }
+
+    /**
+     * Whether the multiplier @p mu_i of component @p i with the jump
+     * @p g_i is held on the boundary of K by a jump that pushes it outward
+     * (mu = P(mu + theta g) for every theta > 0: optimal there, the
+     * constraint "active" for the active-set method). A component without
+     * multiplier is held.
+     */
+    bool
+    held(const unsigned int i, const double mu_i, const double g_i) const
+    {
+      return !free(i) || (mu_i <= lower(i) && g_i <= 0) ||
+             (mu_i >= upper(i) && g_i >= 0);
+    }
+
+    /**
+     * Whether a multiplier component is held at a bound of K by its jump
+     * (held() of a component that carries one): its jump is no residual
+     * of the KKT conditions.
+     */
+    bool
+    held_at_bound(const unsigned int i,
+                  const double       mu_i,
+                  const double       g_i) const
+    {
+      return free(i) &&
+             ((mu_i >= upper(i) && g_i >= 0) || (mu_i <= lower(i) && g_i <= 0));
+    }
+
+    /**
+     * The violation of the constraint of component @p i by the jump
+     * @p g_i: |g| of a gluing constraint, max(g, 0) of a contact
+     * constraint ([u].nu >= 0 with g = -[u].nu), 0 without multiplier.
+     */
+    double
+    violation(const unsigned int i, const double g_i) const
+    {
+      if (!free(i))
+        return 0.;
+      return lower(i) == 0. ? std::max(g_i, 0.) : std::abs(g_i);
+    }
+
+    /**
+     * Whether a contact multiplier @p mu_i lies below its bound p, where
+     * the sign and complementarity conditions of contact are checked
+     * (mu = p is the paper's cap, not a contact state).
+     */
+    bool
+    below_bound(const unsigned int i, const double mu_i) const
+    {
+      return mu_i < upper(i);
+    }
+
+    /// The bound of component @p i that a step of sign @p direction meets.
+    double
+    bound_towards(const unsigned int i, const double direction) const
+    {
+      return direction < 0 ? lower(i) : upper(i);
+    }
+
+    /// The largest a <= @p a_max with mu + a d in K, for the step @p d.
+    double
+    step_to_boundary(const dealii::BlockVector<double> &mu,
+                     const dealii::BlockVector<double> &d,
+                     double                             a_max) const
+    {
+      for (unsigned int i = 0; i < mu.size(); ++i)
+        if (d(i) < 0)
+          a_max = std::min(a_max, (lower(i) - mu(i)) / d(i));
+        else if (d(i) > 0)
+          a_max = std::min(a_max, (upper(i) - mu(i)) / d(i));
+      return a_max;
+    }
+
+    /// The box [lower, upper] of component @p i of block @p b.
+    std::pair<double, double>
+    box(const unsigned int b, const unsigned int i) const
+    {
+      return {lower.block(b)(i), upper.block(b)(i)};
+    }
+
+  private:
+    /// The box of each component: [0, 0] none, [-p, p] glued, [0, p]
+    /// contact.
+    dealii::BlockVector<double> lower, upper;
+  };
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,159 @@
+// The states driver (Study::run_states()): two states on one mesh that
+// differ in the crack, each solved from a cold start, give exactly the
+// results of two separate runs of the scenes with those cracks (the same
+// subproblem matrices, factorised once, and an interface rebuilt for each
+// crack), bit for bit: the subproblem matrices do not depend on which part
+// of Sigma is cracked, so reusing them changes no operation. The tips are
+// recomputed for each crack.
+//
+// A crack end that is no mesh vertex, or a piece reaching an end of Sigma,
+// is refused with the crack left as it was.
+
+#include <bilayer/parameters.h>
+#include <bilayer/study.h>
+
+#include <iostream>
+#include <sstream>
+
+#include "verdict.h"
+
+using namespace dealii;
+using namespace bilayer;
+
+namespace
+{
+  std::string
+  scene_text(const std::string &crack, const std::string &directory)
+  {
+    return "subsection Geometry\n set Crack interval on Sigma = " + crack +
+           "\nend\n"
+           "subsection Mesh\n set Cells along Sigma = 16\nend\n"
+           "subsection Loads\n set Constants = c = 1e-3*mu1\n"
+           " subsection Layer 1\n"
+           "  set Traction on bottom side = 0; c*x\n"
+           "  set Traction on top side = 0; -c*x\n end\nend\n"
+           "subsection Solver\n set Method = active set\n"
+           " set Tolerance = 1e-10\nend\n"
+           "subsection Fracture\n set Energy release rate = true\nend\n"
+           "subsection Output\n set Output directory = " +
+           directory +
+           "\n set Write VTU = false\n"
+           " set Terminal output = checks\nend\n";
+  }
+
+  void
+  check(const std::string &what, const bool ok)
+  {
+    std::cout << what << ": " << yes(ok) << std::endl;
+  }
+
+  /// Whether two vectors hold the same numbers, bit for bit.
+  template <typename VectorType>
+  bool
+  same(const VectorType &a, const VectorType &b)
+  {
+    if (a.size() != b.size())
+      return false;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      if (!(a(i) == b(i)))
+        return false;
+    return true;
+  }
+
+  bool
+  same_records(const CycleRecord &a, const CycleRecord &b)
+  {
+    bool ok =
+      a.energy == b.energy && a.eta == b.eta && a.dofs == b.dofs &&
+      a.multipliers == b.multipliers &&
+      a.report.constraint_violation == b.report.constraint_violation &&
+      a.report.max_penetration == b.report.max_penetration &&
+      a.report.min_contact_multiplier == b.report.min_contact_multiplier &&
+      a.report.complementarity == b.report.complementarity &&
+      a.report.kkt.value() == b.report.kkt.value() &&
+      a.result.iterations == b.result.iterations &&
+      a.release.size() == b.release.size();
+    for (unsigned int t = 0; ok && t < a.release.size(); ++t)
+      ok = a.release[t].G == b.release[t].G &&
+           a.release[t].tip.point == b.release[t].tip.point;
+    return ok;
+  }
+} // namespace
+
+int
+main()
+{
+  const std::array<std::string, 2> cracks = {{"-0.5, 0.5", "-0.25, 0.75"}};
+  std::ostringstream               quiet;
+
+  // The two separate runs.
+  std::array<std::unique_ptr<Study>, 2> alone;
+  std::array<Scene, 2>                  scenes;
+  for (unsigned int k = 0; k < 2; ++k)
+    {
+      scenes[k] = scene_from_string(scene_text(cracks[k], "results_alone"),
+                                    "state_sequence");
+      alone[k]  = std::make_unique<Study>(scenes[k], quiet);
+      alone[k]->run_cycle(0);
+    }
+
+  // The states: one study, the cracks of both scenes in turn.
+  Study      states(scene_from_string(scene_text(cracks[0], "results_states"),
+                                 "state_sequence"),
+               quiet);
+  const bool accepted =
+    states.run_states({scenes[0].geometry.crack(), scenes[1].geometry.crack()});
+  check("both states accepted", accepted);
+  check("two records", states.records().size() == 2);
+  for (unsigned int k = 0; k < 2 && states.records().size() == 2; ++k)
+    {
+      const CycleRecord &a = alone[k]->records().front();
+      const CycleRecord &b = states.records()[k];
+      std::cout << "state " << k << " (crack " << cracks[k]
+                << "): " << b.release.size() << " tips at x =";
+      for (const auto &g : b.release)
+        std::cout << " " << g.tip.point[0];
+      std::cout << std::endl;
+      check("state " + std::to_string(k) +
+              ": energy, residuals, iterations, G and tips as the separate run",
+            same_records(a, b));
+    }
+  // The last state's fields against the second separate run.
+  bool fields = true;
+  for (const unsigned int s : Layout::subproblems)
+    fields = fields && same(states.solutions()[s], alone[1]->solutions()[s]);
+  check("state 1: displacements as the separate run, bit for bit", fields);
+  check("state 1: multipliers as the separate run, bit for bit",
+        same(states.multipliers(), alone[1]->multipliers()));
+  unsigned int once = 0;
+  for (const Layer l : {Layer::first, Layer::second})
+    for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+      once += states.subproblem(l, sd).n_factorisations() == 1;
+  check("each of the four subproblems factorised once", once == 4);
+  check("the states differ (the cracks do)",
+        states.records()[0].energy != states.records()[1].energy);
+
+  // Refusals: a crack end between mesh vertices (h = 1/8), a piece that
+  // reaches the end of Sigma.
+  for (const CrackSet::Piece bad :
+       {CrackSet::Piece{-0.55, 0.5}, CrackSet::Piece{-1., 0.5}})
+    {
+      Study refused(scene_from_string(scene_text(cracks[0], "results_states"),
+                                      "state_sequence"),
+                    quiet);
+      std::ostringstream name;
+      name << "crack (" << bad.start << ", " << bad.end << ")";
+      try
+        {
+          refused.run_states({CrackSet({bad}, 2e-10)});
+          check(name.str() + " refused", false);
+        }
+      catch (const ExceptionBase &e)
+        {
+          const std::string what = one_line_message(e);
+          std::cout << "  " << what << std::endl;
+          check(name.str() + " refused naming the crack",
+                what.find("the crack") != std::string::npos);
+        }
+    }
+}
