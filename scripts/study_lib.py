@@ -14,6 +14,14 @@ directory (`import study_lib`):
     interface_rows(path)   the rows of an interface CSV as dicts of strings
                            (its '#' lines skipped)
     table_rows(directory)  the rows of table.csv as dicts of strings
+    sequence_settings(method, refinement, degree, cycles, tolerance)
+                           the settings of one mesh sequence of
+                           scripts/work_precision (from 8 cells along Sigma)
+    reference_energy(prm, directory) -> (Pi_ref, b, cycles)
+                           Pi_ref of a scene as scripts/work_precision finds
+                           it: its adaptive Q2 sequence (active set, KKT
+                           1e-10, 26 cycles) extrapolated through its last
+                           three cycles
 
 Run as a program (for the bash scripts of scripts/, which carry no Python):
     python3 scripts/study_lib.py work DIR LABEL WARM
@@ -31,7 +39,15 @@ import filecmp
 import json
 import math
 import os
+import subprocess
 import sys
+
+import bilayer_run
+
+# The sequence whose last three cycles give Pi_ref (scripts/work_precision,
+# scripts/bench_fine_mesh): adaptive Q2, active set, KKT tolerance 1e-10.
+REFERENCE = {"method": "active set", "refinement": "adaptive", "degree": 2, "cycles": 26,
+             "tolerance": "1e-10"}
 
 
 def extrapolate(dofs, energies):
@@ -94,6 +110,47 @@ def table_rows(directory):
     """The rows of table.csv in DIRECTORY as dicts {column: text}."""
     with open(os.path.join(directory, "table.csv")) as f:
         return list(csv.DictReader(f))
+
+
+def sequence_settings(method, refinement, degree, cycles, tolerance):
+    """The settings of one mesh sequence of scripts/work_precision: from 8
+    cells along Sigma, METHOD with theta = auto and warm starts, stopped at
+    the relative KKT residual TOLERANCE, CYCLES cycles of REFINEMENT, DEGREE
+    on both layers, no VTU."""
+    return {
+        "Mesh/Cells along Sigma": "8",
+        "Mesh/Number of cycles": str(cycles),
+        "Mesh/Refinement": refinement,
+        "Mesh/Polynomial degree of layer 1": str(degree),
+        "Mesh/Polynomial degree of layer 2": str(degree),
+        "Solver/Method": method,
+        "Solver/Uzawa step theta": "auto",
+        "Solver/Stopping rule": "kkt",
+        "Solver/Tolerance": tolerance,
+        "Solver/Warm start": "true",
+        "Output/Write VTU": "false",
+        "Output/Progress interval": "0",
+        "Output/Terminal output": "checks",
+    }
+
+
+def reference_energy(prm, directory, cycles=REFERENCE["cycles"]):
+    """(Pi_ref, b, the cycles of summary.json) of the scene PRM: the
+    REFERENCE sequence run into DIRECTORY and extrapolated through its last
+    three cycles (Pi_k = Pi_ref + C N_k^-b); exits 1 with one line where
+    the run fails or its energies do not converge monotonically."""
+    settings = sequence_settings(REFERENCE["method"], REFERENCE["refinement"],
+                                 REFERENCE["degree"], cycles, REFERENCE["tolerance"])
+    run = bilayer_run.run(prm, settings, directory, stdout=subprocess.DEVNULL, stderr=None)
+    if run.returncode != 0 or run.summary is None:
+        sys.exit("%s: the reference sequence of %s failed (exit %d; its results: %s)" % (
+            os.path.basename(sys.argv[0]), prm, run.returncode, run.directory or directory))
+    sequence = run.summary["cycles"]
+    fit = extrapolate([c["dofs"] for c in sequence[-3:]], [c["energy"] for c in sequence[-3:]])
+    if fit is None:
+        sys.exit("%s: the reference sequence of %s is not monotone enough to extrapolate" % (
+            os.path.basename(sys.argv[0]), prm))
+    return fit + (sequence,)
 
 
 def solves(cycle):
