@@ -107,9 +107,10 @@ def interface_rows(path):
 
 
 def table_rows(directory):
-    """The rows of table.csv in DIRECTORY as dicts {column: text}."""
+    """The rows of table.csv in DIRECTORY as dicts {column: text}; its
+    comment lines ('#': the crack tips) are skipped."""
     with open(os.path.join(directory, "table.csv")) as f:
-        return list(csv.DictReader(f))
+        return list(csv.DictReader(l for l in f if not l.startswith("#")))
 
 
 def sequence_settings(method, refinement, degree, cycles, tolerance):
