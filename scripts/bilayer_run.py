@@ -12,6 +12,8 @@ The scripts import it from their own directory (`import bilayer_run`):
     require(*tools)        exits 1 with one line naming the Debian package
                            of the first of TOOLS (gnuplot, mpirun, ...) not
                            on PATH: the scripts never install anything
+                           (the packages: scripts/tool_packages.txt; the
+                           bash scripts: require of common.sh)
     command(prm, settings, processes=None, binary=BILAYER, mpirun=("mpirun",))
                            the command line: BINARY PRM --set S/E=v ...,
                            behind MPIRUN -np PROCESSES when processes is given
@@ -54,6 +56,7 @@ or be empty.
 """
 import argparse
 import collections
+import importlib.util
 import json
 import os
 import shutil
@@ -83,10 +86,16 @@ def argument_parser(doc):
                                    formatter_class=argparse.RawDescriptionHelpFormatter)
 
 
-# The Debian package that provides each tool the scripts run.
-PACKAGES = {"gnuplot": "gnuplot-nox", "pvbatch": "paraview python3-paraview",
-            "Xvfb": "xvfb", "gmsh": "gmsh",
-            "mpirun": "openmpi-bin", "numdiff": "numdiff", "h5dump": "hdf5-tools"}
+def tool_packages():
+    """{tool: "package ..."} of scripts/tool_packages.txt: the Debian
+    packages of each tool the scripts run."""
+    packages = {}
+    with open(os.path.join(ROOT, "scripts", "tool_packages.txt")) as f:
+        for line in f:
+            words = line.split()
+            if words and not words[0].startswith("#"):
+                packages[words[0]] = " ".join(words[1:])
+    return packages
 
 
 def setup():
@@ -102,13 +111,26 @@ def setup():
 
 
 def require(*tools):
-    """Exit 1 with one line naming the Debian package to install for the
-    first of TOOLS that is not on PATH (the scripts never install)."""
+    """Exit 1 with the one line "SCRIPT: TOOL is missing: install the
+    Debian package PACKAGE" (scripts/tool_packages.txt) for the first of
+    TOOLS that is not on PATH (import:NAME: a module this Python cannot
+    import); the scripts never install."""
     for tool in tools:
-        if shutil.which(tool) is None:
-            package = PACKAGES.get(tool, tool)
-            sys.exit("%s: %s is missing: install the Debian package%s %s" % (
-                os.path.basename(sys.argv[0]), tool, "s" if " " in package else "", package))
+        if tool.startswith("import:"):
+            if importlib.util.find_spec(tool[len("import:"):]) is not None:
+                continue
+        elif shutil.which(tool) is not None:
+            continue
+        sys.exit(missing_tool(os.path.basename(sys.argv[0]), tool))
+
+
+def missing_tool(script, tool):
+    """The line of require() for TOOL in SCRIPT."""
+    module = tool.startswith("import:")
+    package = tool_packages().get(tool, tool[len("import:"):] if module else tool)
+    name = "python3's " + tool[len("import:"):] if module else tool
+    return "%s: %s is missing: install the Debian package%s %s" % (
+        script, name, "s" if " " in package else "", package)
 
 
 def set_list(settings):

@@ -9,6 +9,13 @@
 #   have_apt                     whether this machine installs packages with
 #                                apt-get (Debian and derivatives)
 #   missing_commands COMMAND...  those of the commands not in PATH
+#   require TOOL...              exits 1 with one line "SCRIPT: TOOL is
+#                                missing: install the Debian package
+#                                PACKAGE" for the first TOOL not in PATH
+#                                (import:NAME: a module Debian's python3
+#                                cannot import; the packages:
+#                                scripts/tool_packages.txt, as
+#                                bilayer_run.require in Python)
 #   output_folder SCRIPT DIR NAME...
 #                                opens DIR as SCRIPT's output folder (created,
 #                                or empty, or marked by SCRIPT itself: never
@@ -74,6 +81,32 @@ missing_commands() {
   local c
   for c in "$@"; do
     command -v "$c" > /dev/null || echo "$c"
+  done
+}
+
+require() {
+  local tool name t rest package
+  for tool in "$@"; do
+    if [[ $tool == import:* ]]; then
+      /usr/bin/python3 -c "import ${tool#import:}" 2> /dev/null && continue
+      name="python3's ${tool#import:}"
+    else
+      command -v "$tool" > /dev/null && continue
+      name=$tool
+    fi
+    package=${tool#import:}
+    while read -r t rest; do
+      if [[ $t == "$tool" ]]; then
+        package=$rest
+        break
+      fi
+    done < "$root/scripts/tool_packages.txt"
+    if [[ $package == *" "* ]]; then
+      echo "${0##*/}: $name is missing: install the Debian packages $package" >&2
+    else
+      echo "${0##*/}: $name is missing: install the Debian package $package" >&2
+    fi
+    exit 1
   done
 }
 

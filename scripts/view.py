@@ -9,11 +9,14 @@ line. The title, the colour bars and the legend are measured as drawn and
 fitted into the picture. Writes a PNG and/or a ParaView state file, and with
 "describe" a JSON account of what was drawn (tests/cli/view_scene.py).
 
-Two modes:
+Three modes:
   python3 view.py check RESULT_DIR CYCLE FIELD
       checks the directory, the cycle ('' for the last) and the field without
       ParaView (plain python3, fast); exit 0, or one line "view: ..." on stderr
       and exit 1.
+  python3 view.py request DIR CYCLE FIELD PNG STATE WIDTH HEIGHT SCALE EDGES DESCRIBE
+      prints the JSON of render from the wrapper's values ('' for PNG,
+      SCALE, DESCRIBE: null; EDGES true, false or '': null).
   pvbatch view.py render JSON
       JSON: {"dir", "cycle", "field", "png" (or null), "state", "width",
       "height", "scale" (null: automatic), "edges" (null: automatic, true,
@@ -698,6 +701,14 @@ def main(argv):
             return 1
         if info["note"]:
             print("note: %s" % info["note"])
+        return 0
+    if len(argv) == 12 and argv[1] == "request":
+        a = argv[2:]
+        print(json.dumps({"dir": a[0], "cycle": a[1], "field": a[2], "png": a[3] or None,
+                          "state": a[4], "width": int(a[5]), "height": int(a[6]),
+                          "scale": float(a[7]) if a[7] else None,
+                          "edges": {"true": True, "false": False}.get(a[8]),
+                          "describe": a[9] or None}))
         return 0
     if len(argv) == 3 and argv[1] == "render":
         try:
