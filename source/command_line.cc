@@ -24,6 +24,15 @@ namespace bilayer
            "would use it\n"
            "                                    (includes and --set applied), "
            "run nothing\n"
+           "       bilayer --check-geometry FILE [--allow-gmsh-commands] "
+           "[--set Mesh/Entry=value ...]\n"
+           "                                    mesh a Gmsh scene (.geo or "
+           ".msh) with bilayer's\n"
+           "                                    checks and print its groups, "
+           "cells, Sigma and\n"
+           "                                    crack pieces (--set: Gmsh mesh "
+           "size factor, Gmsh\n"
+           "                                    time limit), run nothing\n"
            "       bilayer --version            print the version, the git "
            "commit, deal.II's\n"
            "                                    version and the BLAS in use\n"
@@ -68,6 +77,15 @@ namespace bilayer
           }
         else if (arg.rfind("--set=", 0) == 0)
           command.overrides.emplace_back(arg.substr(6));
+        else if (arg == "--check-geometry")
+          {
+            AssertThrow(i + 1 < argc,
+                        ExcMessage("--check-geometry needs the geometry "
+                                   "file (.geo or .msh) after it (" +
+                                   std::string(usage_line) + ")"));
+            command.action        = CommandLine::Action::check_geometry;
+            command.geometry_file = argv[++i];
+          }
         else if (arg == "--allow-gmsh-commands")
           command.allow_gmsh_commands = true;
         else if (arg.size() > 1 && arg[0] == '-')
@@ -89,13 +107,18 @@ namespace bilayer
     AssertThrow(command.action != CommandLine::Action::version ||
                   (command.parameter_file.empty() && command.overrides.empty()),
                 ExcMessage("--version takes no parameter file or --set"));
+    AssertThrow(command.action != CommandLine::Action::check_geometry ||
+                  command.parameter_file.empty(),
+                ExcMessage("--check-geometry " + command.geometry_file +
+                           " takes no parameter file, got '" +
+                           command.parameter_file +
+                           "' (--set of Mesh entries and "
+                           "--allow-gmsh-commands apply)"));
     AssertThrow(command.action != CommandLine::Action::print_parameters ||
                   !command.parameter_file.empty() || command.overrides.empty(),
                 ExcMessage("--print-parameters with --set needs the parameter "
                            "file the settings apply to (" +
                            std::string(usage_line) + ")"));
-
-
     AssertThrow(command.action != CommandLine::Action::run ||
                   !command.parameter_file.empty(),
                 ExcMessage(std::string("no parameter file given (") +

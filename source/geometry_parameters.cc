@@ -22,6 +22,25 @@ namespace bilayer
   }
 
 
+  BoundaryParts
+  BoundaryParts::of_gmsh(const std::string              &file,
+                         const std::vector<std::string> &names)
+  {
+    // A name becomes the entry "Traction on NAME" and a member of the
+    // list Geometry/Clamped sides.
+    for (const auto &name : names)
+      AssertThrow(!name.empty() && name == Utilities::trim(name) &&
+                    name.find_first_of(",|=#\\") == std::string::npos,
+                  ExcMessage("Geometry/Gmsh file '" + file +
+                             "': the physical curve name '" + name +
+                             "' cannot name a boundary part (the entry "
+                             "'Traction on NAME'): rename it in the file "
+                             "without ',', '|', '=', '#', '\\' and outer "
+                             "blanks"));
+    return {names, true};
+  }
+
+
   void
   GeometryParameters::declare_parameters(ParameterHandler    &prm,
                                          const BoundaryParts &parts)

@@ -72,18 +72,7 @@ namespace bilayer
       catch (const std::exception &)
         {}
       const auto names = gmsh_boundary_names(gmsh_file, options);
-      // A name becomes the entry "Traction on NAME" and a member of the
-      // list Geometry/Clamped sides.
-      for (const auto &name : names)
-        AssertThrow(!name.empty() && name == Utilities::trim(name) &&
-                      name.find_first_of(",|=#\\") == std::string::npos,
-                    ExcMessage("Geometry/Gmsh file '" + gmsh_file +
-                               "': the physical curve name '" + name +
-                               "' cannot name a boundary part (the entry "
-                               "'Traction on NAME'): rename it in the file "
-                               "without ',', '|', '=', '#', '\\' and outer "
-                               "blanks"));
-      return BoundaryParts::of_gmsh(names);
+      return BoundaryParts::of_gmsh(gmsh_file, names);
     }
   } // namespace
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <bilayer/build_info.h>
+#include <bilayer/check_geometry.h>
 #include <bilayer/command_line.h>
 #include <bilayer/distribution.h>
 #include <bilayer/output.h>
@@ -69,6 +70,14 @@ namespace bilayer
                 std::cout << "bilayer " << version() << " (git commit "
                           << git_commit() << ")\ndeal.II " << deal_ii_version()
                           << "\nBLAS " << blas_library() << std::endl;
+              return ExitStatus::success;
+            }
+          if (command.action == CommandLine::Action::check_geometry)
+            {
+              check_geometry(command.geometry_file,
+                             command.overrides,
+                             command.allow_gmsh_commands,
+                             std::cout);
               return ExitStatus::success;
             }
           if (command.action == CommandLine::Action::print_parameters &&

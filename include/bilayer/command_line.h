@@ -15,9 +15,12 @@ namespace bilayer
       run,
       help,
       print_parameters,
-      version
+      version,
+      check_geometry
     } action = Action::run;
-    std::string              parameter_file;
+    std::string parameter_file;
+    /// The file of --check-geometry FILE.
+    std::string              geometry_file;
     std::vector<std::string> overrides;
     bool                     allow_gmsh_commands = false;
   };

@@ -59,12 +59,14 @@ namespace bilayer
       return "Traction on " + names[i] + (gmsh ? "" : " side");
     }
 
-    /// The parts of a Gmsh scene (the file's boundary curve names).
+    /**
+     * The parts of the Gmsh scene @p file: its boundary curve @p names.
+     * A name becomes the entry "Traction on NAME" and a member of the list
+     * Geometry/Clamped sides: names with ',', '|', '=', '#', '\\' or outer
+     * blanks are refused.
+     */
     static BoundaryParts
-    of_gmsh(const std::vector<std::string> &names)
-    {
-      return {names, true};
-    }
+    of_gmsh(const std::string &file, const std::vector<std::string> &names);
   };
 
   struct GeometryParameters
