@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <bilayer/output_directory.h>
+#include <bilayer/output_marker.h>
 
 #include <algorithm>
 #include <atomic>
@@ -26,6 +27,7 @@
 namespace bilayer
 {
   using namespace dealii;
+  using namespace output_marker;
 
   namespace
   {
@@ -39,226 +41,9 @@ namespace bilayer
       throw dealii::ExcMessage(entry + ": " + message);
     }
 
-    const std::string manifest_prefix  = "file: ";
-    const std::string identity_prefix  = "identity: ";
-    const std::string directory_prefix = "directory: ";
-    const std::string marker_title = "This directory was written by bilayer";
-    const std::string marker_text =
-      marker_title +
-      ". A later run into it replaces it as long as it is this very "
-      "directory (identity: device, inode, token; directory: where it was "
-      "made) and holds only the files listed here.\n";
-    const char *attribute = "user.bilayer-output";
-    /// The marker while it is rewritten (committing).
-    const std::string marker_temporary = std::string(".bilayer-output.part");
-
     /// The run whose staging directory a signal removes; guarded.
     std::mutex       guard;
     StagedDirectory *live = nullptr;
-
-    /// What a marker file says.
-    struct Marker
-    {
-      bool                     present  = false; // a marker file of bilayer
-      bool                     identity = false; // with an identity line
-      std::uintmax_t           device = 0, inode = 0;
-      std::string              token;
-      bool                     in_attribute = false;
-      std::string              directory;
-      std::vector<std::string> files;
-    };
-
-    Marker
-    read_marker(const fs::path &path)
-    {
-      Marker          m;
-      std::error_code error;
-      const fs::path  file = path / StagedDirectory::marker_name();
-      if (!fs::is_regular_file(fs::symlink_status(file, error)))
-        return m;
-      std::ifstream in(file);
-      std::string   line;
-      m.present = std::getline(in, line) && line.rfind(marker_title, 0) == 0;
-      while (m.present && std::getline(in, line))
-        if (line.rfind(manifest_prefix, 0) == 0)
-          m.files.push_back(line.substr(manifest_prefix.size()));
-        else if (line.rfind(directory_prefix, 0) == 0)
-          m.directory = line.substr(directory_prefix.size());
-        else if (line.rfind(identity_prefix, 0) == 0)
-          {
-            std::istringstream words(line.substr(identity_prefix.size()));
-            std::string        where;
-            m.identity = static_cast<bool>(words >> m.device >> m.inode >>
-                                           m.token >> where) &&
-                         m.token.size() == 32;
-            m.in_attribute = where == "attribute";
-          }
-      return m;
-    }
-
-    /// The token in the directory's extended attribute, or "".
-    std::string
-    attribute_token(const std::string &path)
-    {
-      char          value[64] = {};
-      const ssize_t n         = ::lgetxattr(path.c_str(), attribute, value, 63);
-      return n > 0 ? std::string(value, n) : std::string();
-    }
-
-    /// Whether @p path is a staging directory DIR.partial whose marker
-    /// names DIR or DIR.failed (a run stopped while committing).
-    bool
-    committing(const fs::path &path, const std::string &named)
-    {
-      const std::string p      = path.string();
-      const std::string suffix = ".partial";
-      if (p.size() <= suffix.size() ||
-          p.compare(p.size() - suffix.size(), suffix.size(), suffix) != 0)
-        return false;
-      const std::string final = p.substr(0, p.size() - suffix.size());
-      return named == final || named == final + ".failed";
-    }
-
-    /**
-     * Whether @p path is a directory that bilayer made for @p path itself:
-     * its marker's identity (device, inode, token in the extended attribute
-     * where it was stored) and directory are those of @p path. Otherwise
-     * @p why says what it is.
-     */
-    bool
-    made_here(const fs::path &path, const Marker &m, std::string &why)
-    {
-      struct stat own;
-      if (!m.identity)
-        why = "was written by an earlier version of bilayer or by hand (its "
-              "marker " +
-              std::string(StagedDirectory::marker_name()) +
-              " has no identity), and bilayer removes only directories it "
-              "can tell are its own";
-      else if (::lstat(path.c_str(), &own) != 0 ||
-               static_cast<std::uintmax_t>(own.st_dev) != m.device ||
-               static_cast<std::uintmax_t>(own.st_ino) != m.inode ||
-               (m.in_attribute && attribute_token(path) != m.token))
-        why = "is a copy of a bilayer output directory, not the directory "
-              "bilayer made (its marker belongs to another directory)";
-      else if (m.directory != path.string() && !committing(path, m.directory))
-        why = "was moved or renamed (bilayer made it as '" + m.directory + "')";
-      return why.empty();
-    }
-
-    /**
-     * Whether bilayer may remove the directory @p path, empty or after
-     * removing the files of own_files(): it is empty, or bilayer made it
-     * here (made_here()), and every entry is a file its marker lists (a
-     * committed directory) or, for @p staging directories, a file with the
-     * name of one of bilayer's outputs. Otherwise @p why says why not.
-     */
-    bool
-    removable(const fs::path &path, const bool staging, std::string &why)
-    {
-      std::error_code          error;
-      const Marker             m = read_marker(path);
-      std::vector<std::string> names;
-      for (fs::directory_iterator it(path, error), end; !error && it != end;
-           it.increment(error))
-        names.push_back(it->path().filename().string());
-      if (error)
-        {
-          why = "cannot be listed (" + error.message() + ")";
-          return false;
-        }
-      if (names.empty())
-        return true;
-      std::string foreign;
-      for (const auto &name : names)
-        if (!(m.present && (name == StagedDirectory::marker_name() ||
-                            (staging && name == marker_temporary))) &&
-            !(m.present && staging &&
-              StagedDirectory::is_output_name(name, true)) &&
-            !(m.present && !staging &&
-              std::count(m.files.begin(), m.files.end(), name) > 0 &&
-              StagedDirectory::is_output_name(name, false)) &&
-            foreign.empty())
-          foreign = name;
-      if (!m.present)
-        {
-          why = "holds files that bilayer did not write ('" + foreign +
-                "', and no marker file " + StagedDirectory::marker_name() +
-                " of a bilayer run)";
-          return false;
-        }
-      if (!made_here(path, m, why))
-        return false;
-      for (const auto &file : m.files)
-        if (!StagedDirectory::is_output_name(file, false))
-          {
-            why = "has a marker that lists '" + file +
-                  "', which is no file bilayer writes";
-            return false;
-          }
-      if (!foreign.empty())
-        {
-          why = "holds files that bilayer did not write ('" + foreign + "')";
-          return false;
-        }
-      return true;
-    }
-
-    /**
-     * Remove from @p path (a directory removable() allowed) the marker and
-     * the files bilayer wrote: those its marker lists, or with @p staging
-     * those with the names of bilayer's outputs; then the directory if it
-     * is empty. Returns an entry that stays, or "".
-     */
-    std::string
-    remove_own(const fs::path &path, const bool staging)
-    {
-      std::error_code       error;
-      const Marker          m = read_marker(path);
-      std::set<std::string> own(m.files.begin(), m.files.end());
-      for (fs::directory_iterator it(path, error), end; !error && it != end;
-           it.increment(error))
-        {
-          const std::string name = it->path().filename().string();
-          const bool        mine =
-            name == StagedDirectory::marker_name() ||
-            name == marker_temporary ||
-            (staging ? StagedDirectory::is_output_name(name, true) :
-                       own.count(name) > 0 &&
-                         StagedDirectory::is_output_name(name, false));
-          if (mine && !fs::is_directory(fs::symlink_status(it->path(), error)))
-            ::unlink(it->path().c_str());
-        }
-      if (::rmdir(path.c_str()) == 0 || errno == ENOENT)
-        return "";
-      for (fs::directory_iterator it(path, error), end; !error && it != end;
-           it.increment(error))
-        return it->path().filename().string();
-      return "(" + std::string(std::strerror(errno)) + ")";
-    }
-
-    /// Write the marker of @p directory (through a temporary file).
-    bool
-    write_marker(const std::string              &directory,
-                 const std::string              &identity,
-                 const std::string              &named,
-                 const std::vector<std::string> &files)
-    {
-      const std::string temporary = directory + "/" + marker_temporary;
-      {
-        std::ofstream out(temporary);
-        out << marker_text << identity_prefix << identity << "\n"
-            << directory_prefix << named << "\n";
-        for (const auto &file : files)
-          out << manifest_prefix << file << "\n";
-        out.close();
-        if (!out)
-          return false;
-      }
-      return std::rename(
-               temporary.c_str(),
-               (directory + "/" + StagedDirectory::marker_name()).c_str()) == 0;
-    }
 
     /// Rename without replacing what exists at @p to (an empty directory
     /// too); errno on failure.
@@ -299,6 +84,169 @@ namespace bilayer
     {
       return "'" + path.string() + "'";
     }
+
+    /// The absolute path of the output directory @p directory, symbolic
+    /// links among its parents resolved; refuses names that are no
+    /// directory a run may replace and a symbolic link.
+    fs::path
+    resolve_directory(const std::string &directory)
+    {
+      std::error_code error;
+      if (directory.empty())
+        refuse("must name a directory, got ''");
+      fs::path absolute = fs::absolute(directory, error).lexically_normal();
+      if (!absolute.empty() && absolute.filename().empty())
+        absolute = absolute.parent_path(); // a trailing separator
+      const std::string name = absolute.filename().string();
+      if (name.empty() || name == "." || name == ".." ||
+          absolute == absolute.root_path())
+        refuse("must name a directory that a run may create or replace (not "
+               "'.', '..' or a root), got '" +
+               directory + "'");
+      if (fs::is_symlink(fs::symlink_status(absolute, error)))
+        refuse("'" + directory +
+               "' is a symbolic link; name the directory itself (a run "
+               "replaces the directory, not what a link points to)");
+      // Symbolic links among the parent directories are resolved.
+      const fs::path resolved = fs::weakly_canonical(absolute, error);
+      if (error)
+        refuse("cannot resolve '" + directory + "': " + error.message());
+      return resolved;
+    }
+
+
+    /// The names beside DIR that a run uses: DIR, DIR.partial, DIR.failed,
+    /// DIR.lock.
+    const std::vector<std::string> &
+    companion_suffixes()
+    {
+      static const std::vector<std::string> suffixes = {"",
+                                                        ".partial",
+                                                        ".failed",
+                                                        ".lock"};
+      return suffixes;
+    }
+
+
+    /// Refuse an output directory (@p final_path, as the user wrote it
+    /// @p directory) that is, or whose companions are or contain, the
+    /// working directory or one of the @p inputs.
+    void
+    refuse_inputs_inside(const std::string              &final_path,
+                         const std::string              &directory,
+                         const std::vector<std::string> &inputs)
+    {
+      std::error_code error;
+      const auto     &suffixes = companion_suffixes();
+      // Nothing the run reads may be inside what it replaces.
+      std::vector<std::pair<fs::path, std::string>> protected_paths;
+      protected_paths.emplace_back(fs::current_path(error),
+                                   "the working directory");
+      for (const auto &input : inputs)
+        {
+          const fs::path p = fs::canonical(input, error);
+          if (!error)
+            protected_paths.emplace_back(p, "the input file '" + input + "'");
+        }
+      for (const auto &[path, what] : protected_paths)
+        for (const auto &suffix : suffixes)
+          if (is_or_contains(fs::path(final_path + suffix), path))
+            refuse(
+              "'" + directory + "' " +
+              (suffix.empty() ? "" : "(its companion " + suffix + ") ") +
+              (fs::path(final_path + suffix) == path ? "is " : "contains ") +
+              what +
+              ", which a run would delete; choose a directory of its own");
+    }
+
+
+    /// Refuse a DIR, DIR.partial, DIR.failed that bilayer may not remove,
+    /// a DIR.lock that is no regular file and a DIR that is a mount point.
+    void
+    refuse_foreign_companions(const fs::path    &resolved,
+                              const std::string &directory)
+    {
+      std::error_code   error;
+      const std::string final_path = resolved.string();
+      const auto       &suffixes   = companion_suffixes();
+      // Each directory a run may delete must be bilayer's own.
+      for (const auto &suffix : suffixes)
+        {
+          const fs::path path   = final_path + suffix;
+          const auto     status = fs::symlink_status(path, error);
+          if (!fs::exists(status))
+            continue;
+          const std::string shown = "'" + directory + suffix + "'";
+          if (suffix == ".lock")
+            {
+              if (!fs::is_regular_file(status))
+                refuse(shown + " exists and is not a lock file of bilayer; "
+                               "choose another directory");
+              continue; // its content is checked once it is locked
+            }
+          if (fs::is_symlink(status))
+            refuse(shown + " is a symbolic link; choose another directory");
+          if (!fs::is_directory(status))
+            refuse(shown + " exists and is not a directory");
+          std::string why;
+          if (!removable(path, suffix == ".partial", why))
+            refuse(shown + " " + why +
+                   "; bilayer replaces an output directory only if it is the "
+                   "very directory a run of bilayer made there and holds "
+                   "nothing but what that run wrote: choose another directory "
+                   "or move it");
+        }
+      if (fs::is_directory(resolved, error))
+        {
+          struct stat own, parent;
+          if (::stat(final_path.c_str(), &own) == 0 &&
+              ::stat(resolved.parent_path().c_str(), &parent) == 0 &&
+              own.st_dev != parent.st_dev)
+            refuse("'" + directory +
+                   "' is a mount point; a run replaces its output directory "
+                   "by renaming, which cannot move a mount point: choose a "
+                   "directory inside it");
+        }
+    }
+
+
+    /// Remove a staging directory @p staging left by a killed run (its own
+    /// files); "" or why it cannot.
+    std::string
+    clear_stale_staging(const std::string &staging,
+                        const std::string &directory)
+    {
+      std::error_code error;
+      // A staging directory left by a killed run is stale now (its own files
+      // go; checked above).
+      if (fs::exists(fs::symlink_status(staging, error)))
+        {
+          std::string why;
+          if (!removable(staging, true, why))
+            return "'" + directory + ".partial' " + why + "; move it";
+          const std::string left = remove_own(staging, true);
+          if (!left.empty())
+            return "'" + directory + ".partial' (of an earlier run) holds '" +
+                   left + "', which bilayer did not write; move it";
+        }
+      return "";
+    }
+
+
+    /// 32 random hexadecimal digits.
+    std::string
+    random_token()
+    {
+      std::random_device random;
+      std::ostringstream hex;
+      for (int i = 0; i < 4; ++i)
+        {
+          char word[9];
+          std::snprintf(word, sizeof(word), "%08x", random());
+          hex << word;
+        }
+      return hex.str();
+    }
   } // namespace
 
 
@@ -326,101 +274,11 @@ namespace bilayer
   }
 
 
-  StagedDirectory::StagedDirectory(const std::string              &directory,
-                                   const std::vector<std::string> &inputs)
+  void
+  StagedDirectory::create_parents(const std::string &directory)
   {
-    // A signal waits until the directory is set up (or refused).
-    const std::lock_guard<std::mutex> hold(guard);
-    std::error_code                   error;
-    if (directory.empty())
-      refuse("must name a directory, got ''");
-    fs::path absolute = fs::absolute(directory, error).lexically_normal();
-    if (!absolute.empty() && absolute.filename().empty())
-      absolute = absolute.parent_path(); // a trailing separator
-    const std::string name = absolute.filename().string();
-    if (name.empty() || name == "." || name == ".." ||
-        absolute == absolute.root_path())
-      refuse("must name a directory that a run may create or replace (not "
-             "'.', '..' or a root), got '" +
-             directory + "'");
-    if (fs::is_symlink(fs::symlink_status(absolute, error)))
-      refuse("'" + directory +
-             "' is a symbolic link; name the directory itself (a run "
-             "replaces the directory, not what a link points to)");
-    // Symbolic links among the parent directories are resolved.
-    const fs::path resolved = fs::weakly_canonical(absolute, error);
-    if (error)
-      refuse("cannot resolve '" + directory + "': " + error.message());
-    final_path = resolved.string();
-    // staging_path is set once this run has created the directory: until
-    // then there is nothing of this run's to remove.
-    const std::string staging = final_path + ".partial";
-    lock_path                 = final_path + ".lock";
-
-    // Nothing the run reads may be inside what it replaces.
-    std::vector<std::pair<fs::path, std::string>> protected_paths;
-    protected_paths.emplace_back(fs::current_path(error),
-                                 "the working directory");
-    for (const auto &input : inputs)
-      {
-        const fs::path p = fs::canonical(input, error);
-        if (!error)
-          protected_paths.emplace_back(p, "the input file '" + input + "'");
-      }
-    const std::vector<std::string> suffixes = {"",
-                                               ".partial",
-                                               ".failed",
-                                               ".lock"};
-    for (const auto &[path, what] : protected_paths)
-      for (const auto &suffix : suffixes)
-        if (is_or_contains(fs::path(final_path + suffix), path))
-          refuse("'" + directory + "' " +
-                 (suffix.empty() ? "" : "(its companion " + suffix + ") ") +
-                 (fs::path(final_path + suffix) == path ? "is " : "contains ") +
-                 what +
-                 ", which a run would delete; choose a directory of its own");
-
-    // Each directory a run may delete must be bilayer's own.
-    for (const auto &suffix : suffixes)
-      {
-        const fs::path path   = final_path + suffix;
-        const auto     status = fs::symlink_status(path, error);
-        if (!fs::exists(status))
-          continue;
-        const std::string shown = "'" + directory + suffix + "'";
-        if (suffix == ".lock")
-          {
-            if (!fs::is_regular_file(status))
-              refuse(shown + " exists and is not a lock file of bilayer; "
-                             "choose another directory");
-            continue; // its content is checked once it is locked
-          }
-        if (fs::is_symlink(status))
-          refuse(shown + " is a symbolic link; choose another directory");
-        if (!fs::is_directory(status))
-          refuse(shown + " exists and is not a directory");
-        std::string why;
-        if (!removable(path, suffix == ".partial", why))
-          refuse(shown + " " + why +
-                 "; bilayer replaces an output directory only if it is the "
-                 "very directory a run of bilayer made there and holds "
-                 "nothing but what that run wrote: choose another directory "
-                 "or move it");
-      }
-    if (fs::is_directory(resolved, error))
-      {
-        struct stat own, parent;
-        if (::stat(final_path.c_str(), &own) == 0 &&
-            ::stat(resolved.parent_path().c_str(), &parent) == 0 &&
-            own.st_dev != parent.st_dev)
-          refuse("'" + directory +
-                 "' is a mount point; a run replaces its output directory "
-                 "by renaming, which cannot move a mount point: choose a "
-                 "directory inside it");
-      }
-
-    // One run at a time per directory. Parent directories the run creates
-    // go again if it is refused.
+    std::error_code error;
+    const fs::path  resolved = directory;
     for (fs::path p = resolved.parent_path();
          !p.empty() && !fs::exists(fs::symlink_status(p, error));
          p = p.parent_path())
@@ -437,107 +295,12 @@ namespace bilayer
         refuse("cannot create '" + resolved.parent_path().string() +
                "': " + why);
       }
-    const auto unlocked = [&](const std::string &why) {
-      if (lock_descriptor >= 0)
-        ::close(lock_descriptor);
-      lock_descriptor = -1;
-      release();
-      refuse(why);
-    };
-    for (;;)
-      {
-        // A lock file bilayer creates is bilayer's; one that exists must
-        // say so (a killed run's), and is locked before it is read.
-        lock_descriptor =
-          ::open(lock_path.c_str(),
-                 O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW,
-                 0644);
-        lock_created = lock_descriptor >= 0;
-        if (!lock_created && errno == EEXIST)
-          lock_descriptor =
-            ::open(lock_path.c_str(), O_RDWR | O_CLOEXEC | O_NOFOLLOW);
-        if (lock_descriptor < 0)
-          {
-            if (errno == ENOENT)
-              continue; // removed by its holder in between
-            unlocked("cannot create the lock file '" + lock_path +
-                     "': " + std::strerror(errno));
-          }
-        const auto content = [&]() {
-          char          text[256] = {};
-          const ssize_t n = ::pread(lock_descriptor, text, sizeof(text) - 1, 0);
-          std::string   s(text, n > 0 ? n : 0);
-          while (!s.empty() && s.back() == '\n')
-            s.pop_back();
-          return s;
-        };
-        const std::string prefix = "bilayer lock: ";
-        if (::flock(lock_descriptor, LOCK_EX | LOCK_NB) != 0)
-          {
-            std::string holder = content();
-            if (holder.rfind(prefix, 0) == 0)
-              holder = holder.substr(prefix.size());
-            lock_created = false;
-            unlocked("'" + directory + "' is being written by another run (" +
-                     (holder.empty() ?
-                        std::string("lock ") + in_quotes(lock_path) :
-                        holder) +
-                     "); wait for it to end or choose another directory");
-          }
-        // The holder before us may have removed the file after we opened
-        // it: then lock the new one.
-        struct stat held, named;
-        if (::fstat(lock_descriptor, &held) == 0 &&
-            ::stat(lock_path.c_str(), &named) == 0 &&
-            held.st_ino == named.st_ino && held.st_dev == named.st_dev)
-          {
-            if (!lock_created && content().rfind(prefix, 0) != 0)
-              unlocked("'" + directory +
-                       ".lock' exists and is not a lock "
-                       "file of bilayer; choose another directory");
-            break;
-          }
-        ::close(lock_descriptor);
-        lock_descriptor = -1;
-      }
-    // From here on the lock file is bilayer's (created now, or a killed
-    // run's), and release() removes it.
-    lock_created = true;
-    live         = this;
-    {
-      char host[256] = {};
-      ::gethostname(host, sizeof(host) - 1);
-      const std::string text = "bilayer lock: process " +
-                               std::to_string(::getpid()) + " on " + host +
-                               "\n";
-      if (::ftruncate(lock_descriptor, 0) != 0 ||
-          ::pwrite(lock_descriptor, text.data(), text.size(), 0) !=
-            static_cast<ssize_t>(text.size()))
-        {
-          const std::string why = std::strerror(errno);
-          release();
-          refuse("cannot write the lock file '" + lock_path + "': " + why);
-        }
-    }
+  }
 
-    // A staging directory left by a killed run is stale now (its own files
-    // go; checked above).
-    if (fs::exists(fs::symlink_status(staging, error)))
-      {
-        std::string why;
-        if (!removable(staging, true, why))
-          {
-            release();
-            refuse("'" + directory + ".partial' " + why + "; move it");
-          }
-        const std::string left = remove_own(staging, true);
-        if (!left.empty())
-          {
-            release();
-            refuse("'" + directory + ".partial' (of an earlier run) holds '" +
-                   left + "', which bilayer did not write; move it");
-          }
-      }
+
+  std::string
+  StagedDirectory::create_staging(const std::string &staging)
+  {
     std::string problem;
     if (::mkdir(staging.c_str(), 0777) != 0)
       problem = "cannot create '" + staging + "': " + std::strerror(errno);
@@ -548,15 +311,7 @@ namespace bilayer
         ::lstat(staging_path.c_str(), &own);
         device = own.st_dev;
         inode  = own.st_ino;
-        std::random_device random;
-        std::ostringstream hex;
-        for (int i = 0; i < 4; ++i)
-          {
-            char word[9];
-            std::snprintf(word, sizeof(word), "%08x", random());
-            hex << word;
-          }
-        token = hex.str();
+        token  = random_token();
         // Directory permissions do not stop root: write a file too.
         errno = 0;
         if (!write_marker(staging_path, identity(), staging_path, {}))
@@ -564,6 +319,37 @@ namespace bilayer
             "cannot write into '" + staging_path + "': " + std::strerror(errno);
         seen = {marker_name()};
       }
+    return problem;
+  }
+
+
+  StagedDirectory::StagedDirectory(const std::string              &directory,
+                                   const std::vector<std::string> &inputs)
+  {
+    // A signal waits until the directory is set up (or refused).
+    const std::lock_guard<std::mutex> hold(guard);
+    const fs::path                    resolved = resolve_directory(directory);
+    final_path                                 = resolved.string();
+    // staging_path is set once this run has created the directory: until
+    // then there is nothing of this run's to remove.
+    const std::string staging = final_path + ".partial";
+    refuse_inputs_inside(final_path, directory, inputs);
+    refuse_foreign_companions(resolved, directory);
+
+    // One run at a time per directory. Parent directories the run creates
+    // go again if it is refused.
+    create_parents(final_path);
+    const std::string locked = lock.acquire(final_path + ".lock", directory);
+    if (!locked.empty())
+      {
+        release();
+        refuse(locked);
+      }
+    live = this;
+
+    std::string problem = clear_stale_staging(staging, directory);
+    if (problem.empty())
+      problem = create_staging(staging);
     if (!problem.empty())
       {
         release();
@@ -578,11 +364,7 @@ namespace bilayer
     // Where the file system keeps extended attributes, the token is one
     // of the directory's too (a copy that keeps the marker's inode number
     // by chance does not have it).
-    const bool in_attribute = ::lsetxattr(staging_path.c_str(),
-                                          attribute,
-                                          token.data(),
-                                          token.size(),
-                                          0) == 0;
+    const bool in_attribute = store_attribute_token(staging_path, token);
     return std::to_string(static_cast<std::uintmax_t>(device)) + " " +
            std::to_string(static_cast<std::uintmax_t>(inode)) + " " + token +
            (in_attribute ? " attribute" : " file");
@@ -627,15 +409,7 @@ namespace bilayer
   StagedDirectory::release()
   {
     discard_staging(false);
-    if (lock_descriptor >= 0)
-      {
-        // Unlink while holding the lock: a run waiting for the same file
-        // notices that the file it locked is gone and locks a new one.
-        if (lock_created)
-          ::unlink(lock_path.c_str());
-        ::close(lock_descriptor);
-        lock_descriptor = -1;
-      }
+    lock.release();
     // Parent directories created for a run that did not commit, if empty.
     std::error_code error;
     if (!committed)
@@ -685,7 +459,7 @@ namespace bilayer
                "published; run again");
     seen.clear();
     for (const auto &name : now)
-      if (name != marker_temporary &&
+      if (name != temporary_name() &&
           !(name.size() > 5 && name.compare(name.size() - 5, 5, ".part") == 0))
         seen.insert(name);
   }
@@ -812,7 +586,7 @@ namespace bilayer
       {
         if (!live->committed && !live->staging_path.empty())
           removed = in_quotes(live->staging_path) + " and ";
-        removed += in_quotes(live->lock_path);
+        removed += in_quotes(live->lock.path());
         live->discard_staging(true);
         live->release();
       }

@@ -1,6 +1,8 @@
 #ifndef bilayer_output_directory_h
 #define bilayer_output_directory_h
 
+#include <bilayer/directory_lock.h>
+
 #include <cstdint>
 #include <set>
 #include <string>
@@ -117,6 +119,14 @@ namespace bilayer
     discard_staging(const bool move_first);
     void
     verify_locked();
+    /// Create the missing parents of the output directory @p directory,
+    /// noted in created_parents (removed again by release()).
+    void
+    create_parents(const std::string &directory);
+    /// Create the staging directory @p staging with its identity and
+    /// marker; "" or why it cannot.
+    std::string
+    create_staging(const std::string &staging);
     /// The identity line of the marker (device, inode, token).
     std::string
     identity() const;
@@ -124,10 +134,9 @@ namespace bilayer
     friend void
     stop_on_signal(const int signal);
 
-    std::string final_path, staging_path, lock_path;
-    int         lock_descriptor = -1;
-    bool        lock_created    = false;
-    bool        committed       = false;
+    std::string   final_path, staging_path;
+    DirectoryLock lock;
+    bool          committed = false;
     /// The identity of the staging directory.
     dev_t       device = 0;
     ino_t       inode  = 0;

@@ -108,6 +108,10 @@ check "--set without a value" "--set needs a value" "$prm" --set
 check "unknown option" "unknown option '--frobnicate'" "$prm" --frobnicate
 check "--print-parameters --set without a file" "--print-parameters with --set needs the parameter file" --print-parameters --set "Mesh/Cells along Sigma=8"
 check "--version with a file" "--version takes no parameter file or --set" --version "$prm"
+check "--check-geometry without a file" "--check-geometry needs the geometry file" --check-geometry
+check "--check-geometry with a parameter file" "takes no parameter file, got '$prm'" --check-geometry nothere.geo "$prm"
+check "--check-geometry of a missing file" "Geometry/Gmsh file 'nothere.geo'" --check-geometry nothere.geo
+check "--check-geometry --set outside Mesh" "--set Solver/Method=uzawa: no entry 'Solver/Method' is declared" --check-geometry nothere.geo --set "Solver/Method=uzawa"
 check "--set without '='" "--set expects 'Section/Entry=value'" "$prm" --set "Mesh/Cells along Sigma"
 check "--set of an unknown entry" "--set Mesh/Cels along Sigma=8" "$prm" --set "Mesh/Cels along Sigma=8"
 

@@ -25,7 +25,10 @@
 #   temporary directory), gmsh that exits 0 without a mesh;
 # - .msh files with a corrupt tag count or without $PhysicalNames, names that
 #   cannot name an entry;
-# - scripts/check_geo on a hostile scene.
+# - scripts/check_geo (bilayer --check-geometry) on a hostile scene;
+#   bilayer --check-geometry on a quadrilateral and a triangle scene (the
+#   groups, cells and crack pieces, PASS) and on a scene without Omega+ (one
+#   error line).
 # Usage: gmsh_refusals.sh BILAYER PARAMETER_FILES_DIRECTORY
 set -u
 bilayer=$(realpath "$1")
@@ -347,7 +350,31 @@ grep -qF "bilayer: gmsh is still reading the groups of" stdout ||
 mkdir -p emptybin
 run_path=$work/emptybin refuse "gmsh missing" "the gmsh command is missing"
 
-# --- scripts/check_geo on a hostile scene.
+# --- bilayer --check-geometry: the checks of a run, on quadrilaterals and
+# on triangles.
+cp "$source_dir/two_cracks.geo" quadrilaterals.geo
+sed -e '/^Recombine Surface/d' "$source_dir/two_cracks.geo" > triangles.geo
+for kind in quadrilaterals triangles; do
+  why=""
+  "$bilayer" --check-geometry $kind.geo > check_stdout 2> stderr || why="exit status $?"
+  [[ $(tail -1 check_stdout) == PASS ]] || why="$why; no PASS"
+  grep -q "^cells: Omega- [0-9]* $kind, Omega+ [0-9]* $kind\$" check_stdout || why="$why; no $kind"
+  grep -q '^  2 [0-9]* "Omega-": [0-9]' check_stdout || why="$why; no group Omega-"
+  [[ $(grep -c '^  piece (' check_stdout) -eq 2 ]] || why="$why; not two crack pieces"
+  report "--check-geometry on $kind" "$why"
+done
+sed -e '/Physical Surface("Omega+")/d' "$source_dir/two_cracks.geo" > no_plus.geo
+why=""
+"$bilayer" --check-geometry no_plus.geo > check_stdout 2> stderr
+rc=$?
+[[ $rc -eq 1 ]] || why="exit status $rc"
+[[ ! -s check_stdout && $(wc -l < stderr) -eq 1 ]] || why="$why; not one line"
+grep -qF "bilayer: error: Geometry/Gmsh file 'no_plus.geo': no physical surface named 'Omega+'" stderr ||
+  why="$why; Omega+ not named"
+report "--check-geometry on a scene without Omega+" "$why"
+
+# --- scripts/check_geo (bilayer --check-geometry) on a hostile scene.
+export BILAYER=$bilayer
 sed -e "\$a SystemCall \"touch $work/ran\";" "$source_dir/two_cracks.geo" > hostile.geo
 rm -f ran
 why=""

@@ -1,0 +1,76 @@
+#ifndef bilayer_output_parameters_h
+#define bilayer_output_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+/**
+ * The subsection Output: the output directory, the files written and the
+ * terminal output.
+ */
+namespace bilayer
+{
+  enum class TerminalOutput
+  {
+    full,
+    checks
+  };
+
+  /// The cycles whose solution fields (VTU, HDF5) are written.
+  enum class WrittenCycles
+  {
+    every,
+    last,
+    none
+  };
+
+  /// zlib's effort on the VTU data (deal.II's VtkFlags).
+  enum class Compression
+  {
+    none,
+    best_speed,
+    standard,
+    best
+  };
+
+  struct OutputParameters
+  {
+    std::string    directory         = "results";
+    bool           write_vtu         = true;
+    bool           write_hdf5        = false;
+    bool           write_interface   = true;
+    WrittenCycles  written_cycles    = WrittenCycles::every;
+    Compression    compression       = Compression::best_speed;
+    unsigned int   progress_interval = 100;
+    TerminalOutput terminal          = TerminalOutput::full;
+
+    /// Whether the solution fields of @p cycle of @p n_cycles are written
+    /// (with the last cycle, also a cycle that fails its checks: the run
+    /// ends there).
+    bool
+    writes_fields(const unsigned int cycle,
+                  const unsigned int n_cycles,
+                  const bool         accepted) const
+    {
+      if (!write_vtu && !write_hdf5)
+        return false;
+      switch (written_cycles)
+        {
+          case WrittenCycles::every:
+            return true;
+          case WrittenCycles::last:
+            return cycle + 1 >= n_cycles || !accepted;
+          default:
+            return false;
+        }
+    }
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace bilayer
+
+#endif
