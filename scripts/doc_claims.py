@@ -169,7 +169,9 @@ CLAIMS = [
      "fast": True, "pattern": r"with the adaptive steps \(the default\) in " + r"\d+, " * min(k, 3)
      + (r"\d+ and " if k == 4 else "") + r"(\d+)",
      "command": "table1_auto", "extract": json_key("cycles.%d.iterations" % k),
-     "tolerance": ("exact",)}
+     # The adaptive (Barzilai-Borwein) steps follow the last bits of the
+     # subdomain solves, which differ between CPUs (OpenBLAS's kernels).
+     "tolerance": ("rel", 0.25)}
     for k in range(5)
 ] + [
     {"id": "reproduction.quads.iterations_%d" % k, "doc": "docs/reproduction.md", "fast": True,
