@@ -26,11 +26,11 @@ namespace bilayer
   {
     if (n_processes_ > Layout::n_subproblems)
       {
-        const int ierr = MPI_Comm_split(communicator_,
-                                        static_cast<int>(process_ %
-                                                         Layout::n_subproblems),
-                                        static_cast<int>(process_),
-                                        &group_communicator_);
+        const int ierr =
+          MPI_Comm_split(communicator_,
+                         static_cast<int>(process_ % Layout::n_subproblems),
+                         static_cast<int>(process_),
+                         &group_communicator_);
         AssertThrowMPI(ierr);
         own_group_communicator = true;
       }

@@ -199,10 +199,9 @@ namespace bilayer
     const auto on_gamma_d = [&](const double s, const unsigned int b) {
       return b == Layout::across_sigma ?
                curve.on_gamma_d(s) :
-               curve.on_gamma_d(
-                 s,
-                 static_cast<unsigned int>(
-                   Layout::subdomain(Layout::coupled(b).first)));
+               curve.on_gamma_d(s,
+                                static_cast<unsigned int>(
+                                  Layout::subdomain(Layout::coupled(b).first)));
     };
     std::vector<types::global_dof_index> sizes;
     for (const auto &mesh : meshes)

@@ -33,10 +33,10 @@ namespace bilayer
    * The step solves the dual problem with the active components held:
    *   F_II delta_I = (D g)_I,   delta_A = 0,
    * so that the jumps vanish on I, and mu <- P(mu + delta). The iteration
-   * stops when the relative KKT residual (kkt_residual() of interface_diagnostics.h) of an
-   * iterate is below Solver/Tolerance; it is evaluated after a full solve
-   * at every iterate, so the reported solution and its residuals belong
-   * together.
+   * stops when the relative KKT residual (kkt_residual() of
+   * interface_diagnostics.h) of an iterate is below Solver/Tolerance; it is
+   * evaluated after a full solve at every iterate, so the reported solution and
+   * its residuals belong together.
    *
    * <h3>Globalisation</h3>
    * The dual function Phi = -q is a concave quadratic; its change over a

@@ -66,8 +66,8 @@ namespace bilayer
     virtual ~OuterSolver() = default;
 
     /// Run from the multipliers given in @p multipliers (sized by
-    /// MultiplierSpace::initialize(): zero, or a warm start); on return they and
-    /// @p solutions hold the last iterate.
+    /// MultiplierSpace::initialize(): zero, or a warm start); on return
+    /// they and @p solutions hold the last iterate.
     virtual SolverResult
     solve(const Subproblems           &subproblems,
           const Interface             &interface,
