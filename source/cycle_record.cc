@@ -80,13 +80,9 @@ namespace bilayer
       return value > 0 ? value : std::numeric_limits<double>::quiet_NaN();
     }
 
-    /**
-     * The description of the record. Order: that of summary.json; the
-     * columns of table.csv are numbered, the mesh-size table has a subset
-     * of them in the same order.
-     */
+    /// The cycle, the sizes of the meshes and the numbers of unknowns.
     std::vector<RecordField>
-    describe_fields()
+    mesh_fields()
     {
       // clang-format off
       return {
@@ -116,6 +112,16 @@ namespace bilayer
           .csv(11, "dofs").column("dofs"),
         record_field("multipliers", [](const R &r) { return r.multipliers; })
           .csv(12, "multipliers"),
+      };
+      // clang-format on
+    }
+
+    /// The outer solver: its parameters, iterations and outcome.
+    std::vector<RecordField>
+    solver_fields()
+    {
+      // clang-format off
+      return {
         record_field("solver", [](const R &r) { return r.result.solver; }),
         record_field("theta", [](const R &r) { return computed(r.theta); })
           .csv(13, "theta"),
@@ -139,6 +145,16 @@ namespace bilayer
         record_field("stopping_value",
                      [](const R &r) { return r.result.stopping_value; }),
         record_field("message", [](const R &r) { return r.result.message; }),
+      };
+      // clang-format on
+    }
+
+    /// The energies, the estimate and the report on the interface.
+    std::vector<RecordField>
+    solution_fields()
+    {
+      // clang-format off
+      return {
         record_field("energy", [](const R &r) { return r.energy; })
           .csv(17, "energy").column("energy", 8, true),
         record_field("layer_1", [](const R &r) { return r.layer_energy[0]; })
@@ -175,6 +191,16 @@ namespace bilayer
         record_field("complementarity",
                      [](const R &r) { return r.report.kkt.complementarity; })
           .in("kkt"),
+      };
+      // clang-format on
+    }
+
+    /// The extreme eigenvalues of the dual operator (dual_spectrum).
+    std::vector<RecordField>
+    spectrum_fields()
+    {
+      // clang-format off
+      return {
         record_field("lambda_min", [](const R &r) { return computed(r.spectrum.lambda_min); })
           .in("dual_spectrum"),
         record_field("lambda_max", [](const R &r) { return computed(r.spectrum.lambda_max); })
@@ -187,6 +213,16 @@ namespace bilayer
           .in("dual_spectrum"),
         record_field("lanczos_steps", [](const R &r) { return r.spectrum.iterations; })
           .in("dual_spectrum"),
+      };
+      // clang-format on
+    }
+
+    /// Acceptance, processes, communication, memory and wall times.
+    std::vector<RecordField>
+    run_fields()
+    {
+      // clang-format off
+      return {
         record_field("accepted", [](const R &r) { return r.accepted(); }),
         record_field("processes", [](const R &r) { return r.processes; }),
         record_field("shared_values", [](const R &r) { return r.shared_values; }),
@@ -213,6 +249,23 @@ namespace bilayer
           .in("wall_seconds").csv(23, "total_seconds").column("time [s]", 3),
       };
       // clang-format on
+    }
+
+    /**
+     * The description of the record. Order: that of summary.json; the
+     * columns of table.csv are numbered, the mesh-size table has a subset
+     * of them in the same order.
+     */
+    std::vector<RecordField>
+    describe_fields()
+    {
+      std::vector<RecordField> fields = mesh_fields();
+      for (const std::vector<RecordField> &part : {solver_fields(),
+                                                   solution_fields(),
+                                                   spectrum_fields(),
+                                                   run_fields()})
+        fields.insert(fields.end(), part.begin(), part.end());
+      return fields;
     }
 
     /// The fields in table.csv, in the order of its columns.

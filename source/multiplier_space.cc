@@ -74,6 +74,57 @@ namespace bilayer
   }
 
 
+  namespace
+  {
+    /// The dual basis on the unit segment of the element @p fe of degree
+    /// @p degree: diag(int phi_i) M^{-1}.
+    void
+    compute_dual_basis(const FE_Q<1>      &fe,
+                       const unsigned int  degree,
+                       FullMatrix<double> &dual)
+    {
+      const unsigned int q1 = degree + 1;
+      const QGauss<1>    gauss(q1);
+      FullMatrix<double> mass(q1, q1), inverse(q1, q1);
+      Vector<double>     integral(q1);
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        for (unsigned int i = 0; i < q1; ++i)
+          {
+            const double phi_i = fe.shape_value(i, gauss.point(q));
+            integral(i) += phi_i * gauss.weight(q);
+            for (unsigned int k = 0; k < q1; ++k)
+              mass(i, k) +=
+                phi_i * fe.shape_value(k, gauss.point(q)) * gauss.weight(q);
+          }
+      inverse.invert(mass);
+      dual.reinit(q1, q1);
+      for (unsigned int i = 0; i < q1; ++i)
+        for (unsigned int k = 0; k < q1; ++k)
+          dual(i, k) = integral(i) * inverse(i, k);
+    }
+
+
+    /// Whether the coordinate @p s is an end of Sigma on Gamma_D for block
+    /// @p b.
+    bool
+    end_on_gamma_d(const InterfaceCurve &curve,
+                   const double          s,
+                   const unsigned int    b)
+    {
+      // For the gluing across Sigma where both sides' end nodes are clamped,
+      // for the gluing of the layers on one subdomain where that subdomain's
+      // end node is clamped. Where only one side of Sigma is clamped the end
+      // keeps its multiplier: its row couples the free dof of the other side
+      // to the prescribed value.
+      return b == Layout::across_sigma ?
+               curve.on_gamma_d(s) :
+               curve.on_gamma_d(s,
+                                static_cast<unsigned int>(
+                                  Layout::subdomain(Layout::coupled(b).first)));
+    }
+  } // namespace
+
+
   void
   MultiplierSpace::reinit(const InterfaceCurve                     &curve,
                           const ContactParameters                  &contact,
@@ -100,109 +151,106 @@ namespace bilayer
           mesh.breakpoints = choice[b].breakpoints;
         else
           mesh.breakpoints.clear();
-        const QGaussLobatto<1> lobatto(mesh.degree + 1);
-        const unsigned int     n_segments =
-          mesh.breakpoints.empty() ? 0 : mesh.breakpoints.size() - 1;
-        const unsigned int n =
-          n_segments > 0 ? n_segments * mesh.degree + 1 : 0;
-        mesh.node_x.assign(n, 0.);
-        mesh.node_weight.assign(n, 0.);
-        mesh.normal.assign(n, Tensor<1, 2>());
-        for (unsigned int e = 0; e < n_segments; ++e)
-          {
-            const double h = mesh.breakpoints[e + 1] - mesh.breakpoints[e];
-            // The segment's chord turned by +90 degrees: its normal times
-            // its length.
-            const Tensor<1, 2> chord = curve.point(mesh.breakpoints[e + 1]) -
-                                       curve.point(mesh.breakpoints[e]);
-            const Tensor<1, 2> chord_normal({-chord[1], chord[0]});
-            for (unsigned int i = 0; i <= mesh.degree; ++i)
-              {
-                const unsigned int a = node(e, i, b);
-                mesh.node_x[a]       = mesh.breakpoints[e] +
-                                 mesh.fe->get_unit_support_points()[i][0] * h;
-                double integral = 0;
-                for (unsigned int q = 0; q < lobatto.size(); ++q)
-                  {
-                    const double phi_w =
-                      mesh.fe->shape_value(i, lobatto.point(q)) *
-                      lobatto.weight(q);
-                    mesh.node_weight[a] += phi_w * h;
-                    integral += phi_w;
-                  }
-                mesh.normal[a] += integral * chord_normal;
-              }
-          }
-        // Weighted nodal normals: int phi_a nu_h ds over the chords of the
-        // multiplier mesh, normalised.
-        for (auto &normal : mesh.normal)
-          normal = unit_vector(normal);
-        mesh.frame.resize(n);
-        for (unsigned int a = 0; a < n; ++a)
-          mesh.frame[a] = {{tangent_of(mesh.normal[a]), mesh.normal[a]}};
-        mesh.node_mass = mesh.node_weight;
-        mesh.row.resize(n);
-        for (unsigned int a = 0; a < n; ++a)
-          mesh.row[a] = a;
-
-        // Which coupled traces lie in the multiplier space.
-        const auto [first, second] = Layout::coupled(b);
-        for (unsigned int j = 0; j < 2; ++j)
-          {
-            const unsigned int s = j == 0 ? first : second;
-            const auto        &trace =
-              traces[static_cast<unsigned int>(Layout::subdomain(s))];
-            const unsigned int degree_s =
-              Layout::layer(s) == Layer::first ? degree_first : degree_second;
-            bool        inside = degree_s <= mesh.degree;
-            std::size_t k      = 0;
-            for (const double x : trace)
-              {
-                while (k < mesh.breakpoints.size() &&
-                       mesh.breakpoints[k] < x - tol)
-                  ++k;
-                inside = inside && k < mesh.breakpoints.size() &&
-                         std::abs(mesh.breakpoints[k] - x) <= tol;
-              }
-            mesh.nodal[j] = inside || n == 0;
-          }
-
-        // The dual basis on the unit segment: diag(int phi_i) M^{-1}.
-        const unsigned int q1 = mesh.degree + 1;
-        const QGauss<1>    gauss(q1);
-        FullMatrix<double> mass(q1, q1), inverse(q1, q1);
-        Vector<double>     integral(q1);
-        for (unsigned int q = 0; q < gauss.size(); ++q)
-          for (unsigned int i = 0; i < q1; ++i)
-            {
-              const double phi_i = mesh.fe->shape_value(i, gauss.point(q));
-              integral(i) += phi_i * gauss.weight(q);
-              for (unsigned int k = 0; k < q1; ++k)
-                mass(i, k) += phi_i * mesh.fe->shape_value(k, gauss.point(q)) *
-                              gauss.weight(q);
-            }
-        inverse.invert(mass);
-        mesh.dual.reinit(q1, q1);
-        for (unsigned int i = 0; i < q1; ++i)
-          for (unsigned int k = 0; k < q1; ++k)
-            mesh.dual(i, k) = integral(i) * inverse(i, k);
+        place_nodes(b, curve);
+        find_nodal_sides(b, traces, degree_first, degree_second, tol);
+        compute_dual_basis(*mesh.fe, mesh.degree, mesh.dual);
       }
 
+    build_set(curve, contact);
+    join_end_rows(curve);
+  }
+
+
+  void
+  MultiplierSpace::place_nodes(const unsigned int    b,
+                               const InterfaceCurve &curve)
+  {
+    Mesh                  &mesh = meshes[b];
+    const QGaussLobatto<1> lobatto(mesh.degree + 1);
+    const unsigned int     n_segments =
+      mesh.breakpoints.empty() ? 0 : mesh.breakpoints.size() - 1;
+    const unsigned int n = n_segments > 0 ? n_segments * mesh.degree + 1 : 0;
+    mesh.node_x.assign(n, 0.);
+    mesh.node_weight.assign(n, 0.);
+    mesh.normal.assign(n, Tensor<1, 2>());
+    for (unsigned int e = 0; e < n_segments; ++e)
+      {
+        const double h = mesh.breakpoints[e + 1] - mesh.breakpoints[e];
+        // The segment's chord turned by +90 degrees: its normal times
+        // its length.
+        const Tensor<1, 2> chord = curve.point(mesh.breakpoints[e + 1]) -
+                                   curve.point(mesh.breakpoints[e]);
+        const Tensor<1, 2> chord_normal({-chord[1], chord[0]});
+        for (unsigned int i = 0; i <= mesh.degree; ++i)
+          {
+            const unsigned int a = node(e, i, b);
+            mesh.node_x[a]       = mesh.breakpoints[e] +
+                             mesh.fe->get_unit_support_points()[i][0] * h;
+            double integral = 0;
+            for (unsigned int q = 0; q < lobatto.size(); ++q)
+              {
+                const double phi_w =
+                  mesh.fe->shape_value(i, lobatto.point(q)) * lobatto.weight(q);
+                mesh.node_weight[a] += phi_w * h;
+                integral += phi_w;
+              }
+            mesh.normal[a] += integral * chord_normal;
+          }
+      }
+    // Weighted nodal normals: int phi_a nu_h ds over the chords of the
+    // multiplier mesh, normalised.
+    for (auto &normal : mesh.normal)
+      normal = unit_vector(normal);
+    mesh.frame.resize(n);
+    for (unsigned int a = 0; a < n; ++a)
+      mesh.frame[a] = {{tangent_of(mesh.normal[a]), mesh.normal[a]}};
+    mesh.node_mass = mesh.node_weight;
+    mesh.row.resize(n);
+    for (unsigned int a = 0; a < n; ++a)
+      mesh.row[a] = a;
+  }
+
+
+  void
+  MultiplierSpace::find_nodal_sides(
+    const unsigned int                        b,
+    const std::array<std::vector<double>, 2> &traces,
+    const unsigned int                        degree_first,
+    const unsigned int                        degree_second,
+    const double                              tol)
+  {
+    Mesh              &mesh = meshes[b];
+    const unsigned int n    = mesh.node_x.size();
+    // Which coupled traces lie in the multiplier space.
+    const auto [first, second] = Layout::coupled(b);
+    for (unsigned int j = 0; j < 2; ++j)
+      {
+        const unsigned int s = j == 0 ? first : second;
+        const auto        &trace =
+          traces[static_cast<unsigned int>(Layout::subdomain(s))];
+        const unsigned int degree_s =
+          Layout::layer(s) == Layer::first ? degree_first : degree_second;
+        bool        inside = degree_s <= mesh.degree;
+        std::size_t k      = 0;
+        for (const double x : trace)
+          {
+            while (k < mesh.breakpoints.size() && mesh.breakpoints[k] < x - tol)
+              ++k;
+            inside = inside && k < mesh.breakpoints.size() &&
+                     std::abs(mesh.breakpoints[k] - x) <= tol;
+          }
+        mesh.nodal[j] = inside || n == 0;
+      }
+  }
+
+
+  void
+  MultiplierSpace::build_set(const InterfaceCurve    &curve,
+                             const ContactParameters &contact)
+  {
     // The multiplier set (docs/problem.md §3), per component.
-    const double    p     = contact.multiplier_bound;
-    const CrackSet &crack = curve.crack();
-    // The ends of Sigma on Gamma_D, per block: for the gluing across Sigma
-    // where both sides' end nodes are clamped, for the gluing of the layers
-    // on one subdomain where that subdomain's end node is clamped. Where
-    // only one side of Sigma is clamped the end keeps its multiplier: its
-    // row couples the free dof of the other side to the prescribed value.
-    const auto on_gamma_d = [&](const double s, const unsigned int b) {
-      return b == Layout::across_sigma ?
-               curve.on_gamma_d(s) :
-               curve.on_gamma_d(s,
-                                static_cast<unsigned int>(
-                                  Layout::subdomain(Layout::coupled(b).first)));
-    };
+    const double                         p     = contact.multiplier_bound;
+    const CrackSet                      &crack = curve.crack();
     std::vector<types::global_dof_index> sizes;
     for (const auto &mesh : meshes)
       sizes.push_back(Layout::n_components * mesh.node_x.size());
@@ -216,7 +264,7 @@ namespace bilayer
           const bool   on_crack = crack.contains(x);
           if (b == Layout::across_sigma)
             crack_nodes[a] = on_crack;
-          if (on_gamma_d(x, b))
+          if (end_on_gamma_d(curve, x, b))
             continue;
           for (unsigned int c = 0; c < Layout::n_components; ++c)
             set_.set_glued(b, Layout::entry(a, c), p);
@@ -242,7 +290,12 @@ namespace bilayer
                 }
             }
         }
+  }
 
+
+  void
+  MultiplierSpace::join_end_rows(const InterfaceCurve &curve)
+  {
     // The mortar modification at the ends on Gamma_D of blocks with a side
     // that is not nodal: the end's basis function joins the other vertex of
     // its segment.
@@ -255,7 +308,7 @@ namespace bilayer
         for (const auto &[end, neighbour] :
              {std::make_pair(0u, mesh.degree),
               std::make_pair(n - 1, n - 1 - mesh.degree)})
-          if (on_gamma_d(mesh.node_x[end], b))
+          if (end_on_gamma_d(curve, mesh.node_x[end], b))
             {
               mesh.row[end] = neighbour;
               mesh.node_weight[neighbour] += mesh.node_mass[end];

@@ -130,6 +130,246 @@ namespace bilayer
         }
       out << "    </Grid>\n  </Domain>\n</Xdmf>\n";
     }
+
+
+    /// The VTU flags of the compression level @p compression.
+    DataOutBase::VtkFlags
+    vtk_flags(const Compression compression)
+    {
+      DataOutBase::VtkFlags flags;
+      flags.compression_level = compression == Compression::none ?
+                                  DataOutBase::VtkFlags::no_compression :
+                                compression == Compression::best_speed ?
+                                  DataOutBase::VtkFlags::best_speed :
+                                compression == Compression::standard ?
+                                  DataOutBase::VtkFlags::default_compression :
+                                  DataOutBase::VtkFlags::best_compression;
+      return flags;
+    }
+
+
+    /// The DataOut objects of one cycle's pieces and what they refer to.
+    struct SolutionPieces
+    {
+      // Declared before the DataOut objects that subscribe to them.
+      PerSubproblem<std::unique_ptr<StressPostprocessor>> stresses;
+      PerSubproblem<DataOut<2>>                           data_outs;
+      PerSubproblem<Vector<float>>                        layers, subdomains;
+      PerSubproblem<std::string>                          piece_of;
+      PerSubproblem<bool>                                 simplex{};
+    };
+
+
+    /// The names of the pieces of the present subproblems (stored in
+    /// @p piece_of without the process and the extension), one VTU file per
+    /// process of the subproblem's group.
+    std::vector<std::string>
+    name_pieces(const std::string                              &stem,
+                const PerSubproblem<const ElasticSubproblem *> &subproblems,
+                const Distribution                             &processes,
+                PerSubproblem<std::string>                     &piece_of)
+    {
+      std::vector<std::string> pieces;
+      for (const unsigned int s : Layout::subproblems)
+        if (subproblems[s] != nullptr)
+          {
+            const ElasticSubproblem &sub = *subproblems[s];
+            piece_of[s] =
+              stem + "-" + std::string(1, sub.name()[0]) +
+              (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus");
+            // A subproblem shared by a group of processes is written in one
+            // piece per process of the group (its cells of the partition).
+            const unsigned int group_size = processes.group_size(s);
+            for (unsigned int k = 0; k < group_size; ++k)
+              pieces.push_back(piece_of[s] +
+                               (group_size > 1 ? "." + std::to_string(k) : "") +
+                               ".vtu");
+          }
+      return pieces;
+    }
+
+
+    /// The fields of subproblem @p s on its DataOut: displacement, the
+    /// stresses, layer and subdomain.
+    void
+    add_fields(const ElasticSubproblem &sub,
+               const unsigned int       s,
+               const Vector<double>    &solution,
+               SolutionPieces          &output)
+    {
+      DataOut<2>                    &data_out = output.data_outs[s];
+      const std::vector<std::string> names(2, "displacement");
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(
+          2, DataComponentInterpretation::component_is_part_of_vector);
+      data_out.add_data_vector(solution,
+                               names,
+                               DataOut<2>::type_dof_data,
+                               interpretation);
+      output.stresses[s] = std::make_unique<StressPostprocessor>(sub.law());
+      data_out.add_data_vector(solution, *output.stresses[s]);
+
+      const unsigned int n_cells =
+        sub.dof_handler().get_triangulation().n_active_cells();
+      output.layers[s].reinit(n_cells);
+      output.subdomains[s].reinit(n_cells);
+      output.layers[s]     = sub.layer() == Layer::first ? 1.f : 2.f;
+      output.subdomains[s] = sub.subdomain() == Subdomain::minus ? -1.f : 1.f;
+      data_out.add_data_vector(output.layers[s],
+                               "layer",
+                               DataOut<2>::type_cell_data);
+      data_out.add_data_vector(output.subdomains[s],
+                               "subdomain",
+                               DataOut<2>::type_cell_data);
+    }
+
+
+    /// The patches of the piece of subproblem @p s (of this process's cells
+    /// where the subproblem is distributed), and with @p write_vtu its VTU
+    /// file.
+    void
+    build_piece(const ElasticSubproblem     &sub,
+                const unsigned int           s,
+                const Vector<double>        &solution,
+                const DataOutBase::VtkFlags &flags,
+                const Distribution          &processes,
+                const std::string           &directory,
+                const bool                   write_vtu,
+                SolutionPieces              &output)
+    {
+      DataOut<2> &data_out = output.data_outs[s];
+      data_out.attach_dof_handler(sub.dof_handler());
+      data_out.set_flags(flags);
+      add_fields(sub, s, solution, output);
+      std::string vtu = output.piece_of[s] + ".vtu";
+      if (sub.distributed())
+        {
+          const DistributedSystem &system = sub.distributed_system();
+          data_out.set_cell_selection(
+            FilteredIterator<DataOut<2>::cell_iterator>(
+              [&system](const DataOut<2>::cell_iterator &cell) {
+                return cell->is_active() &&
+                       system.assembles(cell->active_cell_index());
+              }));
+          vtu = output.piece_of[s] + "." +
+                std::to_string(Utilities::MPI::this_mpi_process(
+                  processes.group_communicator())) +
+                ".vtu";
+        }
+
+      output.simplex[s] = !sub.dof_handler()
+                             .get_triangulation()
+                             .all_reference_cells_are_hyper_cube();
+      data_out.build_patches(sub.mapping(),
+                             output.simplex[s] ? 1 : sub.fe().degree);
+
+      if (write_vtu)
+        write_atomically(directory + "/" + vtu,
+                         [&](std::ostream &out) { data_out.write_vtu(out); });
+    }
+
+
+    /// The HDF5 files of the owned pieces (collective in a group; the
+    /// library is not used from threads): the (subproblem, XDMF grid) of the
+    /// pieces whose root is this process.
+    std::vector<std::pair<unsigned int, std::string>>
+    write_hdf5_pieces(
+      const std::string                              &directory,
+      const unsigned int                              cycle,
+      const PerSubproblem<const ElasticSubproblem *> &subproblems,
+      const Distribution                             &processes,
+      SolutionPieces                                 &output)
+    {
+      std::vector<std::pair<unsigned int, std::string>> grids;
+      for (const unsigned int s : Layout::subproblems)
+        if (subproblems[s] != nullptr && subproblems[s]->owned())
+          {
+            const ElasticSubproblem   &sub      = *subproblems[s];
+            DataOut<2>                &data_out = output.data_outs[s];
+            const MPI_Comm             group    = sub.distributed() ?
+                                                    processes.group_communicator() :
+                                                    MPI_COMM_SELF;
+            DataOutBase::DataOutFilter filter(
+              DataOutBase::DataOutFilterFlags(true, true));
+            data_out.write_filtered_data(filter);
+            const std::string h5 = output.piece_of[s] + ".h5";
+            data_out.write_hdf5_parallel(filter,
+                                         directory + "/" + h5 + ".part",
+                                         group);
+            const XDMFEntry entry =
+              data_out.create_xdmf_entry(filter, h5, cycle, group);
+            if (processes.process() != processes.root(s))
+              continue;
+            std::error_code error;
+            std::filesystem::rename(directory + "/" + h5 + ".part",
+                                    directory + "/" + h5,
+                                    error);
+            AssertThrow(!error,
+                        ExcMessage("cannot write '" + directory + "/" + h5 +
+                                   "': " + error.message()));
+            grids.emplace_back(
+              s,
+              entry.get_xdmf_content(4,
+                                     output.simplex[s] ?
+                                       ReferenceCells::Triangle :
+                                       ReferenceCells::Quadrilateral));
+          }
+      return grids;
+    }
+
+
+    /// The grids of all processes at the first process, in the order of the
+    /// subproblems.
+    void
+    gather_grids(const Distribution                                &processes,
+                 std::vector<std::pair<unsigned int, std::string>> &grids)
+    {
+      const auto all =
+        Utilities::MPI::gather(processes.communicator(), grids, 0);
+      grids.clear();
+      for (const auto &from_process : all)
+        grids.insert(grids.end(), from_process.begin(), from_process.end());
+      std::sort(grids.begin(), grids.end());
+    }
+
+
+    /// solution-NN.pvtu of the pieces @p pieces and solution.pvd over the
+    /// cycles written so far.
+    void
+    write_vtu_records(const std::string              &directory,
+                      const unsigned int              cycle,
+                      const std::string              &stem,
+                      const std::vector<std::string> &pieces,
+                      const DataOut<2>               &first,
+                      SolutionRecords                &records)
+    {
+      write_atomically(directory + "/" + stem + ".pvtu",
+                       [&](std::ostream &out) {
+                         first.write_pvtu_record(out, pieces);
+                       });
+      records.pvd.emplace_back(cycle, stem + ".pvtu");
+      write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, records.pvd);
+      });
+    }
+
+
+    /// The cycle's XDMF grids in @p records, and solution.xdmf.
+    void
+    write_xdmf_records(
+      const std::string                                       &directory,
+      const unsigned int                                       cycle,
+      const std::vector<std::pair<unsigned int, std::string>> &grids,
+      SolutionRecords                                         &records)
+    {
+      std::vector<std::string> content;
+      for (const auto &grid : grids)
+        content.push_back(grid.second);
+      records.xdmf.emplace_back(cycle, content);
+      write_atomically(directory + "/solution.xdmf",
+                       [&](std::ostream &out) { write_xdmf(out, records); });
+    }
   } // namespace
 
 
@@ -148,169 +388,43 @@ namespace bilayer
     std::ostringstream stem;
     stem << "solution-" << std::setw(2) << std::setfill('0') << cycle;
 
-    std::vector<std::string> pieces;
-    /// (subproblem, XDMF grid) of the pieces written here.
-    std::vector<std::pair<unsigned int, std::string>> grids;
-    // Declared before the DataOut objects that subscribe to them.
-    PerSubproblem<std::unique_ptr<StressPostprocessor>> stresses;
-    PerSubproblem<DataOut<2>>                           data_outs;
-    PerSubproblem<Vector<float>>                        layers, subdomains;
-    PerSubproblem<std::string>                          piece_of;
-    PerSubproblem<bool>                                 simplex{};
-    DataOutBase::VtkFlags                               flags;
-    flags.compression_level =
-      parameters.compression == Compression::none ?
-        DataOutBase::VtkFlags::no_compression :
-      parameters.compression == Compression::best_speed ?
-        DataOutBase::VtkFlags::best_speed :
-      parameters.compression == Compression::standard ?
-        DataOutBase::VtkFlags::default_compression :
-        DataOutBase::VtkFlags::best_compression;
-    for (const unsigned int s : Layout::subproblems)
-      if (subproblems[s] != nullptr)
-        {
-          const ElasticSubproblem &sub = *subproblems[s];
-          piece_of[s] =
-            stem.str() + "-" + std::string(1, sub.name()[0]) +
-            (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus");
-          // A subproblem shared by a group of processes is written in one
-          // piece per process of the group (its cells of the partition).
-          const unsigned int group_size = processes.group_size(s);
-          for (unsigned int k = 0; k < group_size; ++k)
-            pieces.push_back(piece_of[s] +
-                             (group_size > 1 ? "." + std::to_string(k) : "") +
-                             ".vtu");
-        }
+    SolutionPieces                 output;
+    const DataOutBase::VtkFlags    flags = vtk_flags(parameters.compression);
+    const std::vector<std::string> pieces =
+      name_pieces(stem.str(), subproblems, processes, output.piece_of);
 
     // The patches of the pieces, and their VTU files, as parallel tasks.
-    const auto build_piece = [&](const unsigned int s) {
-      const ElasticSubproblem &sub      = *subproblems[s];
-      DataOut<2>              &data_out = data_outs[s];
-      data_out.attach_dof_handler(sub.dof_handler());
-      data_out.set_flags(flags);
-      const std::vector<std::string> names(2, "displacement");
-      const std::vector<
-        DataComponentInterpretation::DataComponentInterpretation>
-        interpretation(
-          2, DataComponentInterpretation::component_is_part_of_vector);
-      data_out.add_data_vector(solutions[s],
-                               names,
-                               DataOut<2>::type_dof_data,
-                               interpretation);
-      stresses[s] = std::make_unique<StressPostprocessor>(sub.law());
-      data_out.add_data_vector(solutions[s], *stresses[s]);
-
-      const unsigned int n_cells =
-        sub.dof_handler().get_triangulation().n_active_cells();
-      layers[s].reinit(n_cells);
-      subdomains[s].reinit(n_cells);
-      layers[s]     = sub.layer() == Layer::first ? 1.f : 2.f;
-      subdomains[s] = sub.subdomain() == Subdomain::minus ? -1.f : 1.f;
-      data_out.add_data_vector(layers[s], "layer", DataOut<2>::type_cell_data);
-      data_out.add_data_vector(subdomains[s],
-                               "subdomain",
-                               DataOut<2>::type_cell_data);
-      std::string vtu = piece_of[s] + ".vtu";
-      if (sub.distributed())
-        {
-          const DistributedSystem &system = sub.distributed_system();
-          data_out.set_cell_selection(
-            FilteredIterator<DataOut<2>::cell_iterator>(
-              [&system](const DataOut<2>::cell_iterator &cell) {
-                return cell->is_active() &&
-                       system.assembles(cell->active_cell_index());
-              }));
-          vtu = piece_of[s] + "." +
-                std::to_string(Utilities::MPI::this_mpi_process(
-                  processes.group_communicator())) +
-                ".vtu";
-        }
-
-      simplex[s] = !sub.dof_handler()
-                      .get_triangulation()
-                      .all_reference_cells_are_hyper_cube();
-      data_out.build_patches(sub.mapping(), simplex[s] ? 1 : sub.fe().degree);
-
-      if (parameters.write_vtu)
-        write_atomically(directory + "/" + vtu,
-                         [&](std::ostream &out) { data_out.write_vtu(out); });
-    };
     Tasks tasks;
     for (const unsigned int s : Layout::subproblems)
       if (subproblems[s] != nullptr && subproblems[s]->owned())
-        tasks.add([&, s]() { build_piece(s); });
+        tasks.add([&, s]() {
+          build_piece(*subproblems[s],
+                      s,
+                      solutions[s],
+                      flags,
+                      processes,
+                      directory,
+                      parameters.write_vtu,
+                      output);
+        });
     tasks.join_all();
 
-    // HDF5 (collective in a group; the library is not used from threads).
+    /// (subproblem, XDMF grid) of the pieces written here.
+    std::vector<std::pair<unsigned int, std::string>> grids;
     if (parameters.write_hdf5)
-      for (const unsigned int s : Layout::subproblems)
-        if (subproblems[s] != nullptr && subproblems[s]->owned())
-          {
-            const ElasticSubproblem   &sub      = *subproblems[s];
-            DataOut<2>                &data_out = data_outs[s];
-            const MPI_Comm             group    = sub.distributed() ?
-                                                    processes.group_communicator() :
-                                                    MPI_COMM_SELF;
-            DataOutBase::DataOutFilter filter(
-              DataOutBase::DataOutFilterFlags(true, true));
-            data_out.write_filtered_data(filter);
-            const std::string h5 = piece_of[s] + ".h5";
-            data_out.write_hdf5_parallel(filter,
-                                         directory + "/" + h5 + ".part",
-                                         group);
-            const XDMFEntry entry =
-              data_out.create_xdmf_entry(filter, h5, cycle, group);
-            if (processes.process() != processes.root(s))
-              continue;
-            std::error_code error;
-            std::filesystem::rename(directory + "/" + h5 + ".part",
-                                    directory + "/" + h5,
-                                    error);
-            AssertThrow(!error,
-                        ExcMessage("cannot write '" + directory + "/" + h5 +
-                                   "': " + error.message()));
-            grids.emplace_back(s,
-                               entry.get_xdmf_content(
-                                 4,
-                                 simplex[s] ? ReferenceCells::Triangle :
-                                              ReferenceCells::Quadrilateral));
-          }
-
-    // The grids of all pieces at the first process, in the order of the
-    // subproblems.
+      grids =
+        write_hdf5_pieces(directory, cycle, subproblems, processes, output);
     if (parameters.write_hdf5 && processes.parallel())
-      {
-        const auto all =
-          Utilities::MPI::gather(processes.communicator(), grids, 0);
-        grids.clear();
-        for (const auto &from_process : all)
-          grids.insert(grids.end(), from_process.begin(), from_process.end());
-        std::sort(grids.begin(), grids.end());
-      }
+      gather_grids(processes, grids);
     if (!processes.is_root())
       return;
+    // The first process owns u- in every layout: its fields name those of
+    // all pieces.
     if (parameters.write_vtu)
-      {
-        // The first process owns u- in every layout: its fields name those
-        // of all pieces.
-        write_atomically(directory + "/" + stem.str() + ".pvtu",
-                         [&](std::ostream &out) {
-                           data_outs[0].write_pvtu_record(out, pieces);
-                         });
-        records.pvd.emplace_back(cycle, stem.str() + ".pvtu");
-        write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
-          DataOutBase::write_pvd_record(out, records.pvd);
-        });
-      }
+      write_vtu_records(
+        directory, cycle, stem.str(), pieces, output.data_outs[0], records);
     if (parameters.write_hdf5)
-      {
-        std::vector<std::string> content;
-        for (const auto &grid : grids)
-          content.push_back(grid.second);
-        records.xdmf.emplace_back(cycle, content);
-        write_atomically(directory + "/solution.xdmf",
-                         [&](std::ostream &out) { write_xdmf(out, records); });
-      }
+      write_xdmf_records(directory, cycle, grids, records);
   }
 
 

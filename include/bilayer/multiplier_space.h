@@ -425,6 +425,29 @@ namespace bilayer
       dealii::FullMatrix<double> dual;
     };
 
+    /// The nodes of block @p b's mesh with their lumped masses D, weighted
+    /// nodal normals and frames, each node its own row.
+    void
+    place_nodes(const unsigned int b, const InterfaceCurve &curve);
+
+    /// Which of the traces that block @p b couples lie in its multiplier
+    /// space (nodal()).
+    void
+    find_nodal_sides(const unsigned int                        b,
+                     const std::array<std::vector<double>, 2> &traces,
+                     const unsigned int                        degree_first,
+                     const unsigned int                        degree_second,
+                     const double                              tol);
+
+    /// The multiplier set of all blocks and the crack and corner nodes of
+    /// mu_1 (docs/problem.md §3).
+    void
+    build_set(const InterfaceCurve &curve, const ContactParameters &contact);
+
+    /// The mortar modification at the ends on Gamma_D (row()).
+    void
+    join_end_rows(const InterfaceCurve &curve);
+
     PerBlock<Mesh> meshes;
     /// Per node of mu_1.
     std::vector<bool> crack_nodes, corner_nodes;
