@@ -54,11 +54,11 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <bilayer/build_info.h>
-#include <bilayer/cholesky.h>
-#include <bilayer/elastic_law.h>
-#include <bilayer/geometry.h>
-#include <bilayer/parameters.h>
+#include <bilayer/core/build_info.h>
+#include <bilayer/geometry/geometry.h>
+#include <bilayer/parameters/parameters.h>
+#include <bilayer/physics/elastic_law.h>
+#include <bilayer/subproblem/cholesky.h>
 
 #include <array>
 #include <cmath>

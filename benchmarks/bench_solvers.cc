@@ -14,8 +14,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <filesystem>

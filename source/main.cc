@@ -1,5 +1,5 @@
-#include <bilayer/run.h>
-#include <bilayer/run_environment.h>
+#include <bilayer/app/run.h>
+#include <bilayer/app/run_environment.h>
 
 // Before every shared library's initialisation: invalid thread counts of
 // the environment are hidden from the libraries, and refused by the run.

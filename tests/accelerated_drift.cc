@@ -9,8 +9,8 @@
 // after 30 000 iterations it stops at the iteration limit, not diverged,
 // with a KKT residual below half of that after 3 000 iterations.
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <fstream>
 #include <iostream>

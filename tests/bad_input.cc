@@ -1,8 +1,8 @@
 // Bad input gives one clear line naming the parameter and the allowed
 // range (bilayer prints it as "bilayer: error: ..." and exits with 1).
 
-#include <bilayer/geometry.h>
-#include <bilayer/parameters.h>
+#include <bilayer/geometry/geometry.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <iostream>
 

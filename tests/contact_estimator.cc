@@ -19,8 +19,8 @@
 
 #include <deal.II/base/quadrature_lib.h>
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <iostream>

@@ -52,8 +52,8 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <algorithm>
 #include <array>

@@ -27,9 +27,9 @@
 // cycle; every cycle is accepted (mu_c >= 0, complementarity). The values
 // per cycle are written to corner_contact.txt.
 
-#include <bilayer/interface_diagnostics.h>
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/interface/interface_diagnostics.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <fstream>

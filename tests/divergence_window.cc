@@ -11,7 +11,7 @@
 // (w the window) of exceeding the factor, with or without an oscillation on
 // top.
 
-#include <bilayer/first_order_iteration.h>
+#include <bilayer/solvers/first_order_iteration.h>
 
 #include <algorithm>
 #include <cmath>

@@ -35,9 +35,9 @@
 //    crack (more than 1 % of G: without it the two differ by more than
 //    1 %); three support radii agree to 1e-3.
 
-#include <bilayer/interface_diagnostics.h>
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/interface/interface_diagnostics.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,7 @@
 // - set_g_error(): the larger of the sequence's estimate and |G(R) -
 //   G(R/2)|, naming the estimators; NaN and "none: ..." where neither exists.
 
-#include <bilayer/fracture.h>
+#include <bilayer/postprocess/fracture.h>
 
 #include <algorithm>
 #include <cmath>

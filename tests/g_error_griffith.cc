@@ -21,8 +21,8 @@
 // - summary.json carries "G_error" and "G_error_estimate", table.csv the
 //   column dG_tip<k> right after G_tip<k> with the values of summary.json.
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <algorithm>
 #include <cmath>

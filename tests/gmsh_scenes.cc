@@ -42,9 +42,9 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
-#include <bilayer/interface_diagnostics.h>
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/interface/interface_diagnostics.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <iostream>

@@ -22,8 +22,8 @@
 //    steps): every cycle converges, to the energy that exact Newton steps
 //    give (the discrete problem has one solution).
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <fstream>

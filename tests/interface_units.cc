@@ -39,13 +39,13 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
-#include <bilayer/geometry.h>
-#include <bilayer/interface.h>
-#include <bilayer/interface_curve.h>
-#include <bilayer/multiplier_space.h>
-#include <bilayer/parameters.h>
-#include <bilayer/subproblem.h>
-#include <bilayer/trace_coupling.h>
+#include <bilayer/geometry/geometry.h>
+#include <bilayer/geometry/interface_curve.h>
+#include <bilayer/interface/interface.h>
+#include <bilayer/interface/multiplier_space.h>
+#include <bilayer/interface/trace_coupling.h>
+#include <bilayer/parameters/parameters.h>
+#include <bilayer/subproblem/subproblem.h>
 
 #include <algorithm>
 #include <cmath>

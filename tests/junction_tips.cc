@@ -48,8 +48,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <fstream>

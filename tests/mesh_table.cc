@@ -12,10 +12,10 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <bilayer/cycle_record.h>
-#include <bilayer/geometry.h>
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/geometry/geometry.h>
+#include <bilayer/output/cycle_record.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <fstream>
 #include <iostream>

@@ -25,9 +25,9 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <bilayer/distribution.h>
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
+#include <bilayer/subproblem/distribution.h>
 
 #include <algorithm>
 #include <array>

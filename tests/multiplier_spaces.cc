@@ -20,8 +20,8 @@
 // tractions to 1e-8 of each group's largest value: the multipliers are a
 // property of the discretisation, not of the solver.
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <algorithm>
 #include <cmath>

@@ -27,9 +27,9 @@
 // gluing multiplier is then dropped: the jump is fixed by the data) and on
 // neither side.
 
-#include <bilayer/interface_diagnostics.h>
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/interface/interface_diagnostics.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <iostream>

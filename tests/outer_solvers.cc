@@ -13,10 +13,10 @@
 // Example 1 on 8 quadrilaterals along Sigma and on the paper's mesh1 (P1
 // triangles).
 
-#include <bilayer/interface_stiffness.h>
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
-#include <bilayer/subdomain_solves.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
+#include <bilayer/solvers/subdomain_solves.h>
+#include <bilayer/subproblem/interface_stiffness.h>
 
 #include <cmath>
 #include <iostream>

@@ -11,8 +11,8 @@
 // the numbers of tests/prm_references.cc (scenes "refinement, ..."), which
 // checks that this .output holds them.
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <iostream>

@@ -11,8 +11,8 @@
 // Single precision indicators overflowed (eta = inf) or lost the ordering
 // of small cells at such loads.
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <iomanip>

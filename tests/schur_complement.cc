@@ -30,9 +30,9 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
-#include <bilayer/geometry.h>
-#include <bilayer/interface_stiffness.h>
-#include <bilayer/subproblem.h>
+#include <bilayer/geometry/geometry.h>
+#include <bilayer/subproblem/interface_stiffness.h>
+#include <bilayer/subproblem/subproblem.h>
 
 #include <cmath>
 #include <iostream>

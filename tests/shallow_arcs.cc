@@ -14,8 +14,8 @@
 // (shallow_arcs_c17.msh, corner = 1), the crack meets Sigma at an angle
 // a / 3 = 0.019 at each tip: G is not defined there.
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <iostream>

@@ -9,8 +9,8 @@
 // A crack end that is no mesh vertex, or a piece reaching an end of Sigma,
 // is refused with the crack left as it was.
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <iostream>
 #include <sstream>

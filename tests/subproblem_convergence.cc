@@ -14,8 +14,8 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <bilayer/geometry.h>
-#include <bilayer/subproblem.h>
+#include <bilayer/geometry/geometry.h>
+#include <bilayer/subproblem/subproblem.h>
 
 #include <cmath>
 #include <iostream>

@@ -29,9 +29,9 @@
 //    on cycle 2, so G is NaN on cycles 0 and 1 and finite from cycle 2 on,
 //    and the run passes.
 
-#include <bilayer/fracture.h>
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
+#include <bilayer/postprocess/fracture.h>
 
 #include <cmath>
 #include <iostream>

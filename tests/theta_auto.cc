@@ -11,8 +11,8 @@
 // observed one. The observed threshold is located by bisection to +-0.5 on
 // the paper's mesh1 (P/M = 12/32).
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <iostream>

@@ -12,7 +12,7 @@
 //   the active set and 6 uniform cycles) every estimate that is printed
 //   lies within a factor 2 of the time the later cycles took.
 
-#include <bilayer/progress.h>
+#include <bilayer/core/progress.h>
 
 #include <cmath>
 #include <iostream>

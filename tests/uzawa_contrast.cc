@@ -14,8 +14,8 @@
 // Example 1 (16 quadrilaterals along Sigma), Young's modulus of layer 2
 // 2e-3 against 200.
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <cmath>
 #include <iostream>

@@ -9,8 +9,8 @@
 // Its message suggests a safe step (0.9 * 2 / lambda_max from a power
 // iteration): a run with that step converges.
 
-#include <bilayer/parameters.h>
-#include <bilayer/study.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/parameters.h>
 
 #include <iostream>
 #include <sstream>

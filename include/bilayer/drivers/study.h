@@ -1,0 +1,243 @@
+#ifndef bilayer_study_h
+#define bilayer_study_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/block_vector.h>
+
+#include <bilayer/core/layout.h>
+#include <bilayer/geometry/geometry.h>
+#include <bilayer/interface/interface.h>
+#include <bilayer/output/cycle_record.h>
+#include <bilayer/output/output.h>
+#include <bilayer/parameters/parameters.h>
+#include <bilayer/postprocess/fracture.h>
+#include <bilayer/solvers/outer_solver.h>
+#include <bilayer/subproblem/distribution.h>
+#include <bilayer/subproblem/subproblem.h>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <utility>
+#include <vector>
+
+namespace bilayer
+{
+  /**
+   * A study of one scene: a sequence of states, each solved and checked and
+   * written as one record (VTU/PVD, interface-NN.csv, summary.json, the
+   * mesh-size table). Two drivers make the sequence:
+   *  - run(): the mesh cycles of the paper; each cycle builds the two
+   *    meshes (created or refined), the four subproblems (assembled and
+   *    factorised once) and the interface, and runs the contact solver;
+   *  - run_states(): states on the meshes of cycle 0 that differ in the
+   *    crack; the subproblems are assembled and factorised once, and each
+   *    state rebuilds only the interface (the crack changes which part of
+   *    Sigma is glued, not the subproblems' matrices) and recomputes the
+   *    crack tips.
+   * Each state is solved by solve_state(): interface, outer solve,
+   * assessment, outputs.
+   */
+  class Study
+  {
+  public:
+    /**
+     * A study of @p scene that reports to @p out, run by the processes of
+     * @p distribution (the MPI job if MPI is initialised; results are
+     * reported and written by its first process, the VTU/HDF5 pieces by
+     * the owners of the subproblems).
+     */
+    Study(const Scene        &scene,
+          std::ostream       &out,
+          const Distribution &distribution = Distribution::world());
+
+    /// All cycles; true if every cycle converged and passed its checks.
+    /// Stops at the first cycle that does not.
+    bool
+    run();
+
+    /// One cycle (mesh cycle @p cycle); appends to records().
+    const CycleRecord &
+    run_cycle(const unsigned int cycle);
+
+    /**
+     * The states driver: on the meshes of cycle 0, state k has the crack
+     * @p cracks[k] (its pieces on Sigma, ending at mesh vertices) and is
+     * solved from a cold start (zero multipliers); record k is numbered k.
+     * The subproblems are set up once, before state 0. True if every state
+     * converged and passed its checks; stops at the first that does not.
+     */
+    bool
+    run_states(const std::vector<CrackSet> &cracks);
+
+    const std::vector<CycleRecord> &
+    records() const
+    {
+      return cycle_records;
+    }
+    const Interface &
+    interface() const
+    {
+      return coupling;
+    }
+    const Solutions &
+    solutions() const
+    {
+      return w;
+    }
+    const dealii::BlockVector<double> &
+    multipliers() const
+    {
+      return mu;
+    }
+    const ElasticSubproblem &
+    subproblem(const Layer layer, const Subdomain subdomain) const
+    {
+      return *subproblems[Layout::index(layer, subdomain)];
+    }
+
+    /**
+     * Replace the error indicators by which the next adaptive cycle marks
+     * cells (one value per active cell of each subdomain, in the order of
+     * active_cell_iterators(); Mesh/Marking applies as usual), so that a
+     * driver can refine by a criterion of its own.
+     */
+    void
+    set_indicators(const std::array<dealii::Vector<double>,
+                                    Layout::n_subdomains> &new_indicators);
+
+    /// As above, from single precision indicators.
+    void
+    set_indicators(const std::array<dealii::Vector<float>, Layout::n_subdomains>
+                     &new_indicators);
+
+    /// The error indicators of the last cycle (estimate_error()).
+    const std::array<dealii::Vector<double>, Layout::n_subdomains> &
+    error_indicators() const
+    {
+      return indicators;
+    }
+
+    /**
+     * Called on the first process before and after each cycle's files are
+     * written (StagedDirectory::verify(): the output directory is still
+     * the one the run made, with the files written so far); set on every
+     * process or on none. Without it, the output directory is created if
+     * missing.
+     */
+    void
+    set_directory_check(std::function<void()> check)
+    {
+      directory_check = std::move(check);
+    }
+
+  private:
+    std::function<void()> directory_check;
+    // The steps of run_cycle(), in this order.
+
+    /// The meshes of the cycle (created or refined) and their sizes.
+    void
+    build_meshes(CycleRecord &record);
+    /// Refuses a cycle that would not fit into the memory (the estimate
+    /// goes into @p record).
+    void
+    check_memory(CycleRecord &record) const;
+
+    /// Whether the support of theta at each crack tip holds enough cells
+    /// of this cycle's meshes (min_cells_per_support_radius): refuses a
+    /// scene whose last cycle cannot (uniform refinement), else keeps in
+    /// unresolved_tips why G is not reported at a tip on this cycle.
+    void
+    check_supports(const CycleRecord &record);
+    /// "# tip k: <where>, grows towards ..." for each crack tip (none
+    /// without tips): the head of table.txt and of the terminal's table.
+    void
+    write_tip_notes(std::ostream &out) const;
+    /// The subproblems of the present layers, assembled and factorised as
+    /// parallel tasks.
+    void
+    set_up_subproblems();
+    /// Their dofs and the set-up times of the busiest process.
+    void
+    count_subproblems(CycleRecord &record) const;
+    /// The interface and the multipliers, started from @p previous (the
+    /// previous cycle's multipliers) if given.
+    void
+    set_up_interface(CycleRecord                      &record,
+                     const MultiplierSpace::Functions *previous);
+    /// The outer solve, with its times and the MPI exchange.
+    void
+    solve(CycleRecord &record);
+    /// The energy, the residuals, the acceptance checks and (adaptive
+    /// refinement) the error indicators of the next cycle.
+    void
+    assess(CycleRecord &record);
+    void
+    check(CycleRecord &record) const;
+    /// The crack tips (found again after the crack changed) and whether
+    /// their supports hold enough cells of the present meshes.
+    void
+    update_tips(const CycleRecord &record);
+    /**
+     * One state on the present subproblems: the interface (and the
+     * multipliers, from @p previous if given), the outer solve, the
+     * assessment and the outputs; appends the record. @p total has run
+     * since the state began.
+     */
+    const CycleRecord &
+    solve_state(CycleRecord                      &record,
+                const MultiplierSpace::Functions *previous,
+                const dealii::Timer              &total);
+    /// The outputs of the cycle (solution, interface CSV, summary.json, the
+    /// tables); appends @p record to records(), with the total time and the
+    /// memory.
+    void
+    write(CycleRecord &record, const dealii::Timer &total);
+    /// The interface-NN.csv of this cycle (and, with @p fields, its
+    /// interface-NN.vtu), and summary.json, table.txt, table.tex and
+    /// table.csv of all cycles so far (first process).
+    void
+    write_records(const unsigned int cycle, const bool fields);
+    void
+    print_report(const CycleRecord &record) const;
+
+    /// The subproblems as the interface reads them and as the solvers use
+    /// them (null where a layer is absent).
+    PerSubproblem<const ElasticSubproblem *>
+    subproblem_views() const;
+
+    const Scene         scene;
+    std::ostream       &out;
+    const Distribution &distribution;
+    /// Progress (Output/Terminal output = full) and the checks, both on the
+    /// first process only.
+    dealii::ConditionalOStream                        pcout, rout;
+    Geometry                                          domain;
+    PerSubproblem<std::unique_ptr<ElasticSubproblem>> subproblems;
+    Interface                                         coupling;
+    Solutions                                         w;
+    dealii::BlockVector<double>                       mu;
+    std::vector<CycleRecord>                          cycle_records;
+    SolutionRecords                                   outputs;
+    /// The mesh-size table of the cycles so far.
+    dealii::ConvergenceTable table;
+    /// The crack tips and the supports of their velocity fields (from the
+    /// meshes of cycle 0, or of the state's crack).
+    std::vector<CrackTip> tips;
+    bool                  tips_found = false;
+    /// Per tip: why its support holds too few cells of this cycle's meshes
+    /// (empty where it holds enough).
+    std::vector<std::string> unresolved_tips;
+    /// Per tip: the size of the largest cell at it on this cycle's meshes
+    /// (support_cells()), 0 where G is not defined.
+    std::vector<double> tip_cell_sizes;
+    /// Error indicators of the last cycle, per subdomain (adaptive
+    /// refinement).
+    std::array<dealii::Vector<double>, Layout::n_subdomains> indicators;
+  };
+} // namespace bilayer
+
+#endif

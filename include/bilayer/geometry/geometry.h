@@ -1,0 +1,201 @@
+#ifndef bilayer_geometry_h
+#define bilayer_geometry_h
+
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+
+#include <bilayer/core/boundary_ids.h>
+#include <bilayer/geometry/interface_curve.h>
+#include <bilayer/gmsh/gmsh_mesh.h>
+#include <bilayer/parameters/parameters.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace bilayer
+{
+  /**
+   * The cells across one subdomain of the rectangle's structured mesh of
+   * refinement cycle 2^@p log2_factor: Mesh/Cells across times the factor,
+   * or the number of the same aspect as @p cells_along (along Sigma, the
+   * factor included) over @p width for the subdomain's @p height (rounded,
+   * at least 1). In double precision, so that the memory estimate of a
+   * cycle far too large for the mesh gets the same count.
+   */
+  inline double
+  structured_cells_across(const MeshParameters &mesh,
+                          const double          cells_along,
+                          const double          height,
+                          const double          width,
+                          const unsigned int    log2_factor)
+  {
+    return mesh.cells_across > 0 ?
+             std::ldexp(double(mesh.cells_across), int(log2_factor)) :
+             std::max(1., std::round(cells_along * height / width));
+  }
+
+  /**
+   * Whether a cell with the signed area @p area (counter-clockwise
+   * positive) and the longest edge @p diameter is inverted or degenerate:
+   * the rule of every mesh bilayer reads (mesh files, Gmsh scenes).
+   */
+  inline bool
+  degenerate_cell(const double area, const double diameter)
+  {
+    return !(area > 1e-10 * diameter * diameter);
+  }
+
+  /// A point of a mesh whose cells must be no larger than @p size.
+  struct PointResolution
+  {
+    dealii::Point<2> point;
+    double           size = 0;
+  };
+
+  /// Size data of one subdomain mesh (the columns of the paper's Table 1).
+  struct MeshStatistics
+  {
+    unsigned int vertices = 0;
+    unsigned int cells    = 0;
+    /// Shortest and longest cell edge [length].
+    double h_min = 0;
+    double h_max = 0;
+  };
+
+  /**
+   * The two subdomains Omega- = (x_min, x_max) x (y_min, y_Sigma) and
+   * Omega+ = (x_min, x_max) x (y_Sigma, y_max), each with its own serial
+   * Triangulation: structured (GridGenerator, the same number of cells
+   * along Sigma on both sides, so the traces match) or read from Gmsh
+   * files (GridIn). The crack end points must be mesh vertices (checked).
+   */
+  class Geometry
+  {
+  public:
+    Geometry(const GeometryParameters &geometry, const MeshParameters &mesh);
+
+    /// Build both meshes of refinement cycle @p cycle (cells along Sigma
+    /// times 2^cycle).
+    void
+    create_meshes(const unsigned int cycle);
+
+    /**
+     * Refine both meshes from cell indicators (one per active cell of each
+     * subdomain, in the order of active_cell_iterators()), marking by
+     * Mesh/Marking with one threshold over the cells of both subdomains.
+     * Each subdomain keeps its own hanging nodes; the traces on Sigma stop
+     * matching where only one side is refined.
+     *
+     * The marking depends only on the ratios of the indicators: they are
+     * divided by a power of two of their largest (exactly) and ranked in
+     * single precision, so that indicators equal up to round-off (cells of
+     * symmetric meshes) tie and refine together, and indicators scaled by a
+     * power of two mark exactly the same cells.
+     *
+     * Besides, every active cell that has one of the points of @p resolve
+     * as a vertex and is larger (cell_size()) than that point's size is
+     * refined: the cells at a crack tip are refined until the support of
+     * its velocity field theta holds them (fracture.h).
+     */
+    void
+    refine(const std::array<dealii::Vector<double>, 2> &indicators,
+           const std::vector<PointResolution>          &resolve = {});
+
+    const dealii::Triangulation<2> &
+    triangulation(const Subdomain subdomain) const;
+
+    MeshStatistics
+    statistics(const Subdomain subdomain) const;
+
+    /// Sigma as a curve: parametrisation, normals, crack pieces and the
+    /// ends on Gamma_D (set by create_meshes()).
+    const InterfaceCurve &
+    interface_curve() const
+    {
+      return curve;
+    }
+
+    /**
+     * Replace the crack gamma_c by @p crack on the present meshes (the one
+     * source of the crack: the multiplier spaces, the coupling, the
+     * estimator and the tips follow the interface curve's CrackSet). Its
+     * pieces must be ordered, disjoint, inside Sigma and end at vertices of
+     * both meshes on Sigma; else nothing changes and the error names the
+     * end point.
+     */
+    void
+    set_crack(const CrackSet &crack);
+
+    /// P of Table 1: vertices on Sigma.
+    unsigned int
+    n_sigma_vertices() const;
+
+    /// M of Table 1: vertices on the outer boundary of Omega.
+    unsigned int
+    n_outer_vertices() const;
+
+    /// The first @p how_many numbers of cells along Sigma whose structured
+    /// meshes have every crack end point as a vertex.
+    std::vector<unsigned int>
+    valid_cells_along_sigma(const unsigned int how_many) const;
+
+  private:
+    void
+    check_crack_vertices() const;
+
+    /// Refuse a mesh read from a file whose cells are inverted or
+    /// degenerate, or whose boundary has faces inside the subdomain (slits,
+    /// holes, overlapping or unconnected cells).
+    void
+    check_cells(const dealii::Triangulation<2> &tria,
+                const Subdomain                 subdomain,
+                const std::string              &file) const;
+
+    void
+    make_subdomain(const Subdomain           subdomain,
+                   const unsigned int        cells_along,
+                   const unsigned int        cells_across,
+                   dealii::Triangulation<2> &tria) const;
+
+    void
+    read_subdomain(const Subdomain           subdomain,
+                   const std::string        &pattern,
+                   dealii::Triangulation<2> &tria) const;
+
+    /// Mesh/Fit crack tips: move the vertex columns of a structured mesh
+    /// with @p n_x cells along Sigma onto the crack end points.
+    void
+    fit_crack_tips(const unsigned int        n_x,
+                   dealii::Triangulation<2> &tria) const;
+
+    /// Side ids on the outer boundary, glued/crack ids on Sigma, from the
+    /// face centres.
+    void
+    assign_boundary_ids(dealii::Triangulation<2> &tria) const;
+
+    /// Read the Gmsh scene (once), check it and build Sigma's curve.
+    void
+    load_gmsh();
+
+    /// The mesh of @p subdomain from the Gmsh scene: cells of the physical
+    /// surface, boundary ids from the physical curves, polar manifolds on
+    /// the circular arcs.
+    void
+    make_gmsh_subdomain(const Subdomain           subdomain,
+                        dealii::Triangulation<2> &tria) const;
+
+    const GeometryParameters                geometry;
+    const MeshParameters                    mesh;
+    std::array<dealii::Triangulation<2>, 2> triangulations;
+    InterfaceCurve                          curve;
+    /// The Gmsh scene (null for the rectangle and mesh files).
+    std::shared_ptr<const GmshMesh> gmsh;
+    /// Centres of the circular Gmsh curves, by entity tag.
+    std::map<int, dealii::Point<2>> arc_centres;
+  };
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,108 @@
+#ifndef bilayer_output_h
+#define bilayer_output_h
+
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <bilayer/interface/interface.h>
+#include <bilayer/interface/interface_diagnostics.h>
+#include <bilayer/output/output_directory.h>
+#include <bilayer/physics/elastic_law.h>
+#include <bilayer/solvers/outer_solver.h>
+#include <bilayer/subproblem/subproblem.h>
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace bilayer
+{
+  /**
+   * The stresses of one layer from the displacement gradient, by its
+   * ElasticLaw: sigma, sigma_zz, and the von Mises stress
+   * sqrt(((s_xx - s_yy)^2 + (s_yy - s_zz)^2 + (s_zz - s_xx)^2) / 2
+   *      + 3 s_xy^2).
+   */
+  class StressPostprocessor : public dealii::DataPostprocessor<2>
+  {
+  public:
+    explicit StressPostprocessor(const ElasticLaw &law);
+
+    void
+    evaluate_vector_field(
+      const dealii::DataPostprocessorInputs::Vector<2> &inputs,
+      std::vector<dealii::Vector<double>> &computed_quantities) const override;
+
+    std::vector<std::string>
+    get_names() const override;
+
+    dealii::UpdateFlags
+    get_needed_update_flags() const override;
+
+  private:
+    const ElasticLaw &law;
+  };
+
+  /**
+   * Write @p path through a temporary file that is renamed when complete,
+   * so that a reader never sees a half-written file.
+   */
+  void
+  write_atomically(const std::string                         &path,
+                   const std::function<void(std::ostream &)> &writer);
+
+  /// What write_solution() keeps from cycle to cycle.
+  struct SolutionRecords
+  {
+    /// (cycle, solution-NN.pvtu) for solution.pvd.
+    std::vector<std::pair<double, std::string>> pvd;
+    /// Per cycle: the XDMF grids of the pieces (solution.xdmf).
+    std::vector<std::pair<unsigned int, std::vector<std::string>>> xdmf;
+    /// (cycle, interface-NN.vtu) for interface.pvd.
+    std::vector<std::pair<double, std::string>> interface_pvd;
+  };
+
+  /**
+   * One cycle's solution output, one piece per subproblem written by its
+   * owner (fields displacement, von_mises, stress_xx, stress_yy, stress_zz,
+   * stress_xy and the cell fields layer = 1, 2 and subdomain = -1, +1):
+   *  - with Output/Write VTU, solution-NN-{u,v}-{minus,plus}.vtu, a
+   *    solution-NN.pvtu that groups them into one dataset and solution.pvd
+   *    over all cycles written so far;
+   *  - with Output/Write HDF5, solution-NN-{u,v}-{minus,plus}.h5 (deal.II's
+   *    HDF5 writer: nodes, cells and fields of the piece) and
+   *    solution.xdmf, a temporal collection over the cycles of spatial
+   *    collections of the pieces, which ParaView's XDMF reader opens.
+   * The first process writes the .pvtu, .pvd and .xdmf files (collective).
+   */
+  void
+  write_solution(const std::string                              &directory,
+                 const unsigned int                              cycle,
+                 const PerSubproblem<const ElasticSubproblem *> &subproblems,
+                 const Solutions                                &solutions,
+                 const OutputParameters                         &parameters,
+                 SolutionRecords                                &records);
+
+  /**
+   * The interface dataset of one cycle, interface-NN.vtu, and
+   * interface.pvd over the cycles written so far: the polyline along Sigma
+   * through the nodes of the multiplier across Sigma (@p nodes, from
+   * interface_nodes(); a line cell between neighbours in s), undeformed,
+   * with the point data
+   *  - contact_pressure, normal_traction, mu_c [stress] (InterfaceNode),
+   *  - jump_normal, jump_tangential: [u].nu and [u].tau of layer 1 [length],
+   *  - state: 0 open, 1 closed (in contact), 2 glued; crack_tip: 1 at the
+   *    glued nodes next to the crack; s: the parameter on Sigma,
+   *  - the vectors (x, y components) normal, mu_g, mu_minus, mu_plus
+   *    [stress] and the layers' traces u_minus, u_plus, v_minus, v_plus
+   *    [length].
+   */
+  void
+  write_interface_vtu(const std::string                &directory,
+                      const unsigned int                cycle,
+                      const std::vector<InterfaceNode> &nodes,
+                      SolutionRecords                  &records);
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,123 @@
+#ifndef bilayer_geometry_parameters_h
+#define bilayer_geometry_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <bilayer/core/layout.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+/**
+ * The subsection Geometry: the rectangle Omega, Sigma and the crack, or a
+ * Gmsh scene, and the boundary parts that are clamped.
+ */
+namespace bilayer
+{
+  /// The four sides of the rectangle Omega.
+  enum class Side
+  {
+    left   = 0,
+    right  = 1,
+    bottom = 2,
+    top    = 3
+  };
+
+  constexpr unsigned int n_sides = 4;
+
+  /// One value per side of the rectangle, indexed by Side.
+  template <typename T>
+  using PerSide = std::array<T, n_sides>;
+
+  /// Name of a side as written in parameter files ("left", ...).
+  std::string
+  side_name(const Side side);
+
+  /**
+   * The named parts of the outer boundary: the rectangle's four sides, or
+   * the physical curves of a Gmsh scene other than Sigma and crack. Part i
+   * has boundary id i in both subdomain meshes.
+   */
+  struct BoundaryParts
+  {
+    std::vector<std::string> names = {"left", "right", "bottom", "top"};
+    /// Whether the parts come from a Gmsh file (entries "Traction on NAME")
+    /// or are the rectangle's sides ("Traction on NAME side").
+    bool gmsh = false;
+
+    unsigned int
+    size() const
+    {
+      return names.size();
+    }
+
+    /// The Loads entry of part @p i.
+    std::string
+    traction_entry(const unsigned int i) const
+    {
+      return "Traction on " + names[i] + (gmsh ? "" : " side");
+    }
+
+    /**
+     * The parts of the Gmsh scene @p file: its boundary curve @p names.
+     * A name becomes the entry "Traction on NAME" and a member of the list
+     * Geometry/Clamped sides: names with ',', '|', '=', '#', '\\' or outer
+     * blanks are refused.
+     */
+    static BoundaryParts
+    of_gmsh(const std::string &file, const std::vector<std::string> &names);
+  };
+
+  struct GeometryParameters
+  {
+    /**
+     * A Gmsh geometry (.geo) or mesh (.msh, format 2) of the specimen, its
+     * physical groups naming the subdomains, Sigma, the crack and the
+     * boundary parts (docs/geometry.md); empty: the rectangle below.
+     * Relative paths are relative to the parameter file.
+     */
+    std::string   gmsh_file;
+    BoundaryParts parts;
+    /// The scene file may run programs and write files (the command-line
+    /// flag --allow-gmsh-commands; not a parameter entry).
+    bool allow_gmsh_commands = false;
+
+    double x_min        = -1.0;
+    double x_max        = 1.0;
+    double y_min        = -1.0;
+    double y_max        = 1.0;
+    double sigma_height = 0.0;
+    double crack_start  = -0.5;
+    double crack_end    = 0.5;
+
+    /// clamped[i] is true if boundary part i belongs to Gamma_D.
+    std::vector<bool> clamped = {true, true, false, false};
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const BoundaryParts      &parts = BoundaryParts());
+    void
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const BoundaryParts      &parts = BoundaryParts());
+
+    /// The rectangle's crack is not empty (Gmsh scenes: see the file).
+    bool
+    has_crack() const
+    {
+      return crack_end > crack_start;
+    }
+
+    /// The crack as a set of pieces of Sigma (coordinate x), compared with
+    /// a tolerance of 1e-10 times the width of Omega.
+    CrackSet
+    crack() const
+    {
+      return has_crack() ?
+               CrackSet({{crack_start, crack_end}}, 1e-10 * (x_max - x_min)) :
+               CrackSet();
+    }
+  };
+} // namespace bilayer
+
+#endif

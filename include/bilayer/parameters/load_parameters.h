@@ -1,0 +1,61 @@
+#ifndef bilayer_load_parameters_h
+#define bilayer_load_parameters_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <bilayer/core/layout.h>
+#include <bilayer/parameters/geometry_parameters.h>
+#include <bilayer/parameters/material_parameters.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+/**
+ * The subsection Loads: named constants, tractions on the boundary parts
+ * and prescribed displacements, as expressions (expressions.h).
+ */
+namespace bilayer
+{
+  /**
+   * Tractions and prescribed displacements as muparser expressions of x and
+   * y. The named constants may use the material constants E1, nu1, mu1,
+   * lambda1, E2, nu2, mu2, lambda2 and the constants defined before them.
+   */
+  struct LoadParameters
+  {
+    std::string constants = "";
+    /// The boundary parts the tractions refer to.
+    BoundaryParts parts;
+    /// traction[layer][part], "f_x; f_y"
+    std::array<std::vector<std::string>, Layout::n_layers> traction;
+    /// prescribed[layer], "u_x; u_y", on the clamped sides
+    std::array<std::string, 2> prescribed = {{"0; 0", "0; 0"}};
+
+    /// The evaluated constants (material constants included).
+    std::map<std::string, double> constant_values;
+
+    LoadParameters();
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const BoundaryParts      &parts = BoundaryParts());
+    void
+    parse_parameters(dealii::ParameterHandler &prm,
+                     const MaterialParameters &materials,
+                     const BoundaryParts      &parts);
+
+    std::unique_ptr<dealii::FunctionParser<2>>
+    traction_function(const Layer layer, const unsigned int part) const;
+    std::unique_ptr<dealii::FunctionParser<2>>
+    prescribed_function(const Layer layer) const;
+    /// Whether the traction expression of a part is identically "0; 0".
+    bool
+    traction_is_zero(const Layer layer, const unsigned int part) const;
+  };
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,29 @@
+#ifndef bilayer_scene_checks_h
+#define bilayer_scene_checks_h
+
+#include <bilayer/parameters/scene.h>
+
+namespace bilayer
+{
+  /**
+   * The relations between entries of different subsections of a parsed
+   * @p scene whose boundary parts are @p parts: the active-set method's
+   * symmetric dual operator, degrees on triangles, a Gmsh file or mesh
+   * files, no loads on an absent layer or a clamped part. Throws a message
+   * that names the entry.
+   */
+  void
+  check_scene_relations(const Scene &scene, const BoundaryParts &parts);
+
+  /**
+   * The loads of a rectangle scene sampled where they act (1001 points
+   * along each side: the tractions on their sides, the prescribed
+   * displacement on the clamped ones): finite, and with an energy whose
+   * squares double precision represents. Throws a message that names the
+   * entry, the side and the point.
+   */
+  void
+  check_rectangle_loads(const Scene &scene, const BoundaryParts &parts);
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,278 @@
+#ifndef bilayer_fracture_h
+#define bilayer_fracture_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/block_vector.h>
+
+#include <bilayer/core/layout.h>
+#include <bilayer/geometry/interface_curve.h>
+#include <bilayer/interface/interface.h>
+#include <bilayer/subproblem/subproblem.h>
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+/**
+ * @file
+ * The energy release rate G = -dPi/dl at the crack tips (docs/fracture.md):
+ * the derivative of the equilibrium energy with respect to the position of
+ * one tip moving along Sigma, written as a domain integral over a
+ * neighbourhood of the tip (the shape derivative of the energy under a
+ * velocity field theta that moves the tip along Sigma),
+ *
+ *   G = sum over the layers and subdomains of
+ *         int ( sigma : (grad u grad theta) - W div theta ) dx
+ *       - s_d int_{gamma_c} psi kappa mu_c [u].tau ds,
+ *
+ * W = sigma : eps / 2, s_d = +-1 the direction of growth along tau, kappa
+ * the curvature of Sigma (the last term exists on a curved Sigma only).
+ */
+namespace bilayer
+{
+  /**
+   * A crack tip: an end of a crack piece inside Omega (an end of a piece on
+   * the outer boundary is none), the direction in which the crack grows
+   * and the support of its velocity field theta.
+   */
+  struct CrackTip
+  {
+    /// Parameter on Sigma, the point, and the unit tangent of Sigma that
+    /// points away from the crack (the direction of growth).
+    double               s = 0;
+    dealii::Point<2>     point;
+    dealii::Tensor<1, 2> direction;
+    /// +1 if the crack grows in the direction of growing s, else -1.
+    double sign = 1;
+    /// Sigma near the tip is a circular arc (centre, radius), else straight.
+    bool             arc = false;
+    dealii::Point<2> centre;
+    double           radius = 0;
+    /**
+     * Empty where Sigma within the support of theta is one straight line or
+     * one circle (the fields above). Otherwise the support reaches a smooth
+     * (C1) junction of pieces of different shape (a segment and a tangent
+     * arc, arcs of different radii): the pieces of Sigma that theta sees,
+     * T(x) is the unit tangent at the closest point of these pieces.
+     */
+    std::vector<InterfaceCurve::Piece> chain;
+    /**
+     * Outer radius R of the support of theta; 0 where G is not defined:
+     * the tip sits on a corner of Sigma (G is a derivative along a smooth
+     * Sigma).
+     */
+    double support_radius = 0;
+    /// The distance from the tip to the nearest obstacle of theta (another
+    /// tip, a corner or another piece of Sigma, the outer boundary): the
+    /// support radius must stay below it.
+    double free_distance = 0;
+
+    bool
+    defined() const
+    {
+      return support_radius > 0;
+    }
+
+    /// Whether Sigma is curved somewhere in the support of theta (then G
+    /// has the contact term of a curved crack).
+    bool
+    curved() const
+    {
+      bool any = arc;
+      for (const auto &piece : chain)
+        any = any || piece.kind == InterfaceCurve::Piece::Kind::arc;
+      return any;
+    }
+  };
+
+  /**
+   * The tips of the crack of @p curve, ordered by s, with the outer
+   * boundary of @p meshes (their boundary faces off Sigma) as an obstacle.
+   * @p support_radius (Fracture/Support radius): 0 chooses half the free
+   * distance; a given radius must be smaller than the free distance of
+   * every tip (else an exception names the entry and the allowed range).
+   */
+  std::vector<CrackTip>
+  crack_tips(const InterfaceCurve                                  &curve,
+             const std::array<const dealii::Triangulation<2> *, 2> &meshes,
+             const double support_radius);
+
+  /**
+   * The velocity field theta of a tip: theta(x) = psi(|x - tip|) T(x), with
+   * T the direction of growth (straight Sigma) or the rotation about the
+   * arc's centre that is that direction at the tip (tangent to the arc
+   * everywhere), and psi = 1 for r <= R/2, falling to 0 at r = R as a
+   * quintic with two continuous derivatives. Across a smooth junction
+   * (CrackTip::chain) T is the unit tangent of Sigma at the closest point,
+   * oriented along the growth: constant on the region of a segment,
+   * +-J (x - c) / |x - c| on that of an arc (continuous and Lipschitz: the
+   * normal line at the junction separates the regions).
+   */
+  class ThetaField
+  {
+  public:
+    explicit ThetaField(const CrackTip &tip);
+
+    /// psi at distance @p r from the tip.
+    double
+    cutoff(const double r) const;
+
+    /// The curvature kappa of Sigma at its point @p x (d tau / ds = kappa
+    /// nu with @p nu the normal there): 0 on a segment, +-1 / radius on an
+    /// arc.
+    double
+    curvature(const dealii::Point<2> &x, const dealii::Tensor<1, 2> &nu) const;
+
+    dealii::Tensor<1, 2>
+    value(const dealii::Point<2> &x) const;
+
+    /// grad theta: entry (k, j) = d theta_k / d x_j.
+    dealii::Tensor<2, 2>
+    gradient(const dealii::Point<2> &x) const;
+
+    /// Whether the disc of radius @p radius around @p x meets the support.
+    bool
+    reaches(const dealii::Point<2> &x, const double radius) const
+    {
+      return (x - tip.point).norm() < tip.support_radius + radius;
+    }
+
+  private:
+    const CrackTip tip;
+    /// Rotation of the arc field: grad T = omega J / radius.
+    double omega = 0;
+
+    /// T(x) and grad T(x) across a smooth junction (CrackTip::chain).
+    void
+    junction_tangent(const dealii::Point<2> &x,
+                     dealii::Tensor<1, 2>   &T,
+                     dealii::Tensor<2, 2>   &grad_T) const;
+  };
+
+  /// G at one tip, in total and its parts [stress x length].
+  struct EnergyReleaseRate
+  {
+    CrackTip tip;
+    /// The domain integral over both layers and subdomains plus contact.
+    double G = 0;
+    /// The contact term on a curved crack (0 on a straight one).
+    double contact = 0;
+    /// Why G is not reported at this tip on this mesh (then NaN): the
+    /// support of theta holds too few cells (support_cells()); empty if G
+    /// is valid.
+    std::string unresolved;
+    /// G on the same mesh with the support radius halved (R/2), NaN where
+    /// R/2 holds fewer than min_cells_per_support_radius cells at the tip
+    /// (the exact G does not depend on R, the discrete one does).
+    double G_half_support = std::numeric_limits<double>::quiet_NaN();
+    /// The error bar dG of G [stress x length] (g_error()): NaN where no
+    /// estimator is available (then error_estimate says why).
+    double error = std::numeric_limits<double>::quiet_NaN();
+    /// The estimator of @p error ("cycles", "support radius", "cycles and
+    /// support radius"), or "none: <why>".
+    std::string error_estimate;
+  };
+
+  /**
+   * The error estimate of the last entry of @p G (the values of G at one
+   * tip on consecutive cycles 0, 1, ..., k; NaN where not reported) from
+   * the sequence of cycles: with the last changes d1 = |G_k - G_{k-1}|, d2
+   * = |G_{k-1} - G_{k-2}|, d3 = |G_{k-2} - G_{k-3}| (those that exist),
+   *
+   *   dG = max(d1, d2, d3, d1 r / (1 - r)),
+   *
+   * the last term only where the last two changes have one sign and
+   * contract, r = d1 / d2 < 1 (the remainder of the geometric sequence of
+   * ratio r: Aitken's extrapolation); dG = 2 d1 with two values only. G of
+   * adaptive cycles moves irregularly (docs/fracture.md, The error bar of
+   * G): the largest of three changes, not the last one, bounds the error
+   * there. NaN with fewer than two finite trailing values (cycle 0, or a
+   * tip not resolved on the cycle before).
+   */
+  double
+  g_error_from_cycles(const std::vector<double> &G);
+
+  /**
+   * The error bar of @p g on its cycle, given @p from_cycles
+   * (g_error_from_cycles() of the G of this tip so far): the larger of
+   * that and the single-mesh indicator |G(R) - G(R/2)|, whichever exist;
+   * sets g.error and g.error_estimate (NaN and "none: ..." if neither).
+   */
+  void
+  set_g_error(EnergyReleaseRate &g, const double from_cycles);
+
+  /// The support radius of theta must be at least this many times the size
+  /// of the cells at the tip: theta falls from 1 to 0 on R/2 < r < R, and
+  /// a support inside the cells at the tip sees the discrete solution as
+  /// smooth there and releases nothing (G -> 0 as R -> 0 at a fixed mesh).
+  constexpr double min_cells_per_support_radius = 1;
+
+  /// Whether a support of radius @p radius holds the cells of size
+  /// @p cell_size at its tip: R >= min_cells_per_support_radius h, up to
+  /// round-off (Geometry::refine refines the cells at a tip as long as this
+  /// fails).
+  inline bool
+  support_holds(const double radius, const double cell_size)
+  {
+    return radius >= min_cells_per_support_radius * cell_size * (1 - 1e-9);
+  }
+
+  /// The cells at a crack tip (support_cells()).
+  struct TipCells
+  {
+    /// The largest size of the active cells that have the tip as a vertex
+    /// (the tips are mesh vertices), over both meshes: sqrt(area) for
+    /// quadrilaterals, sqrt(2 area) for triangles (the side of the square of
+    /// two).
+    double size = 0;
+    /// The mesh (0: Omega-, 1: Omega+) of the largest of them.
+    unsigned int mesh = 0;
+  };
+
+  /// The cells at @p tip on @p meshes (null entries are skipped).
+  TipCells
+  support_cells(const CrackTip                                        &tip,
+                const std::array<const dealii::Triangulation<2> *, 2> &meshes);
+
+  /**
+   * G at every tip of @p tips for the solutions @p w and the multipliers
+   * @p mu (collective: each subproblem's integral is computed by its owner,
+   * as a parallel task, and sent to every process). Tips that are not
+   * defined() get NaN.
+   */
+  std::vector<EnergyReleaseRate>
+  energy_release_rates(
+    const PerSubproblem<const ElasticSubproblem *> &subproblems,
+    const Interface                                &interface,
+    const Solutions                                &w,
+    const dealii::BlockVector<double>              &mu,
+    const std::vector<CrackTip>                    &tips);
+
+  /// "x = 0.5" on a straight horizontal Sigma along x, else "s = ..., (x,
+  /// y) = (..., ...)": where a tip is, for the terminal and the notes.
+  std::string
+  tip_position(const CrackTip &tip, const bool along_x);
+
+  /**
+   * One line per tip for the heads of table.txt and table.csv (after "# "):
+   * "tip k: x = ..., grows towards -x" (on a straight horizontal Sigma along
+   * x) or "tip k: s = ..., (x, y) = (..., ...), grows along (..., ...)":
+   * which tip the columns G tip k, dG tip k describe.
+   */
+  std::vector<std::string>
+  tip_notes(const std::vector<EnergyReleaseRate> &release, const bool along_x);
+
+  /**
+   * One line per tip for the head of interface-NN.csv: where the tip is,
+   * its direction of growth, G and its parts, the error bar dG and its
+   * estimator, the support radius.
+   */
+  std::vector<std::string>
+  release_notes(const std::vector<EnergyReleaseRate> &release,
+                const bool                            along_x);
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,318 @@
+#ifndef bilayer_subproblem_h
+#define bilayer_subproblem_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <bilayer/physics/elastic_law.h>
+#include <bilayer/physics/volume_load.h>
+#include <bilayer/subproblem/cholesky.h>
+#include <bilayer/subproblem/distributed_system.h>
+#include <bilayer/subproblem/distribution.h>
+
+#include <array>
+#include <memory>
+#include <string>
+
+namespace bilayer
+{
+  /**
+   * One of the four linear elasticity subproblems of docs/problem.md §2: one
+   * layer (u or v) on one subdomain (Omega- or Omega+), sigma(w) = C eps(w)
+   * with the layer's ElasticLaw.
+   *
+   * It owns its FESystem (two Lagrange components of the layer's degree, on
+   * quadrilaterals or triangles as the mesh has), its DoFHandler and its
+   * constraints (hanging nodes and the prescribed displacement on its part
+   * of Gamma_D). setup() assembles and factorises the matrix once; solve()
+   * then only costs a forward/back substitution:
+   *
+   *   a(w, z) = (F, z) + (c, z)   for all z,
+   *
+   * where F holds the tractions on Gamma_N and the volume terms (a
+   * VolumeLoad, where given), and c is any extra load vector
+   * given in the unconstrained dof numbering (the interface's multiplier
+   * terms). The subproblem knows nothing of the coupling.
+   *
+   * In an MPI job (see Distribution) every process builds the dof numbering
+   * and the constraints of every subproblem, but only the owners of a
+   * subproblem assemble, factorise and solve it; share_trace() then sends
+   * the values on Sigma to the other processes. A subproblem owned by a
+   * group of processes (more than four in all) is assembled and factorised
+   * by the group as a DistributedSystem (Trilinos, METIS, a parallel direct
+   * solver @p shared_solver of Amesos); its vectors stay whole on every
+   * process of the group.
+   */
+  class ElasticSubproblem
+  {
+  public:
+    ElasticSubproblem(const Layer                     layer,
+                      const Subdomain                 subdomain,
+                      const dealii::Triangulation<2> &triangulation,
+                      const unsigned int              degree,
+                      const LayerMaterial            &material,
+                      const Distribution &distribution = Distribution::world());
+
+    /**
+     * Distribute dofs, build constraints, assemble the stiffness matrix and
+     * the load vector, factorise. @p traction[side] is used on the sides
+     * that are not clamped; @p prescribed on the clamped ones; @p volume
+     * (if not null) adds its volume terms to the load.
+     */
+    void
+    setup(const std::vector<bool>                        &clamped,
+          const dealii::Function<2>                      &prescribed,
+          const std::vector<const dealii::Function<2> *> &traction,
+          const std::string &shared_solver     = "Amesos_Mumps",
+          const bool         condense_on_sigma = false,
+          const VolumeLoad  *volume            = nullptr);
+
+    /**
+     * Whether setup() kept the Schur complement of the stiffness matrix on
+     * the Sigma dofs (asked for with @p condense_on_sigma; not for a
+     * subproblem shared by a group, nor where its dense factor would be
+     * larger than the sparse one, nor where a constrained Sigma dof depends
+     * on dofs off Sigma): then solve_on_sigma() and
+     * apply_schur_complement() are available. Only on the owners.
+     */
+    bool
+    condensed() const
+    {
+      return factorisation.schur_complement() != nullptr;
+    }
+
+    /// The number of Sigma dofs of the Schur complement (0 if not
+    /// condensed()).
+    unsigned int
+    n_schur_dofs() const
+    {
+      return condensed() ? factorisation.schur_complement()->size() : 0;
+    }
+
+    /**
+     * With condensed(): the values on the dofs of the Sigma faces of
+     * solve() (or, with @p homogeneous, of solve_homogeneous()) for a load
+     * @p coupling that is zero off the Sigma dofs, as the interface's
+     * multiplier terms are. Two dense triangular solves with the factor of
+     * the Schur complement S: the Sigma part of K^{-1} c is S^{-1} c. The
+     * other entries of @p solution are those of the solution without
+     * coupling (or zero): not the solution there.
+     */
+    void
+    solve_on_sigma(const dealii::Vector<double> &coupling,
+                   dealii::Vector<double>       &solution,
+                   const bool                    homogeneous) const;
+
+    /**
+     * With condensed(): y = S x on the unconstrained Sigma dofs (zero
+     * elsewhere), S = K_SS - K_SI K_II^{-1} K_IS the Schur complement of
+     * the stiffness matrix (the reaction on Sigma of the discrete-harmonic
+     * extension of the Sigma values of @p x).
+     */
+    void
+    apply_schur_complement(const dealii::Vector<double> &x,
+                           dealii::Vector<double>       &y) const;
+
+    /// Whether a group of processes shares it (DistributedSystem).
+    bool
+    distributed() const
+    {
+      return shared != nullptr;
+    }
+
+    /// With distributed(): the matrices of the group.
+    const DistributedSystem &
+    distributed_system() const
+    {
+      return *shared;
+    }
+
+    /// Whether this process assembles, factorises and solves it.
+    bool
+    owned() const
+    {
+      return distribution.owns(index());
+    }
+
+    /// Position in every per-subproblem array (Layout::index()).
+    unsigned int
+    index() const
+    {
+      return Layout::index(layer_, subdomain_);
+    }
+
+    const Distribution &
+    processes() const
+    {
+      return distribution;
+    }
+
+    /**
+     * Send the values of @p w on the dofs of the Sigma faces from the
+     * owner to all processes (collective; nothing to do in a serial run).
+     * On the other processes @p w is sized n_dofs() and its other entries
+     * stay as they are: the interface reads only these.
+     */
+    void
+    share_trace(dealii::Vector<double> &w) const;
+
+    /// Solve with the extra load vector @p coupling (may be empty = zero).
+    void
+    solve(const dealii::Vector<double> &coupling,
+          dealii::Vector<double>       &solution) const;
+
+    /// Solve with the load @p coupling only: no tractions, zero prescribed
+    /// displacement (the linear part of the solution map).
+    void
+    solve_homogeneous(const dealii::Vector<double> &coupling,
+                      dealii::Vector<double>       &solution) const;
+
+    /// a(w, w) = int sigma(w) : eps(w) dx [energy].
+    double
+    energy_norm_squared(const dealii::Vector<double> &w) const;
+
+    /// Pi(w) = a(w, w) / 2 - (F, w) [energy].
+    double
+    energy(const dealii::Vector<double> &w) const;
+
+    /// The constraints of solve_homogeneous(): the hanging nodes and zero
+    /// displacement on the clamped sides.
+    const dealii::AffineConstraints<double> &
+    zero_displacement_constraints() const
+    {
+      return homogeneous_constraints;
+    }
+
+    /// The unconstrained stiffness matrix K (not with distributed(): the
+    /// group holds it, see distributed_system()).
+    const dealii::SparseMatrix<double> &
+    stiffness_matrix() const
+    {
+      return stiffness;
+    }
+
+    /// y = K x, the unconstrained stiffness (collective in the group with
+    /// distributed()).
+    void
+    multiply_stiffness(dealii::Vector<double>       &y,
+                       const dealii::Vector<double> &x) const;
+
+    /**
+     * With distributed(): the stiffness matrix under other @p constraints
+     * (e.g. more dofs held at zero), assembled by the group on the
+     * partition of distributed_system() and factorised by its parallel
+     * direct solver (collective in the group).
+     */
+    std::unique_ptr<DistributedSystem>
+    factorise_in_group(
+      const dealii::AffineConstraints<double> &constraints) const;
+
+    /// "u-", "u+", "v-" or "v+".
+    std::string
+    name() const;
+
+    Layer
+    layer() const
+    {
+      return layer_;
+    }
+    Subdomain
+    subdomain() const
+    {
+      return subdomain_;
+    }
+    const dealii::DoFHandler<2> &
+    dof_handler() const
+    {
+      return dofs;
+    }
+    const dealii::FiniteElement<2> &
+    fe() const
+    {
+      return *fe_system;
+    }
+    /// The mapping: linear, or MappingQ of the element's degree on
+    /// quadrilaterals of degree >= 2 when the mesh has curved (non-flat)
+    /// manifolds, so that curved boundaries and a curved Sigma are
+    /// approximated to the element's order (isoparametric).
+    const dealii::Mapping<2> &
+    mapping() const;
+    /// The elastic law of the layer (the one code that knows its material).
+    const ElasticLaw &
+    law() const
+    {
+      return *law_;
+    }
+    unsigned int
+    n_dofs() const
+    {
+      return dofs.n_dofs();
+    }
+    /// How many times setup() has assembled and factorised the matrix (on
+    /// an owner of the subproblem).
+    unsigned int
+    n_factorisations() const
+    {
+      return factorisations;
+    }
+    /// Wall time of assembly and of factorisation in setup() [s].
+    double assembly_seconds      = 0;
+    double factorisation_seconds = 0;
+
+  private:
+    void
+    assemble(const std::vector<bool>                        &clamped,
+             const std::vector<const dealii::Function<2> *> &traction,
+             const VolumeLoad                               *volume);
+
+    const Layer                        layer_;
+    const Subdomain                    subdomain_;
+    std::unique_ptr<const ElasticLaw>  law_;
+    unsigned int                       factorisations = 0;
+    const Distribution                &distribution;
+    std::string                        shared_solver;
+    std::unique_ptr<DistributedSystem> shared;
+    /// The dofs on the faces on Sigma (glued and crack), constrained ones
+    /// included: the support of every trace the interface evaluates.
+    std::vector<dealii::types::global_dof_index> trace_dofs_;
+    std::unique_ptr<dealii::FESystem<2>>         fe_system;
+    std::unique_ptr<dealii::Mapping<2>>          curved_mapping;
+    dealii::DoFHandler<2>                        dofs;
+    dealii::AffineConstraints<double>            constraints;
+    dealii::AffineConstraints<double>            homogeneous_constraints;
+    dealii::SparsityPattern                      sparsity;
+    dealii::SparseMatrix<double>                 system_matrix;
+    dealii::SparseMatrix<double>                 stiffness;
+    dealii::Vector<double>                       system_rhs;
+    /// The load F of tractions and volume terms (energy()).
+    dealii::Vector<double> load_vector;
+    SparseCholesky         factorisation;
+    /// With condensed(): the solution without coupling (tractions and
+    /// prescribed displacement), and for the Sigma dofs their position in
+    /// the Schur complement's order: unconstrained ones directly,
+    /// constrained ones (hanging nodes, Gamma_D) through the positions and
+    /// weights of their constraint.
+    dealii::Vector<double> particular;
+    std::vector<std::pair<dealii::types::global_dof_index, unsigned int>>
+      sigma_positions;
+    struct ConstrainedSigmaDof
+    {
+      dealii::types::global_dof_index              dof;
+      std::vector<std::pair<unsigned int, double>> entries;
+    };
+    std::vector<ConstrainedSigmaDof> constrained_sigma_dofs;
+
+    /// The Sigma dofs to eliminate last for the Schur complement, or none
+    /// if a constrained Sigma dof depends on dofs off Sigma.
+    std::vector<unsigned int>
+    schur_dofs() const;
+  };
+} // namespace bilayer
+
+#endif

@@ -1,0 +1,137 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <bilayer/app/check_geometry.h>
+#include <bilayer/geometry/geometry.h>
+#include <bilayer/gmsh/gmsh_mesh.h>
+#include <bilayer/parameters/parameter_overrides.h>
+#include <bilayer/parameters/parameters.h>
+
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// A point as "(x, y)", six significant digits.
+    std::string
+    at(const Point<2> &p)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << "(" << p[0] + 0.0 << ", " << p[1] + 0.0
+        << ")";
+      return s.str();
+    }
+
+
+    /// The Mesh section with the --set assignments @p overrides applied.
+    MeshParameters
+    mesh_parameters(const std::vector<std::string> &overrides)
+    {
+      ParameterHandler prm;
+      MeshParameters::declare_parameters(prm);
+      apply_overrides(prm, overrides);
+      MeshParameters mesh;
+      mesh.parse_parameters(prm);
+      return mesh;
+    }
+
+
+    /// The physical groups of @p g with their elements; whether its cells
+    /// are triangles.
+    bool
+    print_groups(const GmshMesh &g, std::ostream &out)
+    {
+      std::map<std::pair<unsigned int, int>, unsigned int> elements;
+      bool                                                 triangles = false;
+      for (const auto &e : g.elements)
+        {
+          const bool cell = e.type == 2 || e.type == 3;
+          ++elements[{cell ? 2u : 1u, e.physical}];
+          triangles = triangles || e.type == 2;
+        }
+      out << "physical groups (dim tag name: elements):\n";
+      for (const unsigned int dim : {1u, 2u})
+        for (const auto &[tag, name] :
+             dim == 1 ? g.curve_names : g.surface_names)
+          out << "  " << dim << " " << tag << " \"" << name
+              << "\": " << elements[{dim, tag}] << "\n";
+      return triangles;
+    }
+
+
+    /// Cells, Sigma, the crack pieces and the boundary parts of the meshes
+    /// of cycle 0.
+    void
+    print_meshes(const Geometry      &geometry,
+                 const BoundaryParts &parts,
+                 const bool           triangles,
+                 std::ostream        &out)
+    {
+      const char *kind = triangles ? " triangles" : " quadrilaterals";
+      out << "cells: Omega- "
+          << geometry.triangulation(Subdomain::minus).n_active_cells() << kind
+          << ", Omega+ "
+          << geometry.triangulation(Subdomain::plus).n_active_cells() << kind
+          << "\n";
+      const InterfaceCurve &curve = geometry.interface_curve();
+      out << "Sigma (with the crack): " << curve.description() << ", from "
+          << at(curve.point(curve.s_begin())) << " to "
+          << at(curve.point(curve.s_end())) << "\n";
+      const auto &cracks = curve.crack().pieces();
+      out << "crack: " << cracks.size()
+          << (cracks.size() == 1 ? " piece" : " pieces") << "\n";
+      for (const auto &piece : cracks)
+        out << "  piece " << at(curve.point(piece.start)) << " -- "
+            << at(curve.point(piece.end)) << ": length " << std::setprecision(6)
+            << piece.end - piece.start << "\n";
+      // Edges of each boundary part (in both subdomain meshes).
+      std::map<types::boundary_id, unsigned int> edges;
+      for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+        for (const auto &face :
+             geometry.triangulation(s).active_face_iterators())
+          if (face->at_boundary())
+            ++edges[face->boundary_id()];
+      out << "boundary parts (name: edges):\n";
+      for (unsigned int i = 0; i < parts.size(); ++i)
+        out << "  \"" << parts.names[i] << "\": " << edges[i] << "\n";
+      out << "  unnamed (traction free): " << edges[BoundaryIds::free] << "\n";
+    }
+  } // namespace
+
+
+  void
+  check_geometry(const std::string              &file,
+                 const std::vector<std::string> &overrides,
+                 const bool                      allow_gmsh_commands,
+                 std::ostream                   &out)
+  {
+    MeshParameters mesh = mesh_parameters(overrides);
+    GmshOptions    options;
+    options.allow_commands = allow_gmsh_commands;
+    options.time_limit     = mesh.gmsh_time_limit;
+    options.size_factor    = mesh.gmsh_size_factor;
+
+    GeometryParameters geometry;
+    geometry.gmsh_file = file;
+    geometry.parts =
+      BoundaryParts::of_gmsh(file, gmsh_boundary_names(file, options));
+    geometry.clamped.assign(geometry.parts.size(), true);
+    geometry.allow_gmsh_commands = allow_gmsh_commands;
+
+    // The groups as Gmsh writes them, and the kind of cells the scene has
+    // (which Mesh/Element shape a run must state).
+    std::ostringstream report;
+    const bool triangles = print_groups(read_gmsh(file, options), report);
+    mesh.shape =
+      triangles ? ElementShape::triangle : ElementShape::quadrilateral;
+    Geometry meshes(geometry, mesh);
+    meshes.create_meshes(0);
+    print_meshes(meshes, geometry.parts, triangles, report);
+    out << report.str() << "PASS" << std::endl;
+  }
+} // namespace bilayer

@@ -1,0 +1,457 @@
+// The study's drivers and the steps of a state: the meshes, the
+// subproblems, the interface, the outer solve and the assessment.
+
+#include <deal.II/base/thread_management.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <bilayer/core/progress.h>
+#include <bilayer/core/tasks.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/postprocess/estimator.h>
+#include <bilayer/solvers/outer_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  Study::Study(const Scene        &scene,
+               std::ostream       &out,
+               const Distribution &distribution)
+    : scene(scene)
+    , out(out)
+    , distribution(distribution)
+    , pcout(out,
+            scene.output.terminal == TerminalOutput::full &&
+              distribution.is_root())
+    , rout(out, distribution.is_root())
+    , domain(scene.geometry, scene.mesh)
+    , coupling(scene.contact)
+  {}
+
+
+  bool
+  Study::run()
+  {
+    if (scene.mesh.marking_spelled_fixed_fraction)
+      pcout << "bilayer: note: Mesh/Marking = fixed fraction is the earlier "
+               "spelling of fixed number (that fraction of the cells, "
+               "deal.II's fixed number); deal.II's fixed fraction is bulk"
+            << std::endl;
+    if (!scene.geometry.gmsh_file.empty() && scene.mesh.fit_crack_tips)
+      pcout << "bilayer: note: Mesh/Fit crack tips applies to the structured "
+               "meshes of the rectangle only; a Gmsh scene meshes its crack "
+               "tips as vertices of its own"
+            << std::endl;
+    const IterationClock clock;
+    std::vector<double>  seconds, dofs;
+    for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
+      {
+        const CycleRecord &record = run_cycle(cycle);
+        if (!record.accepted())
+          return false;
+        // The time left (progress.h): silent until it can be estimated.
+        seconds.push_back(record.total_seconds);
+        dofs.push_back(record.dofs);
+        const unsigned int n_left = scene.mesh.n_cycles - cycle - 1;
+        if (n_left > 0)
+          {
+            const TimeLeft left =
+              time_left(seconds,
+                        dofs,
+                        n_left,
+                        scene.mesh.refinement != Refinement::global);
+            pcout << "  elapsed " << format_duration(clock.elapsed());
+            if (left.seconds >= 0)
+              {
+                std::ostringstream growth;
+                growth << std::setprecision(3) << left.growth;
+                pcout << ", about " << format_duration(left.seconds)
+                      << " left for " << n_left << " more cycle"
+                      << (n_left > 1 ? "s" : "") << " (if the unknowns grow by "
+                      << growth.str() << " per cycle)";
+              }
+            pcout << std::endl;
+          }
+      }
+    if (scene.output.terminal == TerminalOutput::full && distribution.is_root())
+      {
+        out << "\n";
+        write_tip_notes(out);
+        table.write_text(out, TableHandler::org_mode_table);
+      }
+    return true;
+  }
+
+
+  void
+  Study::set_indicators(
+    const std::array<Vector<float>, Layout::n_subdomains> &new_indicators)
+  {
+    std::array<Vector<double>, Layout::n_subdomains> converted;
+    for (unsigned int k = 0; k < Layout::n_subdomains; ++k)
+      converted[k] = new_indicators[k];
+    set_indicators(converted);
+  }
+
+
+  void
+  Study::set_indicators(
+    const std::array<Vector<double>, Layout::n_subdomains> &new_indicators)
+  {
+    for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+      AssertThrow(new_indicators[static_cast<unsigned int>(s)].size() ==
+                    domain.triangulation(s).n_active_cells(),
+                  ExcMessage("Study::set_indicators: one indicator per active "
+                             "cell of each subdomain is needed"));
+    indicators = new_indicators;
+  }
+
+
+  const CycleRecord &
+  Study::run_cycle(const unsigned int cycle)
+  {
+    Timer       total;
+    CycleRecord record;
+    record.cycle = cycle;
+    // The multipliers of the previous cycle, for a warm start (read before
+    // the subproblems they live on are replaced).
+    const bool warm =
+      scene.solver.warm_start && !cycle_records.empty() && mu.size() > 0;
+    const MultiplierSpace::Functions previous =
+      warm ? coupling.space().functions(mu) : MultiplierSpace::Functions();
+
+    build_meshes(record);
+    check_memory(record);
+    set_up_subproblems();
+    count_subproblems(record);
+    return solve_state(record, warm ? &previous : nullptr, total);
+  }
+
+
+  const CycleRecord &
+  Study::solve_state(CycleRecord                      &record,
+                     const MultiplierSpace::Functions *previous,
+                     const Timer                      &total)
+  {
+    set_up_interface(record, previous);
+    record.setup_seconds = total.wall_time();
+    solve(record);
+    assess(record);
+    write(record, total);
+    print_report(record);
+    // Every process's files are complete before the run may commit them.
+    distribution.barrier();
+    return cycle_records.back();
+  }
+
+
+  bool
+  Study::run_states(const std::vector<CrackSet> &cracks)
+  {
+    AssertThrow(cycle_records.empty(),
+                ExcMessage("Study::run_states: a study runs one driver"));
+    for (unsigned int k = 0; k < cracks.size(); ++k)
+      {
+        Timer       total;
+        CycleRecord record;
+        record.cycle = k;
+        if (k == 0)
+          {
+            build_meshes(record);
+            domain.set_crack(cracks[0]);
+            tips_found = false;
+            update_tips(record);
+            check_memory(record);
+            set_up_subproblems();
+            count_subproblems(record);
+          }
+        else
+          {
+            // The meshes and subproblems of state 0; the crack alone
+            // changes, and with it the tips.
+            domain.set_crack(cracks[k]);
+            tips_found   = false;
+            record.minus = cycle_records.front().minus;
+            record.plus  = cycle_records.front().plus;
+            record.P     = cycle_records.front().P;
+            record.M     = cycle_records.front().M;
+            record.memory_estimate_mib =
+              cycle_records.front().memory_estimate_mib;
+            update_tips(record);
+            for (const auto &sub : subproblems)
+              if (sub)
+                record.dofs += sub->n_dofs();
+          }
+        if (!solve_state(record, nullptr, total).accepted())
+          return false;
+      }
+    return true;
+  }
+
+
+  PerSubproblem<const ElasticSubproblem *>
+  Study::subproblem_views() const
+  {
+    PerSubproblem<const ElasticSubproblem *> views;
+    for (const unsigned int s : Layout::subproblems)
+      views[s] = subproblems[s].get();
+    return views;
+  }
+
+
+  void
+  Study::build_meshes(CycleRecord &record)
+  {
+    const unsigned int cycle = record.cycle;
+    for (auto &sub : subproblems)
+      sub.reset();
+    if (cycle > 0 && scene.mesh.refinement == Refinement::adaptive)
+      {
+        AssertThrow(!cycle_records.empty() &&
+                      cycle_records.back().cycle + 1 == cycle,
+                    ExcMessage("adaptive cycle " + std::to_string(cycle) +
+                               " needs cycle " + std::to_string(cycle - 1) +
+                               " of the same study first"));
+        // The cells at a tip whose support of theta holds too few of them
+        // (support_holds()) are refined as well (G is asked for at every
+        // tip).
+        std::vector<PointResolution> resolve;
+        for (const CrackTip &tip : tips)
+          if (tip.defined())
+            resolve.push_back(
+              {tip.point, tip.support_radius / min_cells_per_support_radius});
+        domain.refine(indicators, resolve);
+      }
+    else
+      domain.create_meshes(cycle);
+    record.minus = domain.statistics(Subdomain::minus);
+    record.plus  = domain.statistics(Subdomain::plus);
+    record.P     = domain.n_sigma_vertices();
+    record.M     = domain.n_outer_vertices();
+    update_tips(record);
+  }
+
+
+  void
+  Study::update_tips(const CycleRecord &record)
+  {
+    // The tips (and a refusal of Fracture/Support radius) before anything
+    // is computed or written.
+    if (!tips_found && scene.fracture.energy_release_rate)
+      {
+        tips       = crack_tips(domain.interface_curve(),
+                          {{&domain.triangulation(Subdomain::minus),
+                                  &domain.triangulation(Subdomain::plus)}},
+                          scene.fracture.support_radius);
+        tips_found = true;
+      }
+    if (!tips.empty())
+      check_supports(record);
+  }
+
+
+  void
+  Study::set_up_subproblems()
+  {
+    // The loads of each layer, then the set-ups (assembly and
+    // factorisation) as parallel tasks.
+    std::array<decltype(scene.loads.prescribed_function(Layer::first)),
+               Layout::n_layers>
+      prescribed;
+    std::array<std::vector<std::unique_ptr<FunctionParser<2>>>,
+               Layout::n_layers>
+      traction_owners;
+    std::array<std::vector<const Function<2> *>, Layout::n_layers> traction;
+    Tasks                                                          setups;
+    for (const Layer layer : {Layer::first, Layer::second})
+      if (scene.materials.has_layer(layer))
+        {
+          const unsigned int l = static_cast<unsigned int>(layer);
+          prescribed[l]        = scene.loads.prescribed_function(layer);
+          for (unsigned int part = 0; part < scene.geometry.parts.size();
+               ++part)
+            {
+              traction_owners[l].push_back(
+                scene.loads.traction_function(layer, part));
+              traction[l].push_back(traction_owners[l].back().get());
+            }
+          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+            {
+              auto &sub = subproblems[Layout::index(layer, sd)];
+              sub =
+                std::make_unique<ElasticSubproblem>(layer,
+                                                    sd,
+                                                    domain.triangulation(sd),
+                                                    scene.mesh.degree(layer),
+                                                    scene.materials.layer[l],
+                                                    distribution);
+              ElasticSubproblem *const target = sub.get();
+              setups.add([&, target, l]() {
+                target->setup(scene.geometry.clamped,
+                              *prescribed[l],
+                              traction[l],
+                              scene.solver.shared_solver,
+                              scene.solver.iterates_on_sigma());
+              });
+            }
+        }
+    setups.join_all();
+  }
+
+
+  void
+  Study::count_subproblems(CycleRecord &record) const
+  {
+    for (const auto &sub : subproblems)
+      if (sub)
+        record.dofs += sub->n_dofs();
+    for (const auto &sub : subproblems)
+      if (sub != nullptr && sub->owned())
+        {
+          record.assembly_seconds += sub->assembly_seconds;
+          record.factorisation_seconds += sub->factorisation_seconds;
+        }
+    // The busiest process's share.
+    record.assembly_seconds = distribution.max(record.assembly_seconds);
+    record.factorisation_seconds =
+      distribution.max(record.factorisation_seconds);
+  }
+
+
+  void
+  Study::set_up_interface(CycleRecord                      &record,
+                          const MultiplierSpace::Functions *previous)
+  {
+    coupling.setup(subproblem_views(), domain.interface_curve());
+    coupling.space().initialize(mu);
+    if (previous != nullptr)
+      coupling.space().interpolate(*previous, mu);
+    record.multipliers = coupling.space().n_free();
+  }
+
+
+  void
+  Study::solve(CycleRecord &record)
+  {
+    pcout << "Cycle " << record.cycle << ": " << record.minus.cells << " + "
+          << record.plus.cells << " "
+          << (domain.triangulation(Subdomain::minus)
+                  .all_reference_cells_are_hyper_cube() ?
+                "quadrilaterals" :
+                "triangles")
+          << ", P = " << record.P << ", M = " << record.M << ", " << record.dofs
+          << " dofs, " << record.multipliers << " multipliers" << std::endl;
+    if (!scene.geometry.gmsh_file.empty() && record.cycle == 0)
+      pcout << "  Sigma from " << scene.geometry.gmsh_file << ": "
+            << domain.interface_curve().description() << ", "
+            << domain.interface_curve().crack().pieces().size()
+            << " crack piece(s)" << std::endl;
+
+    Timer               solve_timer;
+    const unsigned long shared_before  = distribution.shared_values();
+    const double        seconds_before = distribution.shared_seconds();
+    record.result = create_outer_solver(scene.solver, scene.output, pcout)
+                      ->solve(subproblem_views(), coupling, mu, w);
+    record.theta         = record.result.theta;
+    record.solve_seconds = solve_timer.wall_time();
+    if (scene.solver.dual_spectrum_steps > 0)
+      {
+        const DualSpectrum &s = record.spectrum =
+          estimate_dual_spectrum(subproblem_views(),
+                                 coupling,
+                                 scene.solver.dual_spectrum_steps);
+        pcout << "    dual operator S: lambda_min = " << s.lambda_min
+              << ", lambda_max = " << s.lambda_max
+              << ", condition number = " << s.condition_number()
+              << ", lambda_min / h = " << (s.h > 0 ? s.lambda_min / s.h : 0.)
+              << " (" << s.iterations << " Lanczos steps)" << std::endl;
+      }
+    record.processes      = distribution.n_processes();
+    record.shared_values  = distribution.shared_values() - shared_before;
+    record.shared_seconds = distribution.shared_seconds() - seconds_before;
+  }
+
+
+  void
+  Study::assess(CycleRecord &record)
+  {
+    // Energies (whole solutions: evaluated by the owners), summed in the
+    // order of the subproblems as in a serial run.
+    const PerSubproblem<double> energies =
+      share_values(subproblem_views(), [&](const unsigned int s) {
+        return subproblems[s]->energy(w[s]);
+      });
+    for (const unsigned int s : Layout::subproblems)
+      {
+        record.energy += energies[s];
+        record.layer_energy[static_cast<unsigned int>(Layout::layer(s))] +=
+          energies[s];
+      }
+    record.report = bilayer::assess(coupling, w, mu);
+    if (!tips.empty())
+      {
+        record.release =
+          energy_release_rates(subproblem_views(), coupling, w, mu, tips);
+        // A support with too few cells gives a wrong G: none is reported.
+        for (unsigned int t = 0; t < record.release.size(); ++t)
+          if (t < unresolved_tips.size() && !unresolved_tips[t].empty())
+            {
+              record.release[t].G = record.release[t].contact =
+                std::numeric_limits<double>::quiet_NaN();
+              record.release[t].unresolved = unresolved_tips[t];
+            }
+        // The error bar: G once more with the support radius halved where
+        // R/2 still holds enough cells (the same mesh: a single-mesh
+        // indicator), and the sequence of G over the cycles.
+        std::vector<CrackTip> halved = tips;
+        bool                  any    = false;
+        for (unsigned int t = 0; t < halved.size(); ++t)
+          {
+            const bool resolved =
+              tips[t].defined() && unresolved_tips[t].empty() &&
+              support_holds(0.5 * tips[t].support_radius, tip_cell_sizes[t]);
+            halved[t].support_radius =
+              resolved ? 0.5 * tips[t].support_radius : 0.;
+            any = any || resolved;
+          }
+        if (any)
+          {
+            const std::vector<EnergyReleaseRate> half =
+              energy_release_rates(subproblem_views(), coupling, w, mu, halved);
+            for (unsigned int t = 0; t < half.size(); ++t)
+              if (halved[t].defined())
+                record.release[t].G_half_support = half[t].G;
+          }
+        for (unsigned int t = 0; t < record.release.size(); ++t)
+          {
+            // G at this tip on this cycle and the consecutive ones before
+            // it (the last four are used).
+            std::vector<double> sequence = {record.release[t].G};
+            unsigned int        expected = record.cycle;
+            for (auto previous = cycle_records.rbegin();
+                 previous != cycle_records.rend() && expected > 0 &&
+                 previous->cycle + 1 == expected &&
+                 t < previous->release.size() && sequence.size() < 4;
+                 ++previous, --expected)
+              sequence.insert(sequence.begin(), previous->release[t].G);
+            set_g_error(record.release[t], g_error_from_cycles(sequence));
+          }
+      }
+    // The indicators mark the next adaptive cycle; their global sum is
+    // reported on every mesh (and must be finite, checked below).
+    indicators = estimate_error(subproblem_views(),
+                                coupling,
+                                w,
+                                mu,
+                                scene.mesh.interface_terms,
+                                scene.mesh.contact_weight,
+                                &record.eta);
+    check(record);
+  }
+} // namespace bilayer

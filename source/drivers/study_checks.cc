@@ -1,0 +1,247 @@
+// The study's checks: the memory a cycle needs, the supports of the crack
+// tips' velocity fields, and the acceptance checks of each record.
+
+#include <bilayer/drivers/resources.h>
+#include <bilayer/drivers/study.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  void
+  Study::check_supports(const CycleRecord &record)
+  {
+    const bool rectangle =
+      scene.geometry.gmsh_file.empty() && scene.mesh.mesh_files.empty();
+    const bool uniform = scene.mesh.refinement != Refinement::adaptive;
+    // Cycles after this one, each halving the cells under uniform
+    // refinement.
+    const unsigned int n_later = scene.mesh.n_cycles > record.cycle + 1 ?
+                                   scene.mesh.n_cycles - record.cycle - 1 :
+                                   0;
+    unresolved_tips.assign(tips.size(), "");
+    tip_cell_sizes.assign(tips.size(), 0.);
+    for (unsigned int t = 0; t < tips.size(); ++t)
+      {
+        const CrackTip &tip = tips[t];
+        if (!tip.defined())
+          continue;
+        const TipCells cells =
+          support_cells(tip,
+                        {{&domain.triangulation(Subdomain::minus),
+                          &domain.triangulation(Subdomain::plus)}});
+        tip_cell_sizes[t] = cells.size;
+        const double R    = tip.support_radius;
+        if (support_holds(R, cells.size))
+          continue;
+        const double last_size =
+          uniform ? std::ldexp(cells.size, -int(n_later)) : cells.size;
+        const bool         last_resolved = support_holds(R, last_size);
+        std::ostringstream m;
+        m << std::setprecision(3);
+        if (scene.fracture.support_radius > 0)
+          m << "Fracture/Support radius = " << R;
+        else
+          m << "the automatic support radius R = " << R
+            << " (Fracture/Support radius = 0: half the distance "
+            << tip.free_distance << " to the nearest obstacle of theta)";
+        m << " at the crack tip at "
+          << tip_position(tip, scene.geometry.gmsh_file.empty()) << " holds "
+          << R / cells.size << " cells of the mesh of Omega"
+          << (cells.mesh == 0 ? "-" : "+")
+          << " along its radius (cells of size " << cells.size
+          << " at the tip on cycle " << record.cycle;
+        if (uniform && n_later > 0)
+          m << ", " << last_size << " on the last cycle";
+        m << "): G needs at least " << min_cells_per_support_radius
+          << " (R >= the cell size, else G tends to 0 with R)";
+        // The remedies: a larger radius where the obstacles allow it, or
+        // cells no larger than R at the tip.
+        std::vector<std::string> remedies;
+        const double             needed =
+          min_cells_per_support_radius * (uniform ? last_size : cells.size);
+        if (needed < tip.free_distance)
+          {
+            std::ostringstream r;
+            r << std::setprecision(3) << "Fracture/Support radius in ["
+              << needed << ", " << tip.free_distance << ")";
+            remedies.push_back(r.str());
+          }
+        if (rectangle)
+          {
+            std::ostringstream r;
+            r << "at least "
+              << std::ceil(scene.mesh.cells_along_sigma *
+                           (uniform ? last_size : cells.size) / R)
+              << " Mesh/Cells along Sigma"
+              << (scene.mesh.cells_along_sigma_plus > 0 ?
+                    " (and on the plus side in proportion)" :
+                    "")
+              << (uniform ? "" : " or more adaptive cycles");
+            remedies.push_back(r.str());
+          }
+        else
+          remedies.push_back(uniform ? "more Mesh/Number of cycles" :
+                                       "more adaptive cycles");
+        m << ": use ";
+        for (unsigned int i = 0; i < remedies.size(); ++i)
+          m << (i == 0 ? "" : ", or ") << remedies[i];
+        // A given radius under uniform refinement: the last cycle is known
+        // now; refuse the scene before anything is computed if it cannot
+        // hold the support. (The automatic radius: G is not reported at
+        // this tip on this cycle, the run goes on; G is a by-product of
+        // every scene with a crack, coarse meshes included.)
+        AssertThrow(!(scene.fracture.support_radius > 0 && record.cycle == 0 &&
+                      uniform && !last_resolved),
+                    ExcMessage(m.str()));
+        unresolved_tips[t] = m.str();
+      }
+  }
+
+
+  void
+  Study::check_memory(CycleRecord &record) const
+  {
+    // Adaptive cycles and mesh files: the sizes are known only now.
+    const ResourceEstimate need =
+      estimate_resources(scene, record.minus.cells, record.plus.cells);
+    record.memory_estimate_mib = need.memory / (1 << 20);
+    // The process with the least memory decides (its limits describe it).
+    const MemoryAvailability mine      = memory_availability();
+    const double             available = -distribution.max(-mine.bytes);
+    if (need.memory <= available ||
+        (!scene.mesh.refuse_above_memory && available > 0))
+      return;
+    MemoryAvailability least = mine;
+    least.bytes              = available;
+    std::ostringstream what;
+    what << "the meshes of this cycle ("
+         << record.minus.cells + record.plus.cells
+         << " cells) would need about " << format_bytes(need.memory)
+         << " of memory, but "
+         << least.shortage(
+              scene.mesh.refinement == Refinement::adaptive ?
+                "use fewer cycles (Mesh/Number of cycles) or a smaller "
+                "Mesh/Refinement fraction" :
+                "use fewer cycles (Mesh/Number of cycles) or cells");
+    throw RunFailure(record.cycle, what.str());
+  }
+
+
+  void
+  Study::check(CycleRecord &record) const
+  {
+    const double       tol = scene.solver.acceptance_tolerance;
+    std::ostringstream t;
+    t << tol;
+    const auto &r = record.report;
+    record.checks.emplace_back("stopping rule met", record.result.converged);
+    record.checks.emplace_back("relative violation of the discrete "
+                               "constraints <= " +
+                                 t.str(),
+                               r.relative_discrete_violation <= tol);
+    record.checks.emplace_back("relative jump at the glued nodes without "
+                               "multipliers <= " +
+                                 t.str(),
+                               r.relative_jump_without_multiplier <= tol);
+    if (!(r.relative_jump_without_multiplier <= tol))
+      record.note += std::string(record.note.empty() ? "" : "; ") +
+                     "a jump is left at an end of Sigma on Gamma_D: the "
+                     "prescribed displacements of the sides or layers glued "
+                     "there must agree at that point";
+    if (scene.contact.non_penetration &&
+        !domain.interface_curve().crack().empty())
+      {
+        record.checks.emplace_back("contact multiplier mu_c >= 0",
+                                   r.min_contact_multiplier >= 0);
+        record.checks.emplace_back("complementarity <= " + t.str(),
+                                   r.complementarity <= tol);
+      }
+    record.checks.emplace_back("relative KKT residual <= " + t.str(),
+                               r.kkt.value() <= tol);
+    record.checks.emplace_back("multipliers below the bound p",
+                               r.max_multiplier_over_bound < 1.);
+    // Comparisons with NaN are false: a non-finite result must fail here,
+    // not pass the checks below by being compared.
+    const bool finite =
+      std::isfinite(record.energy) && std::isfinite(r.constraint_violation) &&
+      std::isfinite(r.max_penetration) && std::isfinite(r.displacement_scale) &&
+      std::isfinite(r.relative_discrete_violation) &&
+      std::isfinite(r.relative_jump_without_multiplier) &&
+      std::isfinite(r.min_contact_multiplier) &&
+      std::isfinite(r.complementarity) && std::isfinite(r.kkt.value()) &&
+      std::isfinite(record.eta);
+    record.checks.emplace_back("energy and residuals finite", finite);
+    // With a given support radius the last cycle must report G at every
+    // tip where it is defined (the check appears only where it fails:
+    // earlier cycles report NaN).
+    if (scene.fracture.support_radius > 0 &&
+        record.cycle + 1 >= scene.mesh.n_cycles)
+      {
+        std::string unresolved;
+        for (const EnergyReleaseRate &g : record.release)
+          if (!g.unresolved.empty())
+            unresolved += (unresolved.empty() ? "" : "; ") + g.unresolved;
+        if (!unresolved.empty())
+          {
+            record.checks.emplace_back(
+              "energy release rate resolved at every crack tip", false);
+            record.note += (record.note.empty() ? "" : "; ") + unresolved;
+          }
+      }
+    if (!finite)
+      {
+        // The cause, in place of the solver's message (a stagnation or a
+        // limit reached with non-finite numbers says nothing of the
+        // tolerance or the conditioning).
+        std::ostringstream what;
+        what << std::setprecision(3);
+        const std::vector<std::pair<std::string, double>> values = {
+          {"energy Pi", record.energy},
+          {"error estimate eta", record.eta},
+          {"displacement scale", r.displacement_scale},
+          {"relative KKT residual", r.kkt.value()},
+          {"complementarity", r.complementarity}};
+        std::string listed;
+        for (const auto &v : values)
+          if (!std::isfinite(v.second))
+            {
+              std::ostringstream one;
+              one << v.first << " = " << v.second;
+              listed += (listed.empty() ? "" : ", ") + one.str();
+            }
+        what << "not finite: " << listed << "; ";
+        if (std::isfinite(r.displacement_scale) && r.displacement_scale > 0)
+          what << "the displacements reach " << r.displacement_scale
+               << ", and the energy and the residuals grow with the square "
+                  "of the loads' scale beyond double precision (1.8e308): "
+                  "scale the loads down (the Loads section: the problem is "
+                  "linear, the displacements scale with the loads, the "
+                  "energy with their square)";
+        else
+          what << "the solution itself is not finite: the loads' scale "
+                  "(the Loads section) overflows double precision, or the "
+                  "problem is singular (Geometry/Clamped sides)";
+        record.result.message = what.str();
+      }
+    if (r.max_multiplier_over_bound >= 1.)
+      {
+        std::ostringstream note;
+        note << std::setprecision(3) << "the multipliers reach the bound p = "
+             << scene.contact.multiplier_bound
+             << " (Contact/Multiplier bound p), so the constraints are "
+                "violated: integral (12) = "
+             << r.constraint_violation << " (relative "
+             << r.relative_constraint_violation
+             << "), largest interpenetration " << r.max_penetration
+             << "; estimate (12) bounds this by K/p: increase "
+                "Contact/Multiplier bound p";
+        record.note += (record.note.empty() ? "" : "; ") + note.str();
+      }
+  }
+} // namespace bilayer

@@ -1,0 +1,263 @@
+// The study's outputs: the files of each record (solution, interface CSV,
+// summary.json, the tables) and the terminal report.
+
+#include <deal.II/base/utilities.h>
+
+#include <bilayer/drivers/study.h>
+#include <bilayer/output/output.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::string
+    two_digits(const unsigned int n)
+    {
+      std::ostringstream s;
+      s << std::setw(2) << std::setfill('0') << n;
+      return s.str();
+    }
+
+    /**
+     * Runs writers until one fails and keeps that failure as one line (a
+     * file that cannot be written, e.g. on a full disk, stops every process
+     * together, with the file and the reason).
+     */
+    class FirstFailure
+    {
+    public:
+      void
+      operator()(const std::function<void()> &write)
+      {
+        if (message.empty())
+          try
+            {
+              write();
+            }
+          catch (const ExceptionBase &e)
+            {
+              message = one_line_message(e);
+            }
+          catch (const std::exception &e)
+            {
+              message = e.what();
+            }
+      }
+
+      std::string message;
+    };
+  } // namespace
+
+
+  void
+  Study::write_tip_notes(std::ostream &out) const
+  {
+    if (!cycle_records.empty())
+      for (const std::string &note :
+           tip_notes(cycle_records.back().release,
+                     scene.geometry.gmsh_file.empty()))
+        out << "# " << note << "\n";
+  }
+
+
+  void
+  Study::write(CycleRecord &record, const Timer &total)
+  {
+    const std::string &dir = scene.output.directory;
+    FirstFailure       writing;
+    // The directory the run made (a run of the program), or created if
+    // missing (drivers may call run_cycle() without run()).
+    if (distribution.is_root())
+      writing([&]() {
+        if (directory_check)
+          directory_check();
+        else
+          std::filesystem::create_directories(dir);
+      });
+    distribution.barrier();
+    const bool fields = scene.output.writes_fields(record.cycle,
+                                                   scene.mesh.n_cycles,
+                                                   record.accepted());
+    if (fields)
+      writing([&]() {
+        write_solution(
+          dir, record.cycle, subproblem_views(), w, scene.output, outputs);
+      });
+    record.total_seconds = distribution.max(total.wall_time());
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    record.memory_mib = distribution.gather(memory.VmHWM / 1024.);
+
+    cycle_records.push_back(record);
+    add_to_table(table, record);
+    if (distribution.is_root())
+      writing([&]() { write_records(record.cycle, fields); });
+    std::string error = distribution.first_error(writing.message);
+    // The files just written are there (checked again at the next cycle
+    // and before the results are published).
+    if (error.empty() && directory_check)
+      {
+        FirstFailure written;
+        if (distribution.is_root())
+          written(directory_check);
+        error = distribution.first_error(written.message);
+      }
+    if (!error.empty())
+      throw CollectiveError("writing the results of cycle " +
+                            std::to_string(record.cycle) + " failed: " + error);
+  }
+
+
+  void
+  Study::write_records(const unsigned int cycle, const bool fields)
+  {
+    const std::string &dir           = scene.output.directory;
+    const bool         interface_vtu = fields && scene.output.write_vtu;
+    if (scene.output.write_interface || interface_vtu)
+      {
+        const std::vector<InterfaceNode> nodes =
+          interface_nodes(coupling, w, mu, scene.solver.acceptance_tolerance);
+        if (scene.output.write_interface)
+          write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
+                           [&](std::ostream &o) {
+                             write_interface_csv(
+                               o,
+                               nodes,
+                               release_notes(cycle_records.back().release,
+                                             scene.geometry.gmsh_file.empty()));
+                           });
+        if (interface_vtu)
+          write_interface_vtu(dir, cycle, nodes, outputs);
+      }
+    write_atomically(dir + "/summary.json", [&](std::ostream &o) {
+      write_summary_json(o, scene.name, cycle_records);
+    });
+    write_atomically(dir + "/table.txt", [&](std::ostream &o) {
+      write_tip_notes(o);
+      table.write_text(o, TableHandler::org_mode_table);
+    });
+    write_atomically(dir + "/table.tex",
+                     [&](std::ostream &o) { table.write_tex(o); });
+    write_atomically(dir + "/table.csv", [&](std::ostream &o) {
+      write_csv_table(o, cycle_records, scene.geometry.gmsh_file.empty());
+    });
+  }
+
+
+  void
+  Study::print_report(const CycleRecord &record) const
+  {
+    const auto &r = record.report;
+    pcout << "  " << record.result.solver << ": " << record.result.message
+          << " (" << record.result.subdomain_solves << " subdomain solves";
+    if (record.result.preconditioner_solves > 0)
+      pcout << " + " << record.result.preconditioner_solves
+            << " Dirichlet solves";
+    if (record.theta > 0)
+      pcout << ", theta = " << record.theta;
+    pcout << ")\n"
+          << std::scientific << std::setprecision(4)
+          << "  energy Pi                    " << record.energy << "\n"
+          << "  error estimate eta           " << record.eta
+          << "  (energy norm, sqrt(2 (Pi_h - Pi)) by the estimator)\n"
+          << "  constraint violation (12)    " << r.constraint_violation
+          << "  (relative " << r.relative_constraint_violation << ")\n"
+          << "  largest interpenetration     " << r.max_penetration
+          << "  (displacement scale " << r.displacement_scale << ")\n"
+          << "  discrete violation           " << r.relative_discrete_violation
+          << " (relative)\n"
+          << "  smallest mu_c                " << r.min_contact_multiplier
+          << "\n"
+          << "  complementarity              " << r.complementarity << "\n"
+          << "  KKT residual (relative)      " << r.kkt.value() << "\n";
+    for (unsigned int t = 0; t < record.release.size(); ++t)
+      {
+        const EnergyReleaseRate &g = record.release[t];
+        pcout << "  energy release rate G, tip " << t + 1 << " ("
+              << tip_position(g.tip, scene.geometry.gmsh_file.empty()) << "): ";
+        if (!g.tip.defined())
+          pcout << "not defined (the tip is at a corner of Sigma)\n";
+        else if (!g.unresolved.empty())
+          pcout << "not resolved: " << g.unresolved << "\n";
+        else
+          {
+            pcout << "G = " << g.G;
+            if (std::isfinite(g.error))
+              pcout << " ± " << std::setprecision(1) << g.error
+                    << std::setprecision(4) << " (error estimate from the "
+                    << g.error_estimate << "; ";
+            else
+              pcout << " ± ? (error estimate " << g.error_estimate << "; ";
+            if (g.tip.curved())
+              pcout << "contact term " << g.contact << "; ";
+            pcout << std::defaultfloat << std::setprecision(3)
+                  << "support radius " << g.tip.support_radius << ")"
+                  << std::scientific << std::setprecision(4) << "\n";
+          }
+      }
+    pcout << std::defaultfloat << std::setprecision(3)
+          << "  processes                    " << record.processes
+          << ", traces sent " << record.shared_values << " values in "
+          << record.shared_seconds << " s, peak memory per process [MiB]";
+    for (const double m : record.memory_mib)
+      pcout << " " << std::fixed << std::setprecision(0) << m;
+    pcout << " (estimated " << record.memory_estimate_mib << ")";
+    pcout << "\n"
+          << std::defaultfloat << std::setprecision(3)
+          << "  wall time                    setup " << record.setup_seconds
+          << " s, solve " << record.solve_seconds << " s, total "
+          << record.total_seconds << " s" << std::endl;
+    for (const auto &c : record.checks)
+      rout << "cycle " << record.cycle << ": " << c.first << ": "
+           << (c.second ? "yes" : "NO") << std::endl;
+    // Two numbers that the tests meet with an independent computation
+    // (tests/prm_references.cc): the energy and the largest normal opening
+    // (u+ - u-).nu at the layer-1 nodes of the crack, with its position,
+    // each as v = m 10^k, 1 <= |m| < 10, m with 8 digits (O(1) for numdiff).
+    const auto scaled = [](const double v) {
+      int    k = v == 0 ? 0 : int(std::floor(std::log10(std::abs(v))));
+      double m = v / std::pow(10., k);
+      if (std::abs(m) >= 9.99999995)
+        m /= 10, ++k;
+      std::ostringstream s;
+      s << "[10^" << k << "]: " << std::fixed << std::setprecision(7) << m;
+      return s.str();
+    };
+    rout << "cycle " << record.cycle << ": energy Pi " << scaled(record.energy)
+         << std::endl;
+    if (distribution.is_root())
+      {
+        const std::vector<double> opening = normal_opening(coupling, w);
+        int                       a_max   = -1;
+        for (unsigned int a = 0; a < coupling.space().n_nodes(); ++a)
+          if (coupling.space().on_crack(a) &&
+              (a_max < 0 || opening[a] > opening[a_max]))
+            a_max = a;
+        if (a_max >= 0)
+          {
+            // The position: s = x on the rectangle, else s and the point.
+            const double       s_max = coupling.space().node_position(a_max);
+            std::ostringstream x;
+            x << std::setprecision(6);
+            if (scene.geometry.gmsh_file.empty())
+              x << "x = " << s_max;
+            else
+              {
+                const Point<2> p = coupling.curve().point(s_max);
+                x << "s = " << s_max << ", (x, y) = (" << p[0] << ", " << p[1]
+                  << ")";
+              }
+            rout << "cycle " << record.cycle << ": largest crack opening "
+                 << scaled(opening[a_max]) << " at " << x.str() << std::endl;
+          }
+      }
+  }
+} // namespace bilayer

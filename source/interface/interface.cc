@@ -1,0 +1,81 @@
+#include <bilayer/interface/interface.h>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  Interface::Interface(const ContactParameters &contact)
+    : contact(contact)
+  {}
+
+
+  void
+  Interface::setup(const PerSubproblem<const ElasticSubproblem *> &subs,
+                   const InterfaceCurve                           &curve)
+  {
+    curve_                = curve;
+    const double   tol    = curve.tolerance();
+    const auto    &traces = coupling_.locate_traces(subs, curve_);
+    PerBlock<bool> active;
+    for (const unsigned int b : Layout::blocks)
+      active[b] = coupling_.active(b);
+    // Layer 2's degree only matters where layer 2 exists.
+    const unsigned int degree_first = subs[Layout::u_minus]->fe().degree;
+    const unsigned int degree_second =
+      subs[Layout::v_minus] ? subs[Layout::v_minus]->fe().degree : degree_first;
+    space_.reinit(curve_, contact, traces, degree_first, degree_second, active);
+    coupling_.reinit(space_, contact.coupling, tol);
+  }
+
+
+  void
+  Interface::jumps(const Solutions &w, BlockVector<double> &g) const
+  {
+    const bool weighted = contact.sampling == JumpSampling::weighted;
+    space_.initialize(g);
+    coupling_.differences(w, weighted, g);
+    for (const unsigned int b : Layout::blocks)
+      if (active(b))
+        for (unsigned int i = 0; i < g.block(b).size(); ++i)
+          g.block(b)(i) =
+            space_.set().free(b, i) ?
+              g.block(b)(i) /
+                (weighted ? space_.node_weight(i / Layout::n_components, b) :
+                            1.) :
+              0.;
+  }
+
+
+  Tensor<1, 2>
+  Interface::multiplier_traction(const BlockVector<double> &mu,
+                                 const unsigned int         s,
+                                 const double               x) const
+  {
+    Tensor<1, 2>        t;
+    std::vector<double> values;
+    for (const unsigned int b : Layout::blocks)
+      for (unsigned int j = 0; j < 2; ++j)
+        if ((j == 0 ? Layout::coupled(b).first : Layout::coupled(b).second) ==
+              s &&
+            active(b))
+          {
+            const unsigned int e = space_.shape_values(b, x, values);
+            for (unsigned int i = 0; i <= space_.degree(b); ++i)
+              {
+                // The multiplier's components in its node's frame.
+                const unsigned int r = space_.row(space_.node(e, i, b), b);
+                const std::array<Tensor<1, 2>, 2> &frame =
+                  space_.node_frame(r, b);
+                for (unsigned int k = 0; k < Layout::n_components; ++k)
+                  {
+                    const double m = (j == 0 ? -1. : 1.) * values[i] *
+                                     mu.block(b)(Layout::entry(r, k));
+                    for (unsigned int c = 0; c < Layout::n_components; ++c)
+                      if (frame[k][c] != 0.)
+                        t[c] += m * frame[k][c];
+                  }
+              }
+          }
+    return t;
+  }
+} // namespace bilayer

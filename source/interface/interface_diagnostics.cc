@@ -1,0 +1,413 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <bilayer/interface/interface.h>
+#include <bilayer/interface/interface_diagnostics.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <numeric>
+#include <utility>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// The traces of all four subproblems at the nodes of mu_1; without
+    /// layer 2 its traces are those of layer 1 (no layer gap).
+    PerSubproblem<Vector<double>>
+    traces_at_nodes(const Interface &interface, const Solutions &w)
+    {
+      PerSubproblem<Vector<double>> t;
+      for (const unsigned int s : Layout::subproblems)
+        {
+          const unsigned int source =
+            interface.present(s) ? s : Layout::first_layer_partner(s);
+          interface.coupling().trace_at_nodes(source, w[source], t[s]);
+        }
+      return t;
+    }
+
+    /**
+     * The openings [u].nu = (u+ - u-).nu of layer 1 at node @p a of mu_1
+     * against the faces that meet there, from the traces @p tm, @p tp in
+     * the node's orthonormal frame (TraceCoupling::trace_at_nodes): at a
+     * corner of Sigma inside the crack against the normals of the piece
+     * before and of the piece after the corner (MultiplierSpace::
+     * node_frame), elsewhere the normal opening twice.
+     */
+    std::array<double, 2>
+    face_openings(const MultiplierSpace &space,
+                  const Vector<double>  &tm,
+                  const Vector<double>  &tp,
+                  const unsigned int     a)
+    {
+      const unsigned int x = Layout::entry(a, Layout::tangential),
+                         y = Layout::entry(a, Layout::normal);
+      if (!space.corner(a))
+        return {{tp(y) - tm(y), tp(y) - tm(y)}};
+      const Tensor<1, 2> &n = space.node_normal(a);
+      const Tensor<1, 2>  jump =
+        (tp(x) - tm(x)) * tangent_of(n) + (tp(y) - tm(y)) * n;
+      const auto &frame = space.node_frame(a);
+      return {{jump * frame[0], jump * frame[1]}};
+    }
+  } // namespace
+
+
+  double
+  displacement_scale(const Interface &interface, const Solutions &w)
+  {
+    double         scale = 0;
+    Vector<double> trace;
+    for (const unsigned int s : Layout::subproblems)
+      if (interface.present(s))
+        {
+          interface.coupling().trace_at_nodes(s, w[s], trace);
+          scale = std::max(scale, trace.linfty_norm());
+        }
+    return scale;
+  }
+
+
+  KKTResidual
+  kkt_residual(const Interface           &interface,
+               const Solutions           &w,
+               const BlockVector<double> &g,
+               const BlockVector<double> &mu)
+  {
+    const MultiplierSpace &space = interface.space();
+    const MultiplierSet   &set   = space.set();
+    KKTResidual            kkt;
+    const double           scale = displacement_scale(interface, w);
+    // A multiplier held at a bound of its box by a jump that pushes it
+    // outward is optimal there (mu = P(mu + theta g)): its jump is no
+    // residual. Only the bound p can hold a constraint violated this way.
+    BlockVector<double> free_g(g);
+    for (unsigned int i = 0; i < mu.size(); ++i)
+      if (set.held_at_bound(i, mu(i), g(i)))
+        free_g(i) = 0;
+    kkt.primal = scale > 0 ? space.discrete_violation(free_g) / scale :
+                             space.discrete_violation(free_g);
+    const double mu_scale = mu.linfty_norm();
+    if (mu_scale > 0)
+      for (unsigned int i = 0; i < mu.size(); ++i)
+        if (set.contact(i) && set.below_bound(i, mu(i)))
+          {
+            kkt.dual = std::max(kkt.dual, -mu(i) / mu_scale);
+            if (scale > 0)
+              kkt.complementarity =
+                std::max(kkt.complementarity,
+                         std::abs(mu(i) * g(i)) / (mu_scale * scale));
+          }
+    return kkt;
+  }
+
+
+  std::vector<double>
+  normal_opening(const Interface &interface, const Solutions &w)
+  {
+    Vector<double> tm, tp;
+    interface.coupling().trace_at_nodes(Layout::u_minus,
+                                        w[Layout::u_minus],
+                                        tm);
+    interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
+    std::vector<double> result(interface.space().n_nodes());
+    for (unsigned int a = 0; a < interface.space().n_nodes(); ++a)
+      {
+        const auto open = face_openings(interface.space(), tm, tp, a);
+        result[a]       = std::min(open[0], open[1]);
+      }
+    return result;
+  }
+
+
+  InterfaceReport
+  assess(const Interface           &interface,
+         const Solutions           &w,
+         const BlockVector<double> &mu)
+  {
+    const MultiplierSpace   &space    = interface.space();
+    const TraceCoupling     &coupling = interface.coupling();
+    const ContactParameters &contact  = interface.contact_parameters();
+    constexpr unsigned int   mu_1     = Layout::across_sigma;
+    InterfaceReport          report;
+    BlockVector<double>      g;
+    interface.jumps(w, g);
+    const double scale        = displacement_scale(interface, w);
+    report.displacement_scale = scale;
+    const double violation    = space.discrete_violation(g);
+    report.relative_discrete_violation =
+      scale > 0 ? violation / scale : violation;
+
+    // The nodes without multipliers off the crack: their nodal jumps are
+    // fixed by the Dirichlet data alone and must vanish (an end dropped
+    // from the constraints while one side's node is free would leave a
+    // jump here).
+    {
+      BlockVector<double> nodal;
+      space.initialize(nodal);
+      coupling.differences(w, false, nodal);
+      double largest = 0;
+      for (const unsigned int b : Layout::blocks)
+        if (interface.active(b))
+          for (unsigned int i = 0; i < nodal.block(b).size(); ++i)
+            {
+              const unsigned int a       = i / Layout::n_components;
+              const bool         carries = space.set().free(b, i);
+              if (!carries && !(b == mu_1 && space.on_crack(a)))
+                largest = std::max(largest, std::abs(nodal.block(b)(i)));
+            }
+      report.relative_jump_without_multiplier =
+        scale > 0 ? largest / scale : largest;
+    }
+
+    // Contact multipliers: the normal component of mu_1 at crack nodes,
+    // both components at a crack corner.
+    double sum_mu = 0, sum_mu_jump = 0;
+    bool   any = false;
+    for (unsigned int a = 0; a < space.n_nodes(mu_1); ++a)
+      for (const unsigned int c : space.contact_components(a))
+        {
+          const unsigned int n = Layout::entry(a, c);
+          if (space.set().contact(mu_1, n))
+            {
+              const double m = mu.block(mu_1)(n);
+              report.min_contact_multiplier =
+                any ? std::min(report.min_contact_multiplier, m) : m;
+              any            = true;
+              const double d = space.node_weight(a, mu_1);
+              sum_mu += d * m;
+              sum_mu_jump += d * m * std::abs(g.block(mu_1)(n));
+            }
+        }
+    report.complementarity =
+      sum_mu > 0 && scale > 0 ? sum_mu_jump / (sum_mu * scale) : 0.;
+    report.max_multiplier_over_bound =
+      mu.linfty_norm() / contact.multiplier_bound;
+    report.kkt = kkt_residual(interface, w, g, mu);
+
+    // The integral (12) and the pointwise penetration at the Gauss points.
+    // Without layer 2 its traces are those of layer 1 (no layer gap).
+    PerSubproblem<Vector<double>> t;
+    for (const unsigned int s : Layout::subproblems)
+      {
+        const unsigned int source =
+          interface.present(s) ? s : Layout::first_layer_partner(s);
+        coupling.trace_at_gauss_points(source, w[source], t[s]);
+      }
+    const CrackSet &crack = interface.curve().crack();
+    const auto     &x     = coupling.gauss_points();
+    const auto     &wq    = coupling.gauss_weights();
+    double          size  = 0;
+    for (unsigned int q = 0; q < x.size(); ++q)
+      {
+        const bool on_crack = crack.contains(x[q]);
+        double     density  = 0;
+        for (unsigned int c = 0; c < Layout::n_components; ++c)
+          {
+            const unsigned int i = Layout::entry(q, c);
+            const double jump_1  = t[Layout::u_minus](i) - t[Layout::u_plus](i);
+            if (!on_crack)
+              density += std::abs(jump_1);
+            else if (c == Layout::normal)
+              {
+                report.max_penetration =
+                  std::max(report.max_penetration, jump_1);
+                if (contact.non_penetration)
+                  density += std::max(jump_1, 0.);
+              }
+            density += std::abs(t[Layout::u_minus](i) - t[Layout::v_minus](i));
+            density += std::abs(t[Layout::u_plus](i) - t[Layout::v_plus](i));
+            for (const unsigned int s : Layout::subproblems)
+              if (interface.present(s))
+                size += wq[q] * std::abs(t[s](i));
+          }
+        report.constraint_violation += wq[q] * density;
+      }
+    // Penetration at the crack nodes as well (the Gauss points miss them).
+    const std::vector<double> open = normal_opening(interface, w);
+    for (unsigned int a = 0; a < space.n_nodes(mu_1); ++a)
+      if (space.on_crack(a))
+        report.max_penetration = std::max(report.max_penetration, -open[a]);
+    report.relative_constraint_violation =
+      size > 0 ? report.constraint_violation / size :
+                 report.constraint_violation;
+    return report;
+  }
+
+
+  std::vector<ContactSegment>
+  contact_residual(const Interface           &interface,
+                   const Solutions           &w,
+                   const BlockVector<double> &mu)
+  {
+    std::vector<ContactSegment> result;
+    if (!interface.contact_parameters().non_penetration)
+      return result;
+    const MultiplierSpace &space  = interface.space();
+    const unsigned int     degree = space.degree();
+    Vector<double>         tm, tp;
+    interface.coupling().trace_at_nodes(Layout::u_minus,
+                                        w[Layout::u_minus],
+                                        tm);
+    interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
+    // Normal jump and contact multiplier at node a (the traces' components
+    // are in the node's frame (tangent, normal)); at a crack corner the
+    // pair of the constraint of the segment's own piece: component
+    // @p side (0 for the segment before the corner, 1 after).
+    const auto gap = [&](const unsigned int a, const unsigned int side) {
+      return face_openings(space, tm, tp, a)[side];
+    };
+    const auto mu_c = [&](const unsigned int a, const unsigned int side) {
+      return space.corner(a) ?
+               mu.block(Layout::across_sigma)(Layout::entry(a, side)) :
+               space.contact_multiplier(mu, a);
+    };
+    const auto &bp = space.breakpoints(Layout::across_sigma);
+    // Degree >= 3: Gauss quadrature exact for the product of the two
+    // interpolants (degree 2 * degree), shape values of the multiplier
+    // element at its points.
+    const QGauss<1>                  gauss(degree + 1);
+    std::vector<std::vector<double>> shape(gauss.size());
+    if (degree >= 3 && bp.size() >= 2)
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        space.shape_values(Layout::across_sigma,
+                           bp[0] + gauss.point(q)[0] * (bp[1] - bp[0]),
+                           shape[q]);
+    for (unsigned int e = 0; e + 1 < bp.size(); ++e)
+      {
+        const unsigned int a0 = space.node(e, 0), a1 = space.node(e, 1);
+        if (!space.on_crack(a0) && !space.on_crack(a1))
+          continue;
+        const double h   = bp[e + 1] - bp[e];
+        double       sum = 0;
+        if (degree <= 2)
+          {
+            // Simpson's rule; midpoint values: the middle node for degree
+            // 2, the mean for degree 1 (then it is exact for the product).
+            // a0 is the segment's start (side 1 of a corner there), a1 its
+            // end (side 0).
+            const double g0 = gap(a0, 1), g1 = gap(a1, 0), m0 = mu_c(a0, 1),
+                         m1 = mu_c(a1, 0);
+            const double g_m =
+              degree == 2 ? gap(space.node(e, 2), 0) : 0.5 * (g0 + g1);
+            const double mu_m =
+              degree == 2 ? mu_c(space.node(e, 2), 0) : 0.5 * (m0 + m1);
+            sum = h / 6 * (m0 * g0 + 4 * mu_m * g_m + m1 * g1);
+          }
+        else
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            {
+              double g_q = 0, mu_q = 0;
+              for (unsigned int i = 0; i <= degree; ++i)
+                {
+                  const unsigned int side = i == 0 ? 1 : 0;
+                  g_q += shape[q][i] * gap(space.node(e, i), side);
+                  mu_q += shape[q][i] * mu_c(space.node(e, i), side);
+                }
+              sum += gauss.weight(q) * h * mu_q * g_q;
+            }
+        result.push_back({bp[e], bp[e + 1], sum});
+      }
+    return result;
+  }
+
+
+  std::vector<InterfaceNode>
+  interface_nodes(const Interface           &interface,
+                  const Solutions           &w,
+                  const BlockVector<double> &mu,
+                  const double               closed_tolerance)
+  {
+    const MultiplierSpace &space = interface.space();
+    // Without layer 2 its traces repeat layer 1 (gaps and mu+- zero).
+    const PerSubproblem<Vector<double>> t = traces_at_nodes(interface, w);
+    const double scale                    = displacement_scale(interface, w);
+    using Layout::u_minus, Layout::u_plus;
+    std::vector<InterfaceNode> nodes(space.n_nodes(Layout::across_sigma));
+    for (unsigned int a = 0; a < nodes.size(); ++a)
+      {
+        InterfaceNode     &n = nodes[a];
+        const unsigned int x = Layout::entry(a, Layout::tangential),
+                           y = Layout::entry(a, Layout::normal);
+        n.s                  = space.node_position(a, Layout::across_sigma);
+        n.point              = interface.curve().point(n.s);
+        n.normal             = space.node_normal(a);
+        n.on_crack           = space.on_crack(a);
+        n.jump_normal        = t[u_plus](y) - t[u_minus](y);
+        n.jump_tangential    = t[u_plus](x) - t[u_minus](x);
+        n.mu_c               = space.contact_multiplier(mu, a);
+        for (const unsigned int c : {Layout::tangential, Layout::normal})
+          {
+            n.mu_g[c]     = space.gluing_multiplier(mu, a, c);
+            n.mu_minus[c] = space.value(mu, Layout::glue_minus, n.s, c);
+            n.mu_plus[c]  = space.value(mu, Layout::glue_plus, n.s, c);
+          }
+        for (const unsigned int s : Layout::subproblems)
+          n.trace[s] = Tensor<1, 2>({t[s](x), t[s](y)});
+        n.normal_traction = n.on_crack ? n.mu_c : n.mu_g[Layout::normal];
+        // The smallest opening against the faces that meet at the node.
+        const auto   open    = face_openings(space, t[u_minus], t[u_plus], a);
+        const double opening = std::min(open[0], open[1]);
+        n.state              = !n.on_crack ? ContactState::glued :
+                               (n.mu_c > 0 || opening <= closed_tolerance * scale) ?
+                                             ContactState::closed :
+                                             ContactState::open;
+      }
+    // Crack tips: glued nodes next to a crack node along Sigma.
+    std::vector<unsigned int> order(nodes.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
+      return nodes[a].s < nodes[b].s;
+    });
+    for (unsigned int i = 0; i < order.size(); ++i)
+      {
+        InterfaceNode &n = nodes[order[i]];
+        n.crack_tip      = !n.on_crack &&
+                      ((i > 0 && nodes[order[i - 1]].on_crack) ||
+                       (i + 1 < order.size() && nodes[order[i + 1]].on_crack));
+        n.contact_pressure = n.on_crack  ? n.mu_c :
+                             n.crack_tip ? std::max(n.normal_traction, 0.) :
+                                           0.;
+      }
+    return nodes;
+  }
+
+
+  void
+  write_interface_csv(std::ostream                     &out,
+                      const std::vector<InterfaceNode> &nodes,
+                      const std::vector<std::string>   &notes)
+  {
+    using Layout::u_minus, Layout::u_plus, Layout::v_minus, Layout::v_plus;
+    for (const std::string &note : notes)
+      out << "# " << note << '\n';
+    out << "x,on_crack,jump_normal,jump_tangential,mu_c,mu_g_x,mu_g_y,"
+           "mu_minus_x,mu_minus_y,mu_plus_x,mu_plus_y,gap_minus_x,"
+           "gap_minus_y,gap_plus_x,gap_plus_y,u_minus_x,u_minus_y,u_plus_x,"
+           "u_plus_y,v_minus_x,v_minus_y,v_plus_x,v_plus_y,s,y,normal_x,"
+           "normal_y,contact_pressure,normal_traction,state\n";
+    out << std::setprecision(12);
+    for (const InterfaceNode &n : nodes)
+      {
+        out << n.point[0] << ',' << (n.on_crack ? 1 : 0) << ',' << n.jump_normal
+            << ',' << n.jump_tangential << ',' << n.mu_c << ',' << n.mu_g[0]
+            << ',' << n.mu_g[1];
+        for (const Tensor<1, 2> &m : {n.mu_minus, n.mu_plus})
+          out << ',' << m[0] << ',' << m[1];
+        for (const auto &[layer_1, layer_2] :
+             {std::pair(u_minus, v_minus), std::pair(u_plus, v_plus)})
+          for (const unsigned int c : {0u, 1u})
+            out << ',' << n.trace[layer_1][c] - n.trace[layer_2][c];
+        for (const unsigned int s : Layout::subproblems)
+          out << ',' << n.trace[s][0] << ',' << n.trace[s][1];
+        // (+ 0. turns a negative zero into a positive one.)
+        out << ',' << n.s << ',' << n.point[1] << ',' << n.normal[0] + 0. << ','
+            << n.normal[1] + 0. << ',' << n.contact_pressure << ','
+            << n.normal_traction << ',' << static_cast<int>(n.state) << '\n';
+      }
+  }
+} // namespace bilayer

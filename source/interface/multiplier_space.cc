@@ -1,0 +1,468 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/vector.h>
+
+#include <bilayer/interface/multiplier_space.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  std::vector<double>
+  merge_breakpoints(const std::vector<double> &a,
+                    const std::vector<double> &b,
+                    const double               tol)
+  {
+    std::vector<double> all(a);
+    all.insert(all.end(), b.begin(), b.end());
+    std::sort(all.begin(), all.end());
+    std::vector<double> merged;
+    for (const double x : all)
+      if (merged.empty() || x - merged.back() > tol)
+        merged.push_back(x);
+    return merged;
+  }
+
+
+  PerBlock<MultiplierSpace::BlockChoice>
+  MultiplierSpace::choose(const std::array<std::vector<double>, 2> &traces,
+                          const unsigned int   degree_first,
+                          const unsigned int   degree_second,
+                          const MultiplierMesh rule,
+                          const double         tol)
+  {
+    PerBlock<BlockChoice> choice;
+    // mu_1, degree p1: per macro segment between shared points, the trace
+    // with more (coarser trace: fewer) segments, Omega- on a tie.
+    const auto         &t0 = traces[0], &t1 = traces[1];
+    std::vector<double> mesh;
+    if (!t0.empty() && !t1.empty())
+      {
+        mesh.push_back(t0.front());
+        std::size_t i = 0, j = 0;
+        while (i + 1 < t0.size() && j + 1 < t1.size())
+          {
+            // The next shared point: t0[i1] = t1[j1].
+            std::size_t i1 = i + 1, j1 = j + 1;
+            while (std::abs(t0[i1] - t1[j1]) > tol &&
+                   !(i1 + 1 == t0.size() && j1 + 1 == t1.size()))
+              if ((t0[i1] < t1[j1] && i1 + 1 < t0.size()) ||
+                  j1 + 1 == t1.size())
+                ++i1;
+              else
+                ++j1;
+            const std::size_t n0 = i1 - i, n1 = j1 - j;
+            const bool        plus =
+              rule == MultiplierMesh::finer_trace ? n1 > n0 : n1 < n0;
+            if (plus)
+              mesh.insert(mesh.end(), t1.begin() + j + 1, t1.begin() + j1 + 1);
+            else
+              mesh.insert(mesh.end(), t0.begin() + i + 1, t0.begin() + i1 + 1);
+            i = i1;
+            j = j1;
+          }
+      }
+    choice[Layout::across_sigma] = {mesh, degree_first};
+    // lambda-+: each side's trace, slave layer 2, the smaller degree.
+    for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+      choice[Layout::gluing_block(sd)] = {traces[static_cast<unsigned int>(sd)],
+                                          std::min(degree_first,
+                                                   degree_second)};
+    return choice;
+  }
+
+
+  namespace
+  {
+    /// The dual basis on the unit segment of the element @p fe of degree
+    /// @p degree: diag(int phi_i) M^{-1}.
+    void
+    compute_dual_basis(const FE_Q<1>      &fe,
+                       const unsigned int  degree,
+                       FullMatrix<double> &dual)
+    {
+      const unsigned int q1 = degree + 1;
+      const QGauss<1>    gauss(q1);
+      FullMatrix<double> mass(q1, q1), inverse(q1, q1);
+      Vector<double>     integral(q1);
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        for (unsigned int i = 0; i < q1; ++i)
+          {
+            const double phi_i = fe.shape_value(i, gauss.point(q));
+            integral(i) += phi_i * gauss.weight(q);
+            for (unsigned int k = 0; k < q1; ++k)
+              mass(i, k) +=
+                phi_i * fe.shape_value(k, gauss.point(q)) * gauss.weight(q);
+          }
+      inverse.invert(mass);
+      dual.reinit(q1, q1);
+      for (unsigned int i = 0; i < q1; ++i)
+        for (unsigned int k = 0; k < q1; ++k)
+          dual(i, k) = integral(i) * inverse(i, k);
+    }
+
+
+    /// Whether the coordinate @p s is an end of Sigma on Gamma_D for block
+    /// @p b.
+    bool
+    end_on_gamma_d(const InterfaceCurve &curve,
+                   const double          s,
+                   const unsigned int    b)
+    {
+      // For the gluing across Sigma where both sides' end nodes are clamped,
+      // for the gluing of the layers on one subdomain where that subdomain's
+      // end node is clamped. Where only one side of Sigma is clamped the end
+      // keeps its multiplier: its row couples the free dof of the other side
+      // to the prescribed value.
+      return b == Layout::across_sigma ?
+               curve.on_gamma_d(s) :
+               curve.on_gamma_d(s,
+                                static_cast<unsigned int>(
+                                  Layout::subdomain(Layout::coupled(b).first)));
+    }
+  } // namespace
+
+
+  void
+  MultiplierSpace::reinit(const InterfaceCurve                     &curve,
+                          const ContactParameters                  &contact,
+                          const std::array<std::vector<double>, 2> &traces,
+                          const unsigned int    degree_first,
+                          const unsigned int    degree_second,
+                          const PerBlock<bool> &active)
+  {
+    const double tol = curve.tolerance();
+
+    // The meshes: the slave's trace of each block, Gauss-Lobatto nodes of
+    // the block's degree on each segment.
+    const PerBlock<BlockChoice> choice =
+      choose(traces, degree_first, degree_second, contact.mesh, tol);
+    for (const unsigned int b : Layout::blocks)
+      {
+        Mesh &mesh  = meshes[b];
+        mesh.degree = choice[b].degree;
+        if (!mesh.fe || mesh.fe->degree != mesh.degree)
+          mesh.fe =
+            std::make_shared<FE_Q<1>>(QGaussLobatto<1>(mesh.degree + 1));
+        // Without layer 2 the blocks that glue the layers have no nodes.
+        if (active[b])
+          mesh.breakpoints = choice[b].breakpoints;
+        else
+          mesh.breakpoints.clear();
+        place_nodes(b, curve);
+        find_nodal_sides(b, traces, degree_first, degree_second, tol);
+        compute_dual_basis(*mesh.fe, mesh.degree, mesh.dual);
+      }
+
+    build_set(curve, contact);
+    join_end_rows(curve);
+  }
+
+
+  void
+  MultiplierSpace::place_nodes(const unsigned int    b,
+                               const InterfaceCurve &curve)
+  {
+    Mesh                  &mesh = meshes[b];
+    const QGaussLobatto<1> lobatto(mesh.degree + 1);
+    const unsigned int     n_segments =
+      mesh.breakpoints.empty() ? 0 : mesh.breakpoints.size() - 1;
+    const unsigned int n = n_segments > 0 ? n_segments * mesh.degree + 1 : 0;
+    mesh.node_x.assign(n, 0.);
+    mesh.node_weight.assign(n, 0.);
+    mesh.normal.assign(n, Tensor<1, 2>());
+    for (unsigned int e = 0; e < n_segments; ++e)
+      {
+        const double h = mesh.breakpoints[e + 1] - mesh.breakpoints[e];
+        // The segment's chord turned by +90 degrees: its normal times
+        // its length.
+        const Tensor<1, 2> chord = curve.point(mesh.breakpoints[e + 1]) -
+                                   curve.point(mesh.breakpoints[e]);
+        const Tensor<1, 2> chord_normal({-chord[1], chord[0]});
+        for (unsigned int i = 0; i <= mesh.degree; ++i)
+          {
+            const unsigned int a = node(e, i, b);
+            mesh.node_x[a]       = mesh.breakpoints[e] +
+                             mesh.fe->get_unit_support_points()[i][0] * h;
+            double integral = 0;
+            for (unsigned int q = 0; q < lobatto.size(); ++q)
+              {
+                const double phi_w =
+                  mesh.fe->shape_value(i, lobatto.point(q)) * lobatto.weight(q);
+                mesh.node_weight[a] += phi_w * h;
+                integral += phi_w;
+              }
+            mesh.normal[a] += integral * chord_normal;
+          }
+      }
+    // Weighted nodal normals: int phi_a nu_h ds over the chords of the
+    // multiplier mesh, normalised.
+    for (auto &normal : mesh.normal)
+      normal = unit_vector(normal);
+    mesh.frame.resize(n);
+    for (unsigned int a = 0; a < n; ++a)
+      mesh.frame[a] = {{tangent_of(mesh.normal[a]), mesh.normal[a]}};
+    mesh.node_mass = mesh.node_weight;
+    mesh.row.resize(n);
+    for (unsigned int a = 0; a < n; ++a)
+      mesh.row[a] = a;
+  }
+
+
+  void
+  MultiplierSpace::find_nodal_sides(
+    const unsigned int                        b,
+    const std::array<std::vector<double>, 2> &traces,
+    const unsigned int                        degree_first,
+    const unsigned int                        degree_second,
+    const double                              tol)
+  {
+    Mesh              &mesh = meshes[b];
+    const unsigned int n    = mesh.node_x.size();
+    // Which coupled traces lie in the multiplier space.
+    const auto [first, second] = Layout::coupled(b);
+    for (unsigned int j = 0; j < 2; ++j)
+      {
+        const unsigned int s = j == 0 ? first : second;
+        const auto        &trace =
+          traces[static_cast<unsigned int>(Layout::subdomain(s))];
+        const unsigned int degree_s =
+          Layout::layer(s) == Layer::first ? degree_first : degree_second;
+        bool        inside = degree_s <= mesh.degree;
+        std::size_t k      = 0;
+        for (const double x : trace)
+          {
+            while (k < mesh.breakpoints.size() && mesh.breakpoints[k] < x - tol)
+              ++k;
+            inside = inside && k < mesh.breakpoints.size() &&
+                     std::abs(mesh.breakpoints[k] - x) <= tol;
+          }
+        mesh.nodal[j] = inside || n == 0;
+      }
+  }
+
+
+  void
+  MultiplierSpace::build_set(const InterfaceCurve    &curve,
+                             const ContactParameters &contact)
+  {
+    // The multiplier set (docs/problem.md §3), per component.
+    const double                         p     = contact.multiplier_bound;
+    const CrackSet                      &crack = curve.crack();
+    std::vector<types::global_dof_index> sizes;
+    for (const auto &mesh : meshes)
+      sizes.push_back(Layout::n_components * mesh.node_x.size());
+    set_.reinit(sizes);
+    crack_nodes.assign(n_nodes(Layout::across_sigma), false);
+    corner_nodes.assign(n_nodes(Layout::across_sigma), false);
+    for (const unsigned int b : Layout::blocks)
+      for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
+        {
+          const double x        = meshes[b].node_x[a];
+          const bool   on_crack = crack.contains(x);
+          if (b == Layout::across_sigma)
+            crack_nodes[a] = on_crack;
+          if (end_on_gamma_d(curve, x, b))
+            continue;
+          for (unsigned int c = 0; c < Layout::n_components; ++c)
+            set_.set_glued(b, Layout::entry(a, c), p);
+          if (b == Layout::across_sigma && on_crack)
+            {
+              const unsigned int t = Layout::entry(a, Layout::tangential),
+                                 n = Layout::entry(a, Layout::normal);
+              set_.set_none(b, t);
+              if (contact.non_penetration)
+                set_.set_contact(b, n, p);
+              else
+                set_.set_none(b, n);
+              // A corner of Sigma: one contact constraint per piece, along
+              // its normal (the mean normal would let the node slide
+              // through the other face).
+              Tensor<1, 2> before, after;
+              if (curve.corner(x, before, after))
+                {
+                  corner_nodes[a]    = true;
+                  meshes[b].frame[a] = {{before, after}};
+                  if (contact.non_penetration)
+                    set_.set_contact(b, t, p);
+                }
+            }
+        }
+  }
+
+
+  void
+  MultiplierSpace::join_end_rows(const InterfaceCurve &curve)
+  {
+    // The mortar modification at the ends on Gamma_D of blocks with a side
+    // that is not nodal: the end's basis function joins the other vertex of
+    // its segment.
+    for (const unsigned int b : Layout::blocks)
+      {
+        Mesh              &mesh = meshes[b];
+        const unsigned int n    = mesh.node_x.size();
+        if (n == 0 || (mesh.nodal[0] && mesh.nodal[1]))
+          continue;
+        for (const auto &[end, neighbour] :
+             {std::make_pair(0u, mesh.degree),
+              std::make_pair(n - 1, n - 1 - mesh.degree)})
+          if (end_on_gamma_d(curve, mesh.node_x[end], b))
+            {
+              mesh.row[end] = neighbour;
+              mesh.node_weight[neighbour] += mesh.node_mass[end];
+            }
+      }
+  }
+
+
+  void
+  MultiplierSpace::restrict_to_free(BlockVector<double> &x) const
+  {
+    for (unsigned int i = 0; i < x.size(); ++i)
+      if (!free(i))
+        x(i) = 0;
+  }
+
+
+  unsigned int
+  MultiplierSpace::n_free() const
+  {
+    unsigned int count = 0;
+    for (unsigned int i = 0; i < set_.size(); ++i)
+      count += free(i);
+    return count;
+  }
+
+
+  double
+  MultiplierSpace::weighted_dot(const BlockVector<double> &x,
+                                const BlockVector<double> &y) const
+  {
+    double sum = 0;
+    for (unsigned int b = 0; b < x.n_blocks(); ++b)
+      for (unsigned int i = 0; i < x.block(b).size(); ++i)
+        sum += meshes[b].node_weight[i / Layout::n_components] * x.block(b)(i) *
+               y.block(b)(i);
+    return sum;
+  }
+
+
+  void
+  MultiplierSpace::scale_by_weights(BlockVector<double> &x,
+                                    const bool           inverse) const
+  {
+    for (unsigned int b = 0; b < x.n_blocks(); ++b)
+      for (unsigned int i = 0; i < x.block(b).size(); ++i)
+        {
+          const double d = meshes[b].node_weight[i / Layout::n_components];
+          x.block(b)(i)  = inverse ? x.block(b)(i) / d : x.block(b)(i) * d;
+        }
+  }
+
+
+  double
+  MultiplierSpace::discrete_violation(const BlockVector<double> &g) const
+  {
+    double violation = 0;
+    for (unsigned int i = 0; i < g.size(); ++i)
+      violation = std::max(violation, set_.violation(i, g(i)));
+    return violation;
+  }
+
+
+  unsigned int
+  MultiplierSpace::shape_values(const unsigned int   b,
+                                const double         x,
+                                std::vector<double> &values) const
+  {
+    const auto        &bp = meshes[b].breakpoints;
+    const auto         it = std::upper_bound(bp.begin() + 1, bp.end() - 1, x);
+    const unsigned int e  = (it - bp.begin()) - 1;
+    const double       t  = (x - bp[e]) / (bp[e + 1] - bp[e]);
+    values.resize(meshes[b].degree + 1);
+    for (unsigned int i = 0; i <= meshes[b].degree; ++i)
+      values[i] = meshes[b].fe->shape_value(i, Point<1>(t));
+    return e;
+  }
+
+
+  unsigned int
+  MultiplierSpace::dual_shape_values(const unsigned int   b,
+                                     const double         x,
+                                     std::vector<double> &values) const
+  {
+    std::vector<double> phi;
+    const unsigned int  e = shape_values(b, x, phi);
+    values.assign(phi.size(), 0.);
+    for (unsigned int i = 0; i < phi.size(); ++i)
+      for (unsigned int k = 0; k < phi.size(); ++k)
+        values[i] += meshes[b].dual(i, k) * phi[k];
+    return e;
+  }
+
+
+  double
+  MultiplierSpace::value(const BlockVector<double> &mu,
+                         const unsigned int         b,
+                         const double               x,
+                         const unsigned int         c) const
+  {
+    if (meshes[b].node_x.empty())
+      return 0.;
+    std::vector<double> values;
+    const unsigned int  e      = shape_values(b, x, values);
+    double              result = 0;
+    for (unsigned int i = 0; i <= degree(b); ++i)
+      result +=
+        values[i] * mu.block(b)(Layout::entry(row(node(e, i, b), b), c));
+    return result;
+  }
+
+
+  MultiplierSpace::Functions
+  MultiplierSpace::functions(const BlockVector<double> &mu) const
+  {
+    Functions f;
+    for (const unsigned int b : Layout::blocks)
+      {
+        f.degree[b]      = meshes[b].degree;
+        f.breakpoints[b] = meshes[b].breakpoints;
+      }
+    f.values = mu;
+    return f;
+  }
+
+
+  void
+  MultiplierSpace::interpolate(const Functions     &old,
+                               BlockVector<double> &mu) const
+  {
+    initialize(mu);
+    if (old.values.n_blocks() != Layout::n_blocks)
+      return;
+    for (const unsigned int b : Layout::blocks)
+      if (!meshes[b].node_x.empty() && old.breakpoints[b].size() >= 2)
+        {
+          const FE_Q<1> fe_old(QGaussLobatto<1>(old.degree[b] + 1));
+          const auto   &bp = old.breakpoints[b];
+          for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
+            {
+              const double x = meshes[b].node_x[a];
+              const auto it = std::upper_bound(bp.begin() + 1, bp.end() - 1, x);
+              const unsigned int e = (it - bp.begin()) - 1;
+              const double       t = (x - bp[e]) / (bp[e + 1] - bp[e]);
+              for (unsigned int i = 0; i <= old.degree[b]; ++i)
+                {
+                  const double v = fe_old.shape_value(i, Point<1>(t));
+                  for (unsigned int c = 0; c < Layout::n_components; ++c)
+                    mu.block(b)(Layout::entry(a, c)) +=
+                      v * old.values.block(b)(
+                            Layout::entry(node_of(old.degree[b], e, i), c));
+                }
+            }
+        }
+    project(mu);
+  }
+} // namespace bilayer

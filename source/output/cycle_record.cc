@@ -1,0 +1,544 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/multithread_info.h>
+
+#include <bilayer/core/build_info.h>
+#include <bilayer/output/cycle_record.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// A JSON number (null for NaN and infinities), with the 17
+    /// significant digits that identify the double.
+    std::string
+    json(const double value)
+    {
+      if (!std::isfinite(value))
+        return "null";
+      std::ostringstream s;
+      s << std::setprecision(17) << value;
+      return s.str();
+    }
+
+    std::string
+    json(const std::string &text)
+    {
+      std::string quoted = "\"";
+      for (const char c : text)
+        {
+          if (c == '"' || c == '\\')
+            quoted += '\\';
+          quoted += c;
+        }
+      return quoted + "\"";
+    }
+
+    /// A value as JSON.
+    std::string
+    json(const RecordValue &value)
+    {
+      if (const bool *flag = std::get_if<bool>(&value))
+        return *flag ? "true" : "false";
+      if (const unsigned long *count = std::get_if<unsigned long>(&value))
+        return std::to_string(*count);
+      if (const double *number = std::get_if<double>(&value))
+        return json(*number);
+      if (const std::string *text = std::get_if<std::string>(&value))
+        return json(*text);
+      std::string list = "[";
+      for (const double x : std::get<std::vector<double>>(value))
+        list += (list.size() > 1 ? ", " : "") + json(x);
+      return list + "]";
+    }
+
+    /// A value as a CSV cell: flags 1/0, numbers as in JSON.
+    std::string
+    csv(const RecordValue &value)
+    {
+      if (const bool *flag = std::get_if<bool>(&value))
+        return *flag ? "1" : "0";
+      Assert(!std::holds_alternative<std::vector<double>>(value),
+             ExcMessage("a list is no CSV cell"));
+      return json(value);
+    }
+
+    using R = CycleRecord;
+
+    /// A quantity that is positive where it was computed: NaN (null in
+    /// summary.json and table.csv) where it was not.
+    double
+    computed(const double value)
+    {
+      return value > 0 ? value : std::numeric_limits<double>::quiet_NaN();
+    }
+
+    /// The cycle, the sizes of the meshes and the numbers of unknowns.
+    std::vector<RecordField>
+    mesh_fields()
+    {
+      // clang-format off
+      return {
+        record_field("cycle", [](const R &r) { return r.cycle; })
+          .csv(0, "cycle").column("cycle"),
+        record_field("vertices_minus", [](const R &r) { return r.minus.vertices; })
+          .csv(7, "vertices_minus").column("Nod-"),
+        record_field("cells_minus", [](const R &r) { return r.minus.cells; })
+          .csv(8, "cells_minus").column("Cells-"),
+        record_field("vertices_plus", [](const R &r) { return r.plus.vertices; })
+          .csv(9, "vertices_plus").column("Nod+"),
+        record_field("cells_plus", [](const R &r) { return r.plus.cells; })
+          .csv(10, "cells_plus").column("Cells+"),
+        record_field("P", [](const R &r) { return r.P; })
+          .csv(1, "P").column("P"),
+        record_field("M", [](const R &r) { return r.M; })
+          .csv(2, "M").column("M"),
+        record_field("h_min_minus", [](const R &r) { return r.minus.h_min; })
+          .csv(3, "h_min_minus").column("h-min", 3, true),
+        record_field("h_max_minus", [](const R &r) { return r.minus.h_max; })
+          .csv(4, "h_max_minus").column("h-max", 3, true),
+        record_field("h_min_plus", [](const R &r) { return r.plus.h_min; })
+          .csv(5, "h_min_plus").column("h+min", 3, true),
+        record_field("h_max_plus", [](const R &r) { return r.plus.h_max; })
+          .csv(6, "h_max_plus").column("h+max", 3, true),
+        record_field("dofs", [](const R &r) { return r.dofs; })
+          .csv(11, "dofs").column("dofs"),
+        record_field("multipliers", [](const R &r) { return r.multipliers; })
+          .csv(12, "multipliers"),
+      };
+      // clang-format on
+    }
+
+    /// The outer solver: its parameters, iterations and outcome.
+    std::vector<RecordField>
+    solver_fields()
+    {
+      // clang-format off
+      return {
+        record_field("solver", [](const R &r) { return r.result.solver; }),
+        record_field("theta", [](const R &r) { return computed(r.theta); })
+          .csv(13, "theta"),
+        record_field("lambda_max", [](const R &r) { return computed(r.result.lambda_max); }),
+        record_field("predicted_threshold",
+                     [](const R &r) { return computed(r.result.predicted_threshold); }),
+        record_field("threshold_at_solution",
+                     [](const R &r) { return computed(r.result.threshold_at_solution); }),
+        record_field("iterations", [](const R &r) { return r.result.iterations; })
+          .csv(14, "iterations").column("iter"),
+        record_field("subdomain_solves",
+                     [](const R &r) { return r.result.subdomain_solves; })
+          .csv(15, "subdomain_solves").column("solves"),
+        record_field("preconditioner_solves",
+                     [](const R &r) { return r.result.preconditioner_solves; }),
+        record_field("linear_iterations",
+                     [](const R &r) { return r.result.linear_iterations; }),
+        record_field("converged", [](const R &r) { return r.result.converged; })
+          .csv(16, "converged"),
+        record_field("diverged", [](const R &r) { return r.result.diverged; }),
+        record_field("stopping_value",
+                     [](const R &r) { return r.result.stopping_value; }),
+        record_field("message", [](const R &r) { return r.result.message; }),
+      };
+      // clang-format on
+    }
+
+    /// The energies, the estimate and the report on the interface.
+    std::vector<RecordField>
+    solution_fields()
+    {
+      // clang-format off
+      return {
+        record_field("energy", [](const R &r) { return r.energy; })
+          .csv(17, "energy").column("energy", 8, true),
+        record_field("layer_1", [](const R &r) { return r.layer_energy[0]; })
+          .in("energy_of"),
+        record_field("layer_2", [](const R &r) { return r.layer_energy[1]; })
+          .in("energy_of"),
+        record_field("constraint_violation",
+                     [](const R &r) { return r.report.constraint_violation; })
+          .csv(18, "constraint_violation").column("violation", 2, true),
+        record_field("eta", [](const R &r) { return r.eta; })
+          .csv(19, "eta").column("eta", 2, true),
+        record_field("relative_constraint_violation",
+                     [](const R &r) { return r.report.relative_constraint_violation; }),
+        record_field("max_penetration",
+                     [](const R &r) { return r.report.max_penetration; })
+          .csv(20, "max_penetration"),
+        record_field("displacement_scale",
+                     [](const R &r) { return r.report.displacement_scale; }),
+        record_field("relative_discrete_violation",
+                     [](const R &r) { return r.report.relative_discrete_violation; }),
+        record_field("relative_jump_without_multiplier",
+                     [](const R &r) { return r.report.relative_jump_without_multiplier; }),
+        record_field("min_contact_multiplier",
+                     [](const R &r) { return r.report.min_contact_multiplier; }),
+        record_field("complementarity",
+                     [](const R &r) { return r.report.complementarity; }),
+        record_field("max_multiplier_over_bound",
+                     [](const R &r) { return r.report.max_multiplier_over_bound; }),
+        record_field("kkt_residual", [](const R &r) { return r.report.kkt.value(); }),
+        record_field("primal", [](const R &r) { return r.report.kkt.primal; })
+          .in("kkt"),
+        record_field("dual", [](const R &r) { return r.report.kkt.dual; })
+          .in("kkt"),
+        record_field("complementarity",
+                     [](const R &r) { return r.report.kkt.complementarity; })
+          .in("kkt"),
+      };
+      // clang-format on
+    }
+
+    /// The extreme eigenvalues of the dual operator (dual_spectrum).
+    std::vector<RecordField>
+    spectrum_fields()
+    {
+      // clang-format off
+      return {
+        record_field("lambda_min", [](const R &r) { return computed(r.spectrum.lambda_min); })
+          .in("dual_spectrum"),
+        record_field("lambda_max", [](const R &r) { return computed(r.spectrum.lambda_max); })
+          .in("dual_spectrum"),
+        record_field("condition_number", [](const R &r) {
+            return r.spectrum.lambda_min > 0 ? r.spectrum.condition_number() :
+                                               computed(0.); })
+          .in("dual_spectrum"),
+        record_field("h", [](const R &r) { return computed(r.spectrum.h); })
+          .in("dual_spectrum"),
+        record_field("lanczos_steps", [](const R &r) { return r.spectrum.iterations; })
+          .in("dual_spectrum"),
+      };
+      // clang-format on
+    }
+
+    /// Acceptance, processes, communication, memory and wall times.
+    std::vector<RecordField>
+    run_fields()
+    {
+      // clang-format off
+      return {
+        record_field("accepted", [](const R &r) { return r.accepted(); }),
+        record_field("processes", [](const R &r) { return r.processes; }),
+        record_field("shared_values", [](const R &r) { return r.shared_values; }),
+        record_field("shared_seconds", [](const R &r) { return r.shared_seconds; }),
+        record_field("memory_mib", [](const R &r) { return r.memory_mib; }),
+        record_field("memory_estimate_mib",
+                     [](const R &r) { return r.memory_estimate_mib; }),
+        record_field("setup", [](const R &r) { return r.setup_seconds; })
+          .in("wall_seconds").csv(21, "setup_seconds"),
+        record_field("assembly", [](const R &r) { return r.assembly_seconds; })
+          .in("wall_seconds"),
+        record_field("factorisation",
+                     [](const R &r) { return r.factorisation_seconds; })
+          .in("wall_seconds"),
+        record_field("solve", [](const R &r) { return r.solve_seconds; })
+          .in("wall_seconds").csv(22, "solve_seconds"),
+        record_field("solver_setup",
+                     [](const R &r) { return r.result.setup_seconds; })
+          .in("wall_seconds"),
+        record_field("iteration",
+                     [](const R &r) { return r.result.iteration_seconds; })
+          .in("wall_seconds"),
+        record_field("total", [](const R &r) { return r.total_seconds; })
+          .in("wall_seconds").csv(23, "total_seconds").column("time [s]", 3),
+      };
+      // clang-format on
+    }
+
+    /**
+     * The description of the record. Order: that of summary.json; the
+     * columns of table.csv are numbered, the mesh-size table has a subset
+     * of them in the same order.
+     */
+    std::vector<RecordField>
+    describe_fields()
+    {
+      std::vector<RecordField> fields = mesh_fields();
+      for (const std::vector<RecordField> &part : {solver_fields(),
+                                                   solution_fields(),
+                                                   spectrum_fields(),
+                                                   run_fields()})
+        fields.insert(fields.end(), part.begin(), part.end());
+      return fields;
+    }
+
+    /// The fields in table.csv, in the order of its columns.
+    std::vector<const RecordField *>
+    csv_fields()
+    {
+      std::vector<const RecordField *> in_csv;
+      for (const RecordField &field : CycleRecord::fields())
+        if (!field.csv_key.empty())
+          in_csv.push_back(&field);
+      std::sort(in_csv.begin(),
+                in_csv.end(),
+                [](const RecordField *a, const RecordField *b) {
+                  return a->csv_column < b->csv_column;
+                });
+      return in_csv;
+    }
+
+    /// Whether the description is consistent: the CSV columns are numbered
+    /// 0, 1, ... without gaps, every table column is a CSV column, and the
+    /// fields of each nested object of summary.json are consecutive.
+    bool
+    consistent(const std::vector<RecordField> &fields)
+    {
+      std::vector<unsigned int> columns;
+      for (const RecordField &field : fields)
+        {
+          if (!field.csv_key.empty())
+            columns.push_back(field.csv_column);
+          else if (!field.table.header.empty())
+            return false;
+        }
+      std::sort(columns.begin(), columns.end());
+      for (unsigned int i = 0; i < columns.size(); ++i)
+        if (columns[i] != i)
+          return false;
+      std::vector<std::string> closed;
+      for (unsigned int i = 1; i < fields.size(); ++i)
+        if (fields[i].json_object != fields[i - 1].json_object)
+          {
+            if (std::find(closed.begin(),
+                          closed.end(),
+                          fields[i].json_object) != closed.end())
+              return false;
+            if (!fields[i - 1].json_object.empty())
+              closed.push_back(fields[i - 1].json_object);
+          }
+      return true;
+    }
+
+    std::vector<RecordField>
+    checked(std::vector<RecordField> fields)
+    {
+      AssertThrow(consistent(fields),
+                  ExcMessage("the description of CycleRecord in "
+                             "source/cycle_record.cc is inconsistent"));
+      return fields;
+    }
+  } // namespace
+
+
+  RecordField
+  RecordField::in(const std::string &object) const
+  {
+    RecordField field = *this;
+    field.json_object = object;
+    return field;
+  }
+
+
+  RecordField
+  RecordField::csv(const unsigned int column, const std::string &key) const
+  {
+    RecordField field = *this;
+    field.csv_column  = column;
+    field.csv_key     = key;
+    return field;
+  }
+
+
+  RecordField
+  RecordField::column(const std::string                &header,
+                      const std::optional<unsigned int> precision,
+                      const bool                        scientific) const
+  {
+    RecordField field = *this;
+    field.table       = {header, precision, scientific};
+    return field;
+  }
+
+
+  bool
+  CycleRecord::accepted() const
+  {
+    for (const auto &c : checks)
+      if (!c.second)
+        return false;
+    return !checks.empty();
+  }
+
+
+  std::string
+  CycleRecord::failure() const
+  {
+    // The failed checks as the check lines print them ("...: NO").
+    std::string failed;
+    for (const auto &c : checks)
+      if (!c.second)
+        failed += (failed.empty() ? "" : ", ") + c.first + ": NO";
+    return failed + " (" + result.message + ")" +
+           (note.empty() ? "" : "; " + note);
+  }
+
+
+  const std::vector<RecordField> &
+  CycleRecord::fields()
+  {
+    static const std::vector<RecordField> list = checked(describe_fields());
+    return list;
+  }
+
+
+  std::vector<std::string>
+  CycleRecord::json_keys()
+  {
+    std::vector<std::string> keys;
+    std::string              object;
+    for (const RecordField &field : fields())
+      {
+        if (field.json_object != object && !field.json_object.empty())
+          keys.push_back(field.json_object);
+        object = field.json_object;
+        keys.push_back(field.json_key);
+      }
+    return keys;
+  }
+
+
+  std::vector<std::string>
+  CycleRecord::csv_keys()
+  {
+    std::vector<std::string> keys;
+    for (const RecordField *field : csv_fields())
+      keys.push_back(field->csv_key);
+    return keys;
+  }
+
+
+  void
+  write_summary_json(std::ostream                   &out,
+                     const std::string              &scene,
+                     const std::vector<CycleRecord> &records)
+  {
+    out << "{\n  \"scene\": " << json(scene) << ",\n  \"build\": {"
+        << "\"bilayer\": " << json(version())
+        << ", \"git_commit\": " << json(git_commit())
+        << ", \"deal_ii\": " << json(deal_ii_version())
+        << ", \"blas\": " << json(blas_library())
+        << ", \"threads\": {\"tasks\": " << MultithreadInfo::n_threads()
+        << ", \"blas\": " << blas_threads() << ", \"blas_set_by\": "
+        << json(blas_threads_variable().empty() ? "bilayer" :
+                                                  blas_threads_variable())
+        << "}},\n  \"cycles\": [";
+    for (unsigned int i = 0; i < records.size(); ++i)
+      {
+        out << (i ? "," : "") << "\n    {";
+        // The object being written: "" (the cycle's) or a nested one.
+        std::string object;
+        bool        first = true;
+        for (const RecordField &field : CycleRecord::fields())
+          {
+            if (field.json_object != object)
+              {
+                if (!object.empty())
+                  out << "}";
+                if (!field.json_object.empty())
+                  out << ", " << json(field.json_object) << ": {";
+                object = field.json_object;
+                first  = !object.empty();
+              }
+            out << (first ? "" : ", ") << json(field.json_key) << ": "
+                << json(field.value(records[i]));
+            first = false;
+          }
+        out << (object.empty() ? "" : "}");
+        // The crack tips, ordered by s.
+        out << ", \"crack_tips\": [";
+        for (unsigned int t = 0; t < records[i].release.size(); ++t)
+          {
+            const EnergyReleaseRate &g = records[i].release[t];
+            out << (t ? ", " : "") << "{\"s\": " << json(g.tip.s)
+                << ", \"x\": " << json(g.tip.point[0])
+                << ", \"y\": " << json(g.tip.point[1]) << ", \"direction\": ["
+                << json(g.tip.direction[0] + 0.) << ", "
+                << json(g.tip.direction[1] + 0.)
+                << "], \"support_radius\": " << json(g.tip.support_radius)
+                << ", \"G\": " << json(g.G)
+                << ", \"G_contact\": " << json(g.contact)
+                << ", \"G_error\": " << json(g.error)
+                << ", \"G_error_estimate\": " << json(g.error_estimate)
+                << ", \"G_half_support\": " << json(g.G_half_support) << "}";
+          }
+        out << "]}";
+      }
+    out << "\n  ]\n}\n";
+  }
+
+
+  void
+  write_csv_table(std::ostream                   &out,
+                  const std::vector<CycleRecord> &records,
+                  const bool                      along_x)
+  {
+    const std::vector<const RecordField *> columns = csv_fields();
+    // The fields, then G at each tip (the tips are the same in every cycle).
+    const unsigned int n_tips = records.empty() ? 0 : records[0].release.size();
+    // Where the tips are: '#' lines before the header.
+    if (n_tips > 0)
+      for (const std::string &note : tip_notes(records[0].release, along_x))
+        out << "# " << note << '\n';
+    for (unsigned int c = 0; c < columns.size(); ++c)
+      out << (c ? "," : "") << columns[c]->csv_key;
+    for (unsigned int t = 0; t < n_tips; ++t)
+      out << ",G_tip" << t + 1 << ",dG_tip" << t + 1;
+    out << '\n';
+    for (const CycleRecord &record : records)
+      {
+        for (unsigned int c = 0; c < columns.size(); ++c)
+          out << (c ? "," : "") << csv(columns[c]->value(record));
+        for (unsigned int t = 0; t < n_tips; ++t)
+          out << ","
+              << (t < record.release.size() ? json(record.release[t].G) :
+                                              std::string("null"))
+              << ","
+              << (t < record.release.size() ? json(record.release[t].error) :
+                                              std::string("null"));
+        out << '\n';
+      }
+  }
+
+
+  void
+  add_to_table(ConvergenceTable &table, const CycleRecord &record)
+  {
+    for (const RecordField *field : csv_fields())
+      {
+        const RecordField::TableColumn &column = field->table;
+        if (column.header.empty())
+          continue;
+        const RecordValue value = field->value(record);
+        if (const unsigned long *count = std::get_if<unsigned long>(&value))
+          table.add_value(column.header, static_cast<unsigned int>(*count));
+        else if (const double *number = std::get_if<double>(&value))
+          table.add_value(column.header, *number);
+        else
+          AssertThrow(false,
+                      ExcMessage("the table column " + column.header +
+                                 " holds no count or number"));
+        if (column.precision)
+          table.set_precision(column.header, *column.precision);
+        if (column.scientific)
+          table.set_scientific(column.header, true);
+      }
+    for (unsigned int t = 0; t < record.release.size(); ++t)
+      {
+        const std::string header = "G tip " + std::to_string(t + 1);
+        table.add_value(header, record.release[t].G);
+        table.set_precision(header, 4);
+        table.set_scientific(header, true);
+        const std::string error = "dG tip " + std::to_string(t + 1);
+        table.add_value(error, record.release[t].error);
+        table.set_precision(error, 1);
+        table.set_scientific(error, true);
+      }
+  }
+} // namespace bilayer

@@ -1,0 +1,114 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
+
+#include <bilayer/parameters/expressions.h>
+
+#include <cctype>
+#include <functional>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  namespace expressions
+  {
+    namespace
+    {
+      /**
+       * Run @p work with std::cerr muted (muparser's reports of syntax
+       * errors, which the callers' messages replace); whether it ended
+       * without an exception.
+       */
+      bool
+      quietly(const std::function<void()> &work)
+      {
+        std::ostringstream muparser_noise;
+        std::streambuf *cerr_buffer = std::cerr.rdbuf(muparser_noise.rdbuf());
+        bool            done        = true;
+        try
+          {
+            work();
+          }
+        catch (...)
+          {
+            done = false;
+          }
+        std::cerr.rdbuf(cerr_buffer);
+        return done;
+      }
+    } // namespace
+
+
+    bool
+    is_identifier(const std::string &name)
+    {
+      if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])))
+        return false;
+      for (const char ch : name)
+        if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'))
+          return false;
+      return true;
+    }
+
+
+    bool
+    is_reserved_name(const std::string &name)
+    {
+      static const std::set<std::string> reserved = {
+        "x",         "y",     "z",    "t",    "sin",  "cos",   "tan",   "asin",
+        "acos",      "atan",  "sinh", "cosh", "tanh", "asinh", "acosh", "atanh",
+        "log2",      "log10", "log",  "ln",   "exp",  "sqrt",  "sign",  "rint",
+        "abs",       "min",   "max",  "sum",  "avg",  "if",    "int",   "ceil",
+        "cot",       "csc",   "sec",  "pow",  "erfc", "rand",  "floor", "atan2",
+        "rand_seed", "fmod",  "_pi",  "_e"};
+      return reserved.count(name) > 0;
+    }
+
+
+    bool
+    evaluate_constant(const std::string                   &value,
+                      const std::map<std::string, double> &constants,
+                      double                              &result)
+    {
+      FunctionParser<1> parser(1);
+      return quietly([&]() {
+        parser.initialize("t", value, constants);
+        result = parser.value(Point<1>());
+      });
+    }
+
+
+    std::unique_ptr<FunctionParser<2>>
+    vector_function(const std::string                   &expression,
+                    const std::map<std::string, double> &constants,
+                    const std::string                   &entry)
+    {
+      AssertThrow(expression.size() <= max_length,
+                  ExcMessage(entry + ": longer than " +
+                             std::to_string(max_length) + " characters"));
+      const auto parts = Utilities::split_string_list(expression, ';');
+      AssertThrow(parts.size() == 2,
+                  ExcMessage(entry +
+                             " must have two components separated "
+                             "by ';' (x-component; y-component), got '" +
+                             expression + "'"));
+      auto       function  = std::make_unique<FunctionParser<2>>(2);
+      const bool evaluated = quietly([&]() {
+        function->initialize("x,y", parts, constants);
+        Vector<double> value(2);
+        function->vector_value(Point<2>(0.123, 0.456), value);
+      });
+      AssertThrow(evaluated,
+                  ExcMessage(entry + ": cannot evaluate '" + expression +
+                             "' as a function of x and y (known constants: "
+                             "material constants E1, nu1, mu1, lambda1, "
+                             "E2, nu2, mu2, lambda2 and Loads/Constants)"));
+      return function;
+    }
+  } // namespace expressions
+} // namespace bilayer

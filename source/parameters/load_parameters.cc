@@ -1,0 +1,176 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <bilayer/parameters/expressions.h>
+#include <bilayer/parameters/load_parameters.h>
+#include <bilayer/parameters/parameter_entries.h>
+#include <bilayer/physics/elastic_law.h>
+
+#include <cmath>
+#include <set>
+
+namespace bilayer
+{
+  using namespace dealii;
+  using namespace entries;
+
+
+  LoadParameters::LoadParameters()
+  {
+    for (auto &layer : traction)
+      layer.assign(parts.size(), "0; 0");
+  }
+
+
+  void
+  LoadParameters::declare_parameters(ParameterHandler    &prm,
+                                     const BoundaryParts &parts)
+  {
+    prm.enter_subsection("Loads");
+    prm.declare_entry(
+      "Constants",
+      "",
+      Patterns::Anything(),
+      "Named constants for the expressions below, as 'name = expression; "
+      "name = expression'. An expression may use E1, nu1, mu1, lambda1, E2, "
+      "nu2, mu2, lambda2 (the Lame constants of the layers, from Materials) "
+      "and the constants defined before it, e.g. 'c = 1e-3*mu1'.");
+    for (unsigned int l = 0; l < 2; ++l)
+      {
+        prm.enter_subsection(layer_subsection(l));
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          prm.declare_entry(parts.traction_entry(i),
+                            "0; 0",
+                            Patterns::Anything(),
+                            "Traction (x-component; y-component) on this part "
+                            "of the boundary of the layer as expressions of x "
+                            "and y [stress]. Used where the part is not "
+                            "clamped; must be '0; 0' on clamped parts.");
+        prm.declare_entry("Prescribed displacement",
+                          "0; 0",
+                          Patterns::Anything(),
+                          "Displacement (x-component; y-component) of the "
+                          "layer on the clamped sides Gamma_D as expressions "
+                          "of x and y [length].");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+
+  void
+  LoadParameters::parse_parameters(ParameterHandler         &prm,
+                                   const MaterialParameters &materials,
+                                   const BoundaryParts      &boundary_parts)
+  {
+    parts = boundary_parts;
+    constant_values.clear();
+    std::set<std::string> materials_constants;
+    for (unsigned int l = 0; l < 2; ++l)
+      {
+        const std::string n = std::to_string(l + 1);
+        for (const auto &[name, value] :
+             make_elastic_law(materials.layer[l])->load_constants())
+          {
+            constant_values[name + n] = value;
+            materials_constants.insert(name + n);
+          }
+      }
+
+    prm.enter_subsection("Loads");
+    constants = prm.get("Constants");
+    AssertThrow(constants.size() <= expressions::max_length,
+                ExcMessage("Loads/Constants: longer than " +
+                           std::to_string(expressions::max_length) +
+                           " characters"));
+    for (const auto &item : Utilities::split_string_list(constants, ';'))
+      {
+        if (Utilities::trim(item).empty())
+          continue;
+        const auto        equal = item.find('=');
+        const std::string name =
+          Utilities::trim(item.substr(0, std::min(equal, item.size())));
+        const std::string value = equal == std::string::npos ?
+                                    "" :
+                                    Utilities::trim(item.substr(equal + 1));
+        AssertThrow(equal != std::string::npos &&
+                      expressions::is_identifier(name) && !value.empty(),
+                    ExcMessage("Loads/Constants must read 'name = expression; "
+                               "...' with names of letters, digits and '_', "
+                               "cannot read '" +
+                               item + "'"));
+        AssertThrow(!expressions::is_reserved_name(name) &&
+                      materials_constants.count(name) == 0,
+                    ExcMessage("Loads/Constants: the name '" + name +
+                               "' is reserved (the coordinates x, y, the "
+                               "material constants E1, nu1, mu1, lambda1, E2, "
+                               "nu2, mu2, lambda2 and the functions of the "
+                               "expressions): choose another name"));
+        double     result = 0;
+        const bool evaluated =
+          expressions::evaluate_constant(value, constant_values, result);
+        AssertThrow(evaluated,
+                    ExcMessage("Loads/Constants: cannot evaluate '" + value +
+                               "' for constant '" + name + "'"));
+        AssertThrow(std::isfinite(result),
+                    ExcMessage("Loads/Constants: constant '" + name + "' = '" +
+                               value + "' is not a finite number"));
+        constant_values[name] = result;
+      }
+
+    for (unsigned int l = 0; l < 2; ++l)
+      {
+        prm.enter_subsection(layer_subsection(l));
+        traction[l].assign(parts.size(), "0; 0");
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          traction[l][i] = prm.get(parts.traction_entry(i));
+        prescribed[l] = prm.get("Prescribed displacement");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+
+    // Evaluate every expression once now, so that errors name the entry.
+    for (const Layer layer : {Layer::first, Layer::second})
+      {
+        prescribed_function(layer);
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          traction_function(layer, i);
+      }
+  }
+
+
+  std::unique_ptr<FunctionParser<2>>
+  LoadParameters::traction_function(const Layer        layer,
+                                    const unsigned int part) const
+  {
+    const unsigned int l = static_cast<unsigned int>(layer);
+    return expressions::vector_function(traction[l][part],
+                                        constant_values,
+                                        "Loads/" + layer_subsection(l) + "/" +
+                                          parts.traction_entry(part));
+  }
+
+
+  std::unique_ptr<FunctionParser<2>>
+  LoadParameters::prescribed_function(const Layer layer) const
+  {
+    const unsigned int l = static_cast<unsigned int>(layer);
+    return expressions::vector_function(prescribed[l],
+                                        constant_values,
+                                        "Loads/" + layer_subsection(l) +
+                                          "/Prescribed displacement");
+  }
+
+
+  bool
+  LoadParameters::traction_is_zero(const Layer        layer,
+                                   const unsigned int part) const
+  {
+    const auto components = Utilities::split_string_list(
+      traction[static_cast<unsigned int>(layer)][part], ';');
+    for (const auto &p : components)
+      if (p != "0" && p != "0.0" && p != "0.")
+        return false;
+    return true;
+  }
+} // namespace bilayer

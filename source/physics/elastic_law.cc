@@ -1,0 +1,83 @@
+#include <bilayer/physics/elastic_law.h>
+
+#include <cmath>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  void
+  ElasticLaw::add_stiffness(const std::vector<SymmetricTensor<2, 2>> &eps,
+                            const double                              JxW,
+                            FullMatrix<double> &cell_matrix) const
+  {
+    const unsigned int n = eps.size();
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i; j < n; ++j)
+        cell_matrix(i, j) += bilinear_form(eps[i], eps[j]) * JxW;
+  }
+
+
+  double
+  ElasticLaw::von_mises(const SymmetricTensor<2, 2> &s, const double s_zz)
+  {
+    return std::sqrt(0.5 * ((s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) +
+                            (s[1][1] - s_zz) * (s[1][1] - s_zz) +
+                            (s_zz - s[0][0]) * (s_zz - s[0][0])) +
+                     3 * s[0][1] * s[0][1]);
+  }
+
+
+  IsotropicPlaneStrain::IsotropicPlaneStrain(const double youngs_modulus,
+                                             const double poisson_ratio)
+    : E(youngs_modulus)
+    , nu(poisson_ratio)
+    , mu(youngs_modulus / (2. * (1. + poisson_ratio)))
+    , lambda(2. * poisson_ratio * mu / (1. - 2. * poisson_ratio))
+  {}
+
+
+  void
+  IsotropicPlaneStrain::add_stiffness(
+    const std::vector<SymmetricTensor<2, 2>> &eps,
+    const double                              JxW,
+    FullMatrix<double>                       &cell_matrix) const
+  {
+    // The traces once per shape function (the divergences of the shape
+    // functions), then the same sum as bilinear_form().
+    thread_local std::vector<double> div;
+    const unsigned int               n = eps.size();
+    div.resize(n);
+    for (unsigned int i = 0; i < n; ++i)
+      div[i] = trace(eps[i]);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i; j < n; ++j)
+        cell_matrix(i, j) +=
+          (2 * mu * scalar_product(eps[i], eps[j]) + lambda * div[i] * div[j]) *
+          JxW;
+  }
+
+
+  SymmetricTensor<4, 2>
+  IsotropicPlaneStrain::tangent() const
+  {
+    return 2 * mu * identity_tensor<2>() +
+           lambda * outer_product(unit_symmetric_tensor<2>(),
+                                  unit_symmetric_tensor<2>());
+  }
+
+
+  std::map<std::string, double>
+  IsotropicPlaneStrain::load_constants() const
+  {
+    return {{"E", E}, {"nu", nu}, {"mu", mu}, {"lambda", lambda}};
+  }
+
+
+  std::unique_ptr<const ElasticLaw>
+  make_elastic_law(const LayerMaterial &material)
+  {
+    return std::make_unique<IsotropicPlaneStrain>(material.youngs_modulus,
+                                                  material.poisson_ratio);
+  }
+} // namespace bilayer

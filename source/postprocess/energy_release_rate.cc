@@ -1,0 +1,287 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <bilayer/core/similarity_breaker.h>
+#include <bilayer/core/tasks.h>
+#include <bilayer/postprocess/fracture.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /**
+     * A Gauss rule with @p n points per direction on each of the m x m
+     * (quadrilateral) or m^2 (triangle) congruent pieces of the reference
+     * cell: cells much larger than the support of theta see its fall from
+     * 1 to 0 with enough points.
+     */
+    Quadrature<2>
+    subdivided_quadrature(const ReferenceCell &cell,
+                          const unsigned int   n,
+                          const unsigned int   m)
+    {
+      if (cell == ReferenceCells::Quadrilateral)
+        return QIterated<2>(QGauss<1>(n), m);
+      const QGaussSimplex<2> base(std::min(n, 4u));
+      std::vector<Point<2>>  points;
+      std::vector<double>    weights;
+      const auto             add = [&](const Point<2>     &origin,
+                           const Tensor<1, 2> &e0,
+                           const Tensor<1, 2> &e1) {
+        for (unsigned int q = 0; q < base.size(); ++q)
+          {
+            points.push_back(origin + base.point(q)[0] * e0 +
+                             base.point(q)[1] * e1);
+            weights.push_back(base.weight(q) / (m * m));
+          }
+      };
+      const double h = 1. / m;
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int j = 0; i + j < m; ++j)
+          {
+            add(Point<2>(i * h, j * h),
+                Tensor<1, 2>({h, 0}),
+                Tensor<1, 2>({0, h}));
+            if (i + j + 1 < m)
+              add(Point<2>((i + 1) * h, (j + 1) * h),
+                  Tensor<1, 2>({-h, 0}),
+                  Tensor<1, 2>({0, -h}));
+          }
+      return Quadrature<2>(points, weights);
+    }
+
+
+    /// The smallest R of the defined tips whose theta reaches @p cell, or 0.
+    double
+    smallest_support_radius(const std::vector<CrackTip>               &tips,
+                            const std::vector<ThetaField>             &fields,
+                            const DoFHandler<2>::active_cell_iterator &cell,
+                            const double                               diameter)
+    {
+      const unsigned int n          = tips.size();
+      double             smallest_R = 0;
+      for (unsigned int t = 0; t < n; ++t)
+        if (tips[t].defined() && fields[t].reaches(cell->center(), diameter))
+          smallest_R = smallest_R == 0 ?
+                         tips[t].support_radius :
+                         std::min(smallest_R, tips[t].support_radius);
+      return smallest_R;
+    }
+
+
+    /// int sigma : (grad u grad theta) - W div theta dx of @p field over the
+    /// cell of @p fe_values, grad u at its quadrature points @p grad_u.
+    double
+    cell_integral(const FEValues<2>               &fe_values,
+                  const std::vector<Tensor<2, 2>> &grad_u,
+                  const ElasticLaw                &law,
+                  const ThetaField                &field)
+    {
+      double sum = 0;
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const Tensor<2, 2> grad_theta =
+            field.gradient(fe_values.quadrature_point(q));
+          const SymmetricTensor<2, 2> eps            = symmetrize(grad_u[q]);
+          const SymmetricTensor<2, 2> stress         = law.stress(eps);
+          const double                energy_density = 0.5 * (stress * eps);
+          sum += (scalar_product(Tensor<2, 2>(stress), grad_u[q] * grad_theta) -
+                  energy_density * trace(grad_theta)) *
+                 fe_values.JxW(q);
+        }
+      return sum;
+    }
+
+
+    /// The domain integral of subproblem @p sub (solution @p u) at each tip.
+    void
+    subproblem_integrals(const ElasticSubproblem       &sub,
+                         const Vector<double>          &u,
+                         const std::vector<CrackTip>   &tips,
+                         const std::vector<ThetaField> &fields,
+                         Vector<double>                &integral)
+    {
+      const unsigned int n = tips.size();
+      integral.reinit(n);
+      // FEValues with the rule subdivided m x m times, by m.
+      std::map<unsigned int, std::unique_ptr<FEValues<2>>> by_pieces;
+      const SimilarityBreaker          fresh(sub.fe().reference_cell());
+      const FEValuesExtractors::Vector displacement(0);
+      const ElasticLaw                &law = sub.law();
+      std::vector<Tensor<2, 2>>        grad_u;
+      for (const auto &cell : sub.dof_handler().active_cell_iterators())
+        {
+          // No point of a cell is farther from its centre than its
+          // diameter (the vertex mean lies inside the cell).
+          const double diameter = cell->diameter();
+          const double smallest_R =
+            smallest_support_radius(tips, fields, cell, diameter);
+          if (smallest_R == 0)
+            continue;
+          // Pieces no larger than 1/8 of R: at least four across the
+          // fall of theta (R/2 < r < R).
+          const unsigned int m =
+            std::clamp<unsigned int>(std::ceil(8 * diameter / smallest_R),
+                                     1,
+                                     32);
+          auto &fe_values_m = by_pieces[m];
+          if (!fe_values_m)
+            fe_values_m = std::make_unique<FEValues<2>>(
+              sub.mapping(),
+              sub.fe(),
+              subdivided_quadrature(sub.fe().reference_cell(),
+                                    sub.fe().degree + 3,
+                                    m),
+              update_gradients | update_quadrature_points | update_JxW_values);
+          FEValues<2> &fe_values = *fe_values_m;
+          fresh.apply(fe_values);
+          fe_values.reinit(cell);
+          grad_u.resize(fe_values.n_quadrature_points);
+          fe_values[displacement].get_function_gradients(u, grad_u);
+          for (unsigned int t = 0; t < n; ++t)
+            if (tips[t].defined() &&
+                fields[t].reaches(cell->center(), diameter))
+              integral(t) += cell_integral(fe_values, grad_u, law, fields[t]);
+        }
+    }
+
+
+    /// The domain integrals of all subproblems, shared and added to G.
+    void
+    add_domain_integrals(
+      const PerSubproblem<const ElasticSubproblem *> &subproblems,
+      const Solutions                                &w,
+      const std::vector<CrackTip>                    &tips,
+      const std::vector<ThetaField>                  &fields,
+      std::vector<EnergyReleaseRate>                 &result)
+    {
+      const unsigned int            n = tips.size();
+      PerSubproblem<Vector<double>> integrals;
+      Tasks                         tasks;
+      for (const unsigned int s : Layout::subproblems)
+        if (subproblems[s] != nullptr && subproblems[s]->owned())
+          tasks.add([&, s]() {
+            subproblem_integrals(
+              *subproblems[s], w[s], tips, fields, integrals[s]);
+          });
+      tasks.join_all();
+      for (const unsigned int s : Layout::subproblems)
+        if (subproblems[s] != nullptr)
+          {
+            if (!subproblems[s]->owned())
+              integrals[s].reinit(n);
+            subproblems[s]->processes().share(s, integrals[s]);
+            for (unsigned int t = 0; t < n; ++t)
+              result[t].G += integrals[s](t);
+          }
+    }
+
+
+    /// The contact term of each tip on a curved crack, into its contact.
+    void
+    add_contact_terms(const Interface                &interface,
+                      const Solutions                &w,
+                      const BlockVector<double>      &mu,
+                      const std::vector<CrackTip>    &tips,
+                      const std::vector<ThetaField>  &fields,
+                      std::vector<EnergyReleaseRate> &result)
+    {
+      // The contact term on a curved crack: -sign int psi kappa mu_c [u].tau
+      // over the segments of the mesh of mu_1 (Gauss quadrature, the
+      // multiplier and the jump interpolated from its nodes).
+      const unsigned int n              = tips.size();
+      bool               curved_contact = false;
+      for (const CrackTip &tip : tips)
+        curved_contact = curved_contact || (tip.defined() && tip.curved());
+      if (curved_contact && interface.contact_parameters().non_penetration)
+        {
+          const MultiplierSpace &space = interface.space();
+          const InterfaceCurve  &curve = interface.curve();
+          Vector<double>         tm, tp;
+          interface.coupling().trace_at_nodes(Layout::u_minus,
+                                              w[Layout::u_minus],
+                                              tm);
+          interface.coupling().trace_at_nodes(Layout::u_plus,
+                                              w[Layout::u_plus],
+                                              tp);
+          const auto         &bp = space.breakpoints(Layout::across_sigma);
+          const QGauss<1>     gauss(space.degree() + 2);
+          std::vector<double> shape;
+          for (unsigned int t = 0; t < n; ++t)
+            if (tips[t].defined() && tips[t].curved())
+              for (unsigned int e = 0; e + 1 < bp.size(); ++e)
+                {
+                  const double mid = 0.5 * (bp[e] + bp[e + 1]);
+                  if (!curve.crack().contains(mid) ||
+                      !fields[t].reaches(curve.point(mid), bp[e + 1] - bp[e]))
+                    continue;
+                  for (unsigned int q = 0; q < gauss.size(); ++q)
+                    {
+                      const double s_q =
+                        bp[e] + gauss.point(q)[0] * (bp[e + 1] - bp[e]);
+                      space.shape_values(Layout::across_sigma, s_q, shape);
+                      double mu_c = 0, jump = 0;
+                      for (unsigned int i = 0; i < shape.size(); ++i)
+                        {
+                          const unsigned int a = space.node(e, i);
+                          mu_c += shape[i] * space.contact_multiplier(mu, a);
+                          jump += shape[i] *
+                                  (tp(Layout::entry(a, Layout::tangential)) -
+                                   tm(Layout::entry(a, Layout::tangential)));
+                        }
+                      const Point<2> x = curve.point(s_q);
+                      // kappa: d tau / ds = kappa nu, towards the centre.
+                      const double kappa =
+                        fields[t].curvature(x, curve.normal(s_q));
+                      result[t].contact -=
+                        tips[t].sign *
+                        fields[t].cutoff((x - tips[t].point).norm()) * kappa *
+                        mu_c * jump * gauss.weight(q) * (bp[e + 1] - bp[e]);
+                    }
+                }
+        }
+    }
+  } // namespace
+
+
+  std::vector<EnergyReleaseRate>
+  energy_release_rates(
+    const PerSubproblem<const ElasticSubproblem *> &subproblems,
+    const Interface                                &interface,
+    const Solutions                                &w,
+    const BlockVector<double>                      &mu,
+    const std::vector<CrackTip>                    &tips)
+  {
+    const unsigned int             n = tips.size();
+    std::vector<EnergyReleaseRate> result(n);
+    std::vector<ThetaField>        fields;
+    for (unsigned int t = 0; t < n; ++t)
+      {
+        result[t].tip = tips[t];
+        fields.emplace_back(tips[t]);
+      }
+
+    // The domain integral of each subproblem at each tip, by its owner.
+    add_domain_integrals(subproblems, w, tips, fields, result);
+    // The contact term on a curved crack.
+    add_contact_terms(interface, w, mu, tips, fields, result);
+
+    for (EnergyReleaseRate &r : result)
+      if (r.tip.defined())
+        r.G += r.contact;
+      else
+        r.G = std::numeric_limits<double>::quiet_NaN();
+    return result;
+  }
+} // namespace bilayer

@@ -1,0 +1,282 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <bilayer/core/boundary_ids.h>
+#include <bilayer/core/tasks.h>
+#include <bilayer/interface/interface_diagnostics.h>
+#include <bilayer/postprocess/estimator.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  double
+  normalisation_scale(
+    const PerSubproblem<const ElasticSubproblem *> &subproblems,
+    const Solutions                                &w)
+  {
+    double              largest   = 0;
+    const Distribution *processes = nullptr;
+    for (const unsigned int s : Layout::subproblems)
+      if (subproblems[s] != nullptr)
+        {
+          processes = &subproblems[s]->processes();
+          if (subproblems[s]->owned() && w[s].size() > 0)
+            largest = std::max(largest, w[s].linfty_norm());
+        }
+    if (processes != nullptr)
+      largest = processes->max(largest);
+    if (!(largest > 0) || !std::isfinite(largest))
+      return 1;
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    return std::ldexp(1., exponent);
+  }
+
+
+  namespace
+  {
+    /// The complementarity term of a face of layer 1 on the crack, added to
+    /// @p term: @p contact_weight times the complementarity of each segment
+    /// of the mu_1 mesh under the face, by overlap, over @p scale.
+    void
+    add_crack_complementarity(const Interface                    &interface,
+                              const std::vector<ContactSegment>  &contact,
+                              const DoFHandler<2>::face_iterator &face,
+                              const double contact_weight,
+                              const double scale,
+                              double      &term)
+    {
+      const double s0 = interface.curve().parameter(face->vertex(0)),
+                   s1 = interface.curve().parameter(face->vertex(1));
+      const double x0 = std::min(s0, s1);
+      const double x1 = std::max(s0, s1);
+      auto         it = std::lower_bound(contact.begin(),
+                                 contact.end(),
+                                 x0,
+                                 [](const ContactSegment &c, const double x) {
+                                   return c.b <= x;
+                                 });
+      for (; it != contact.end() && it->a < x1; ++it)
+        {
+          const double overlap = std::min(x1, it->b) - std::max(x0, it->a);
+          if (overlap > 0)
+            term += contact_weight * std::abs(it->complementarity) * overlap /
+                    (it->b - it->a) / scale;
+        }
+    }
+
+
+    /// The integral over the Sigma face @p f of @p cell of
+    /// |sigma(w) n - t|^2 / scale^2, t the traction of the multipliers.
+    double
+    face_residual(const ElasticSubproblem                   &sub,
+                  const unsigned int                         s,
+                  const Interface                           &interface,
+                  const Vector<double>                      &w,
+                  const BlockVector<double>                 &mu,
+                  const DoFHandler<2>::active_cell_iterator &cell,
+                  const unsigned int                         f,
+                  FEFaceValues<2>                           &fe_face,
+                  std::vector<SymmetricTensor<2, 2>>        &strain)
+    {
+      const FEValuesExtractors::Vector displacement(0);
+      const ElasticLaw                &law   = sub.law();
+      const double                     scale = law.energy_norm_scale();
+      fe_face.reinit(cell, f);
+      fe_face[displacement].get_function_symmetric_gradients(w, strain);
+      double sum = 0;
+      for (const unsigned int q : fe_face.quadrature_point_indices())
+        {
+          const SymmetricTensor<2, 2> stress = law.stress(strain[q]);
+          const Tensor<1, 2>          residual =
+            stress * fe_face.normal_vector(q) -
+            interface.multiplier_traction(
+              mu, s, interface.curve().parameter(fe_face.quadrature_point(q)));
+          sum += (residual * residual) / (scale * scale) * fe_face.JxW(q);
+        }
+      return sum;
+    }
+
+
+    /// The Sigma terms of the squared indicators of one subproblem, added to
+    /// @p eta2: the residual of the multiplier load on the Sigma faces, and
+    /// on the crack faces of layer 1 the complementarity.
+    void
+    add_sigma_terms(const ElasticSubproblem           &sub,
+                    const unsigned int                 s,
+                    const Interface                   &interface,
+                    const Vector<double>              &w,
+                    const BlockVector<double>         &mu,
+                    const std::vector<ContactSegment> &contact,
+                    const double                       contact_weight,
+                    const Quadrature<1>               &face_quadrature,
+                    Vector<double>                    &eta2)
+    {
+      FEFaceValues<2>                    fe_face(sub.mapping(),
+                              sub.fe(),
+                              face_quadrature,
+                              update_gradients | update_quadrature_points |
+                                update_normal_vectors | update_JxW_values);
+      std::vector<SymmetricTensor<2, 2>> strain(face_quadrature.size());
+      const double                       scale = sub.law().energy_norm_scale();
+      for (const auto &cell : sub.dof_handler().active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (on_sigma(cell->face(f)))
+            {
+              const double sum = face_residual(
+                sub, s, interface, w, mu, cell, f, fe_face, strain);
+              double term = cell->face(f)->diameter() / 24. * sum;
+              // Layer 1 on the crack: the complementarity of the segments
+              // of the mu_1 mesh under the face, by overlap.
+              if (Layout::layer(s) == Layer::first &&
+                  interface.curve().crack().contains(
+                    interface.curve().parameter(cell->face(f)->center())))
+                add_crack_complementarity(interface,
+                                          contact,
+                                          cell->face(f),
+                                          contact_weight,
+                                          scale,
+                                          term);
+              eta2[cell->active_cell_index()] += term;
+            }
+    }
+
+
+    /// The squared indicators of subproblem @p s, by active cell: Kelly's,
+    /// and with @p interface_terms the Sigma terms.
+    void
+    squared_indicators(const ElasticSubproblem           &sub,
+                       const unsigned int                 s,
+                       const Interface                   &interface,
+                       const Vector<double>              &w,
+                       const BlockVector<double>         &mu,
+                       const std::vector<ContactSegment> &contact,
+                       const bool                         interface_terms,
+                       const double                       contact_weight,
+                       Vector<double>                    &eta2)
+    {
+      const auto &tria = sub.dof_handler().get_triangulation();
+      eta2.reinit(tria.n_active_cells());
+
+      Vector<float> kelly(tria.n_active_cells());
+      const auto    face_quadrature =
+        ReferenceCells::Line.get_gauss_type_quadrature<1>(sub.fe().degree + 1);
+      KellyErrorEstimator<2>::estimate(
+        sub.mapping(), sub.dof_handler(), face_quadrature, {}, w, kelly);
+      for (unsigned int i = 0; i < kelly.size(); ++i)
+        eta2[i] = double(kelly[i]) * kelly[i];
+      if (!interface_terms)
+        return;
+      add_sigma_terms(sub,
+                      s,
+                      interface,
+                      w,
+                      mu,
+                      contact,
+                      contact_weight,
+                      face_quadrature,
+                      eta2);
+    }
+
+
+    /// The indicators of each subdomain: the squared indicators of its
+    /// subproblems, sent to all processes and summed in the order of the
+    /// subproblems, square root times @p S; their energies are added to
+    /// @p energy_estimate.
+    std::array<Vector<double>, Layout::n_subdomains>
+    subdomain_indicators(
+      const PerSubproblem<const ElasticSubproblem *> &subproblems,
+      PerSubproblem<Vector<double>>                  &squared,
+      const double                                    S,
+      double                                         &energy_estimate)
+    {
+      std::array<Vector<double>, Layout::n_subdomains> eta;
+      for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+        {
+          Vector<double> sum;
+          for (const unsigned int s : {Layout::index(Layer::first, sd),
+                                       Layout::index(Layer::second, sd)})
+            if (subproblems[s] != nullptr)
+              {
+                if (!subproblems[s]->owned())
+                  squared[s].reinit(subproblems[s]
+                                      ->dof_handler()
+                                      .get_triangulation()
+                                      .n_active_cells());
+                subproblems[s]->processes().share(s, squared[s]);
+                energy_estimate += subproblems[s]->law().energy_norm_scale() *
+                                   squared[s].l1_norm();
+                if (sum.size() == 0)
+                  sum = squared[s];
+                else
+                  sum += squared[s];
+              }
+          auto &eta_sd = eta[static_cast<unsigned int>(sd)];
+          eta_sd.reinit(sum.size());
+          for (unsigned int i = 0; i < sum.size(); ++i)
+            eta_sd[i] = std::sqrt(sum[i]) * S;
+        }
+      return eta;
+    }
+  } // namespace
+
+
+  std::array<Vector<double>, Layout::n_subdomains>
+  estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
+                 const Interface                                &interface,
+                 const Solutions                                &w_in,
+                 const BlockVector<double>                      &mu_in,
+                 const bool   interface_terms,
+                 const double contact_weight,
+                 double      *global_estimate)
+  {
+    // The problem is linear in the loads (and the constraints positively
+    // homogeneous): the indicators of the solution scaled by a power of
+    // two S are computed from the solution divided by S, exactly (the
+    // division is exact), in the range where Kelly's single precision
+    // indicators and the squares below cannot overflow or underflow, and
+    // multiplied by S at the end.
+    const double S = normalisation_scale(subproblems, w_in);
+    Solutions    w = w_in;
+    for (auto &v : w)
+      v /= S;
+    BlockVector<double> mu = mu_in;
+    mu /= S;
+
+    // The squared indicator of each subproblem, evaluated by its owner
+    // (the whole solution is needed) and sent to all processes, then
+    // summed per subdomain in the order of the subproblems.
+    PerSubproblem<Vector<double>>     squared;
+    const std::vector<ContactSegment> contact =
+      interface_terms ? contact_residual(interface, w, mu) :
+                        std::vector<ContactSegment>();
+    // The subproblems as parallel tasks (each writes its own squared[s]).
+    Tasks tasks;
+    for (const unsigned int s : Layout::subproblems)
+      if (subproblems[s] != nullptr && subproblems[s]->owned())
+        tasks.add([&, s]() {
+          squared_indicators(*subproblems[s],
+                             s,
+                             interface,
+                             w[s],
+                             mu,
+                             contact,
+                             interface_terms,
+                             contact_weight,
+                             squared[s]);
+        });
+    tasks.join_all();
+
+    double                                           energy_estimate = 0;
+    std::array<Vector<double>, Layout::n_subdomains> eta =
+      subdomain_indicators(subproblems, squared, S, energy_estimate);
+    if (global_estimate != nullptr)
+      *global_estimate = std::sqrt(energy_estimate) * S;
+    return eta;
+  }
+} // namespace bilayer

@@ -1,0 +1,532 @@
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <bilayer/core/boundary_ids.h>
+#include <bilayer/core/similarity_breaker.h>
+#include <bilayer/subproblem/subproblem.h>
+
+#include <cmath>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  ElasticSubproblem::ElasticSubproblem(const Layer             layer,
+                                       const Subdomain         subdomain,
+                                       const Triangulation<2> &triangulation,
+                                       const unsigned int      degree,
+                                       const LayerMaterial    &material,
+                                       const Distribution     &distribution)
+    : layer_(layer)
+    , subdomain_(subdomain)
+    , law_(make_elastic_law(material))
+    , distribution(distribution)
+    , dofs(triangulation)
+  {
+    if (triangulation.all_reference_cells_are_hyper_cube())
+      fe_system = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 2);
+    else
+      fe_system = std::make_unique<FESystem<2>>(FE_SimplexP<2>(degree), 2);
+    // Curved manifolds (circular boundaries or Sigma of a Gmsh scene): an
+    // isoparametric mapping for elements of degree >= 2.
+    bool curved = false;
+    for (const types::manifold_id id : triangulation.get_manifold_ids())
+      curved = curved || id != numbers::flat_manifold_id;
+    if (curved && degree >= 2 &&
+        triangulation.all_reference_cells_are_hyper_cube())
+      curved_mapping = std::make_unique<MappingQ<2>>(degree);
+  }
+
+
+  const Mapping<2> &
+  ElasticSubproblem::mapping() const
+  {
+    if (curved_mapping)
+      return *curved_mapping;
+    return fe_system->reference_cell().get_default_linear_mapping<2>();
+  }
+
+
+  std::string
+  ElasticSubproblem::name() const
+  {
+    return Layout::name(index());
+  }
+
+
+  namespace
+  {
+
+
+    /**
+     * The element matrix and the load of one cell: the tractions on its
+     * faces on Gamma_N and, with a VolumeLoad, the volume terms
+     * f . z + sigma(eps*) : eps(z).
+     */
+    class CellSystem
+    {
+    public:
+      CellSystem(const FiniteElement<2>                 &fe,
+                 const Mapping<2>                       &mapping,
+                 const ElasticLaw                       &law,
+                 const std::vector<bool>                &clamped,
+                 const std::vector<const Function<2> *> &traction,
+                 const VolumeLoad                       *volume)
+        : fe(fe)
+        , clamped(clamped)
+        , traction(traction)
+        , law(law)
+        , volume(volume)
+        , fe_values(
+            mapping,
+            fe,
+            fe.reference_cell().get_gauss_type_quadrature<2>(fe.degree + 1),
+            update_gradients | update_JxW_values |
+              (volume != nullptr ? update_values | update_quadrature_points :
+                                   update_default))
+        , fe_face_values(
+            mapping,
+            fe,
+            ReferenceCells::Line.get_gauss_type_quadrature<1>(fe.degree + 1),
+            update_values | update_quadrature_points | update_JxW_values)
+        , fresh(fe.reference_cell())
+        , eps(fe.n_dofs_per_cell())
+        , t(2)
+        , cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+        , cell_rhs(fe.n_dofs_per_cell())
+        , local_dofs(fe.n_dofs_per_cell())
+      {}
+
+      /// Compute cell_matrix, cell_rhs and local_dofs of @p cell.
+      void
+      compute(const DoFHandler<2>::active_cell_iterator &cell)
+      {
+        const unsigned int n = fe.n_dofs_per_cell();
+        cell_matrix          = 0;
+        cell_rhs             = 0;
+        fresh.apply(fe_values);
+        fe_values.reinit(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            for (unsigned int i = 0; i < n; ++i)
+              eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+            const double JxW = fe_values.JxW(q);
+            law.add_stiffness(eps, JxW, cell_matrix);
+            if (volume != nullptr)
+              {
+                const Point<2>             &x = fe_values.quadrature_point(q);
+                const Tensor<1, 2>          f = volume->body_force(x);
+                const SymmetricTensor<2, 2> s =
+                  law.stress(volume->eigenstrain(x));
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_rhs(i) +=
+                    (fe_values[displacement].value(i, q) * f + s * eps[i]) *
+                    JxW;
+              }
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            cell_matrix(i, j) = cell_matrix(j, i);
+
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() < clamped.size() &&
+              !clamped[cell->face(f)->boundary_id()])
+            {
+              const Function<2> &load = *traction[cell->face(f)->boundary_id()];
+              fe_face_values.reinit(cell, f);
+              for (const unsigned int q :
+                   fe_face_values.quadrature_point_indices())
+                {
+                  load.vector_value(fe_face_values.quadrature_point(q), t);
+                  const Tensor<1, 2> traction_q({t[0], t[1]});
+                  for (unsigned int i = 0; i < n; ++i)
+                    cell_rhs(i) += fe_face_values[displacement].value(i, q) *
+                                   traction_q * fe_face_values.JxW(q);
+                }
+            }
+        cell->get_dof_indices(local_dofs);
+      }
+
+    private:
+      const FiniteElement<2>                 &fe;
+      const std::vector<bool>                 clamped;
+      const std::vector<const Function<2> *> &traction;
+      const ElasticLaw                       &law;
+      const VolumeLoad *const                 volume;
+      FEValues<2>                             fe_values;
+      FEFaceValues<2>                         fe_face_values;
+      const SimilarityBreaker                 fresh;
+      const FEValuesExtractors::Vector        displacement{0};
+      std::vector<SymmetricTensor<2, 2>>      eps;
+      Vector<double>                          t;
+
+    public:
+      FullMatrix<double>                   cell_matrix;
+      Vector<double>                       cell_rhs;
+      std::vector<types::global_dof_index> local_dofs;
+    };
+  } // namespace
+
+
+  void
+  ElasticSubproblem::setup(const std::vector<bool>                &clamped,
+                           const Function<2>                      &prescribed,
+                           const std::vector<const Function<2> *> &traction,
+                           const std::string &shared_solver_type,
+                           const bool         condense_on_sigma,
+                           const VolumeLoad  *volume)
+  {
+    shared_solver = shared_solver_type;
+    shared.reset();
+    Timer timer;
+    dofs.distribute_dofs(*fe_system);
+
+    constraints.clear();
+    homogeneous_constraints.clear();
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    DoFTools::make_hanging_node_constraints(dofs, homogeneous_constraints);
+    const Functions::ZeroFunction<2> zero(2);
+    for (unsigned int side = 0; side < clamped.size(); ++side)
+      if (clamped[side])
+        {
+          VectorTools::interpolate_boundary_values(
+            mapping(), dofs, side, prescribed, constraints);
+          VectorTools::interpolate_boundary_values(
+            mapping(), dofs, side, zero, homogeneous_constraints);
+        }
+    constraints.close();
+    homogeneous_constraints.close();
+
+    const IndexSet on_sigma =
+      DoFTools::extract_boundary_dofs(dofs,
+                                      ComponentMask(),
+                                      {BoundaryIds::sigma});
+    trace_dofs_.assign(on_sigma.begin(), on_sigma.end());
+    if (!owned())
+      {
+        assembly_seconds = timer.wall_time();
+        return;
+      }
+    if (distribution.group_size(index()) > 1)
+      shared = std::make_unique<DistributedSystem>(
+        dofs, constraints, distribution.group_communicator(), shared_solver);
+    else
+      {
+        DynamicSparsityPattern dsp(dofs.n_dofs());
+        DoFTools::make_sparsity_pattern(dofs, dsp, constraints, true);
+        sparsity.copy_from(dsp);
+        system_matrix.reinit(sparsity);
+        stiffness.reinit(sparsity);
+        system_rhs.reinit(dofs.n_dofs());
+        load_vector.reinit(dofs.n_dofs());
+      }
+    assemble(clamped, traction, volume);
+    assembly_seconds = timer.wall_time();
+
+    timer.restart();
+    if (shared)
+      shared->finish_assembly();
+    else
+      {
+        // Moduli and cell sizes whose products leave the range of double
+        // (E = 1e308, coordinates of 1e+-300) show here, not as a
+        // divergence of the outer solver.
+        const std::string layer_entry =
+          "Materials/Layer " +
+          std::string(layer() == Layer::first ? "1" : "2") + "/Young's modulus";
+        // Row sums, not only entries: the factorisation adds them up.
+        AssertThrow(std::isfinite(system_matrix.linfty_norm()),
+                    ExcMessage(
+                      "the stiffness matrix of subproblem " + name() +
+                      " has entries that are not finite: " + layer_entry +
+                      " and the cell sizes (Geometry) leave the "
+                      "range of double; state them in other units"));
+        AssertThrow(std::isfinite(system_rhs.linfty_norm()) &&
+                      std::isfinite(system_rhs.l1_norm()),
+                    ExcMessage("the load vector of subproblem " + name() +
+                               " has entries that are not finite: the "
+                               "tractions or prescribed displacements "
+                               "(Loads) and the side lengths (Geometry) "
+                               "leave the range of double; state them in "
+                               "other units"));
+        const std::string what = "the stiffness matrix of subproblem " + name();
+        const std::vector<unsigned int> last =
+          condense_on_sigma ? schur_dofs() : std::vector<unsigned int>();
+        if (last.empty())
+          factorisation.initialize(system_matrix, what);
+        else
+          {
+            AssertThrow(factorisation.try_initialize(system_matrix, last),
+                        ExcMessage("the Cholesky factorisation of " + what +
+                                   " failed: it is not positive definite"));
+            if (condensed())
+              {
+                // Where each Sigma dof sits in the Schur complement.
+                const std::vector<unsigned int> &order =
+                  factorisation.schur_complement()->indices();
+                std::vector<int> position(n_dofs(), -1);
+                for (unsigned int a = 0; a < order.size(); ++a)
+                  position[order[a]] = a;
+                sigma_positions.clear();
+                constrained_sigma_dofs.clear();
+                for (const auto i : trace_dofs_)
+                  if (!homogeneous_constraints.is_constrained(i))
+                    sigma_positions.emplace_back(i, position[i]);
+                  else
+                    {
+                      ConstrainedSigmaDof dof{i, {}};
+                      for (const auto &[j, weight] :
+                           *homogeneous_constraints.get_constraint_entries(i))
+                        dof.entries.emplace_back(position[j], weight);
+                      constrained_sigma_dofs.push_back(std::move(dof));
+                    }
+                solve(Vector<double>(), particular);
+              }
+          }
+      }
+    factorisation_seconds = timer.wall_time();
+    ++factorisations;
+  }
+
+
+  std::vector<unsigned int>
+  ElasticSubproblem::schur_dofs() const
+  {
+    std::vector<unsigned int> last;
+    std::vector<bool>         on_sigma(n_dofs(), false);
+    for (const auto i : trace_dofs_)
+      if (!homogeneous_constraints.is_constrained(i))
+        {
+          last.push_back(i);
+          on_sigma[i] = true;
+        }
+    for (const auto i : trace_dofs_)
+      if (homogeneous_constraints.is_constrained(i))
+        for (const auto &entry :
+             *homogeneous_constraints.get_constraint_entries(i))
+          if (!on_sigma[entry.first])
+            return {};
+    return last;
+  }
+
+
+  void
+  ElasticSubproblem::solve_on_sigma(const Vector<double> &coupling,
+                                    Vector<double>       &solution,
+                                    const bool            homogeneous) const
+  {
+    Assert(condensed(), ExcInternalError());
+    const SchurComplementFactor &schur = *factorisation.schur_complement();
+    // The condensed load on the unconstrained Sigma dofs ...
+    std::vector<double> y(schur.size(), 0.);
+    if (coupling.size() > 0)
+      {
+        for (const auto &[i, a] : sigma_positions)
+          y[a] += coupling(i);
+        for (const auto &dof : constrained_sigma_dofs)
+          for (const auto &[a, weight] : dof.entries)
+            y[a] += weight * coupling(dof.dof);
+      }
+    // ... the Sigma part of K^{-1} of it ...
+    schur.solve(y);
+    // ... added to the solution without coupling, and distributed to the
+    // constrained Sigma dofs.
+    if (homogeneous)
+      solution.reinit(n_dofs());
+    else
+      solution = particular;
+    for (const auto &[i, a] : sigma_positions)
+      solution(i) += y[a];
+    for (const auto &dof : constrained_sigma_dofs)
+      for (const auto &[a, weight] : dof.entries)
+        solution(dof.dof) += weight * y[a];
+  }
+
+
+  void
+  ElasticSubproblem::apply_schur_complement(const Vector<double> &x,
+                                            Vector<double>       &y) const
+  {
+    Assert(condensed(), ExcInternalError());
+    const SchurComplementFactor &schur = *factorisation.schur_complement();
+    std::vector<double>          values(schur.size());
+    for (const auto &[i, a] : sigma_positions)
+      values[a] = x(i);
+    schur.multiply(values);
+    y.reinit(n_dofs());
+    for (const auto &[i, a] : sigma_positions)
+      y(i) = values[a];
+  }
+
+
+  void
+  ElasticSubproblem::assemble(const std::vector<bool>                &clamped,
+                              const std::vector<const Function<2> *> &traction,
+                              const VolumeLoad                       *volume)
+  {
+    CellSystem system(*fe_system, mapping(), *law_, clamped, traction, volume);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (shared == nullptr)
+        {
+          system.compute(cell);
+          constraints.distribute_local_to_global(system.cell_matrix,
+                                                 system.cell_rhs,
+                                                 system.local_dofs,
+                                                 system_matrix,
+                                                 system_rhs);
+          stiffness.add(system.local_dofs, system.cell_matrix);
+          load_vector.add(system.local_dofs, system.cell_rhs);
+        }
+      else if (shared->assembles(cell->active_cell_index()))
+        {
+          // The cells of this process's part of a shared subproblem.
+          system.compute(cell);
+          constraints.distribute_local_to_global(system.cell_matrix,
+                                                 system.cell_rhs,
+                                                 system.local_dofs,
+                                                 shared->matrix,
+                                                 shared->rhs);
+          shared->stiffness.add(system.local_dofs, system.cell_matrix);
+          shared->load.add(system.local_dofs, system.cell_rhs);
+        }
+  }
+
+
+  void
+  ElasticSubproblem::solve(const Vector<double> &coupling,
+                           Vector<double>       &solution) const
+  {
+    if (shared)
+      {
+        if (coupling.size() > 0)
+          solution = coupling;
+        else
+          solution.reinit(n_dofs());
+        homogeneous_constraints.condense(solution);
+        shared->solve(solution, true);
+      }
+    else
+      {
+        if (coupling.size() > 0)
+          {
+            solution = coupling;
+            homogeneous_constraints.condense(solution);
+            solution += system_rhs;
+          }
+        else
+          solution = system_rhs;
+        factorisation.solve(solution);
+      }
+    constraints.distribute(solution);
+  }
+
+
+  void
+  ElasticSubproblem::solve_homogeneous(const Vector<double> &coupling,
+                                       Vector<double>       &solution) const
+  {
+    solution = coupling;
+    homogeneous_constraints.condense(solution);
+    if (shared)
+      shared->solve(solution, false);
+    else
+      factorisation.solve(solution);
+    homogeneous_constraints.distribute(solution);
+  }
+
+
+  void
+  ElasticSubproblem::share_trace(Vector<double> &w) const
+  {
+    if (!distribution.parallel())
+      return;
+    if (w.size() != n_dofs())
+      w.reinit(n_dofs());
+    distribution.share(index(), w, &trace_dofs_);
+  }
+
+
+  std::unique_ptr<DistributedSystem>
+  ElasticSubproblem::factorise_in_group(
+    const AffineConstraints<double> &other_constraints) const
+  {
+    Assert(shared != nullptr, ExcInternalError());
+    auto system =
+      std::make_unique<DistributedSystem>(dofs,
+                                          other_constraints,
+                                          distribution.group_communicator(),
+                                          shared_solver,
+                                          shared.get());
+    // No boundary part: no tractions.
+    const std::vector<bool>                no_loads;
+    const std::vector<const Function<2> *> none;
+    CellSystem                             system_of_cell(
+      *fe_system, mapping(), *law_, no_loads, none, nullptr);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (system->assembles(cell->active_cell_index()))
+        {
+          system_of_cell.compute(cell);
+          other_constraints.distribute_local_to_global(
+            system_of_cell.cell_matrix,
+            system_of_cell.local_dofs,
+            system->matrix);
+        }
+    system->finish_assembly();
+    return system;
+  }
+
+
+  namespace
+  {
+    /// x . y summed in index order: the same bits for any number of
+    /// threads (deal.II's parallel reductions group the sum by thread).
+    double
+    ordered_dot(const Vector<double> &x, const Vector<double> &y)
+    {
+      double sum = 0;
+      for (unsigned int i = 0; i < x.size(); ++i)
+        sum += x(i) * y(i);
+      return sum;
+    }
+  } // namespace
+
+
+  void
+  ElasticSubproblem::multiply_stiffness(Vector<double>       &y,
+                                        const Vector<double> &x) const
+  {
+    if (shared)
+      shared->vmult_stiffness(y, x);
+    else
+      stiffness.vmult(y, x);
+  }
+
+
+  double
+  ElasticSubproblem::energy_norm_squared(const Vector<double> &w) const
+  {
+    if (shared)
+      return shared->energy_norm_squared(w);
+    Vector<double> aw(w.size());
+    stiffness.vmult(aw, w); // row by row: independent of the threads
+    return ordered_dot(aw, w);
+  }
+
+
+  double
+  ElasticSubproblem::energy(const Vector<double> &w) const
+  {
+    return 0.5 * energy_norm_squared(w) -
+           (shared ? shared->load_product(w) : ordered_dot(load_vector, w));
+  }
+} // namespace bilayer
