@@ -46,30 +46,34 @@ namespace bilayer
     {
       lower.reinit(sizes);
       upper.reinit(sizes);
+      kinds.assign(lower.size(), Kind::none);
     }
 
     /// Component @p i of block @p b: a gluing constraint, bound @p p.
     void
     set_glued(const unsigned int b, const unsigned int i, const double p)
     {
-      lower.block(b)(i) = -p;
-      upper.block(b)(i) = p;
+      lower.block(b)(i)   = -p;
+      upper.block(b)(i)   = p;
+      kinds[global(b, i)] = Kind::glued;
     }
 
     /// Component @p i of block @p b: a contact constraint, bound @p p.
     void
     set_contact(const unsigned int b, const unsigned int i, const double p)
     {
-      lower.block(b)(i) = 0;
-      upper.block(b)(i) = p;
+      lower.block(b)(i)   = 0;
+      upper.block(b)(i)   = p;
+      kinds[global(b, i)] = Kind::contact;
     }
 
     /// Component @p i of block @p b: no multiplier.
     void
     set_none(const unsigned int b, const unsigned int i)
     {
-      lower.block(b)(i) = 0;
-      upper.block(b)(i) = 0;
+      lower.block(b)(i)   = 0;
+      upper.block(b)(i)   = 0;
+      kinds[global(b, i)] = Kind::none;
     }
 
     /// The number of components.
@@ -90,23 +94,21 @@ namespace bilayer
     Kind
     kind(const unsigned int i) const
     {
-      return !(lower(i) < upper(i)) ? Kind::none :
-             lower(i) == 0.         ? Kind::contact :
-                                      Kind::glued;
+      return kinds[i];
     }
 
     /// Whether component @p i carries a multiplier.
     bool
     free(const unsigned int i) const
     {
-      return lower(i) < upper(i);
+      return kinds[i] != Kind::none;
     }
 
     /// Whether component @p i of block @p b carries a multiplier.
     bool
     free(const unsigned int b, const unsigned int i) const
     {
-      return lower.block(b)(i) < upper.block(b)(i);
+      return free(global(b, i));
     }
 
     /// Whether component @p i is a contact constraint.
@@ -120,7 +122,7 @@ namespace bilayer
     bool
     contact(const unsigned int b, const unsigned int i) const
     {
-      return lower.block(b)(i) == 0. && upper.block(b)(i) > 0.;
+      return contact(global(b, i));
     }
 
     /// The projection onto K.
@@ -167,9 +169,15 @@ namespace bilayer
     double
     violation(const unsigned int i, const double g_i) const
     {
-      if (!free(i))
-        return 0.;
-      return lower(i) == 0. ? std::max(g_i, 0.) : std::abs(g_i);
+      switch (kinds[i])
+        {
+          case Kind::glued:
+            return std::abs(g_i);
+          case Kind::contact:
+            return std::max(g_i, 0.);
+          default:
+            return 0.;
+        }
     }
 
     /**
@@ -212,9 +220,19 @@ namespace bilayer
     }
 
   private:
+    /// The global index of component @p i of block @p b.
+    dealii::types::global_dof_index
+    global(const unsigned int b, const unsigned int i) const
+    {
+      return lower.get_block_indices().local_to_global(b, i);
+    }
+
     /// The box of each component: [0, 0] none, [-p, p] glued, [0, p]
-    /// contact.
+    /// contact (p > 0).
     dealii::BlockVector<double> lower, upper;
+    /// What each component constrains: set with its box, never inferred
+    /// from it.
+    std::vector<Kind> kinds;
   };
 } // namespace bilayer
 
