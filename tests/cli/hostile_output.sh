@@ -143,7 +143,7 @@ staged() { # DIR.partial: wait until cycle 2's records are staged
   done
   return 1
 }
-midrun() { # NAME ACTION FRAGMENT: a run into out; ACTION (shell code) once cycle 2 is staged
+midrun() { # NAME ACTION FRAGMENT: a run into out; ACTION (shell code) once cycle 2 is staged; FRAGMENT an extended regular expression
   local name=$1 action=$2 fragment=$3
   local before
   before=$(digest out)
@@ -155,15 +155,18 @@ midrun() { # NAME ACTION FRAGMENT: a run into out; ACTION (shell code) once cycl
   local why=""
   [[ $rc -eq 1 || $rc -eq 2 ]] || why="exit status $rc"
   [[ $(wc -l < mid.err) -eq 1 ]] || why="$why; $(wc -l < mid.err) lines: $(head -3 mid.err)"
-  grep -qF -- "$fragment" mid.err || why="$why; '$fragment' not named: $(cat mid.err)"
+  grep -qE -- "$fragment" mid.err || why="$why; '$fragment' not named: $(cat mid.err)"
   [[ "$(digest out)" == "$before" ]] || why="$why; out changed"
   [[ ! -e out.lock ]] || why="$why; lock left"
   verdict "$name" "$why"
 }
 midrun "staging removed mid-run: exit 1, nothing published" "rm -rf out.partial" "was removed during the run"
 [[ ! -e out.partial ]] && verdict "  and no staging re-created" "" || verdict "  and no staging re-created" "out.partial exists"
+# (Between rm and mkdir the staging does not exist: a run that looks then
+# finds it removed, also a refusal.)
 midrun "staging replaced mid-run: refused, the user's directory kept" \
-  "rm -rf out.partial && mkdir out.partial && echo mine > out.partial/mine.txt" "was replaced during the run"
+  "rm -rf out.partial && mkdir out.partial && echo mine > out.partial/mine.txt" \
+  "was (replaced|removed) during the run"
 [[ $(cat out.partial/mine.txt 2> /dev/null) == mine && $(ls -A out.partial | wc -l) -eq 1 ]] &&
   verdict "  and the user's out.partial untouched" "" || verdict "  and the user's out.partial untouched" "$(ls -A out.partial)"
 rm -rf out.partial
