@@ -60,32 +60,16 @@ namespace bilayer
       return std::make_pair(centre, radius);
     }
 
-    std::string
-    at(const Point<2> &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ")";
-      return s.str();
-    }
-
-    using Edge = std::pair<unsigned int, unsigned int>;
-
-    Edge
-    edge(unsigned int a, unsigned int b)
-    {
-      return a < b ? Edge(a, b) : Edge(b, a);
-    }
-
     /// The edges of the cells of one physical surface with the number of
     /// cells that use them.
-    std::map<Edge, unsigned int>
+    std::map<GmshEdge, unsigned int>
     cell_edges(const GmshMesh &mesh, const int surface)
     {
-      std::map<Edge, unsigned int> edges;
+      std::map<GmshEdge, unsigned int> edges;
       for (const auto &e : mesh.elements)
         if ((e.type == 2 || e.type == 3) && e.physical == surface)
           for (unsigned int k = 0; k < e.nodes.size(); ++k)
-            ++edges[edge(e.nodes[k], e.nodes[(k + 1) % e.nodes.size()])];
+            ++edges[gmsh_edge(e.nodes[k], e.nodes[(k + 1) % e.nodes.size()])];
       return edges;
     }
   } // namespace
@@ -151,7 +135,7 @@ namespace bilayer
         Point<2> centre;
         for (const unsigned int n : e.nodes)
           centre += g.nodes[n] / double(e.nodes.size());
-        return at(centre);
+        return point_text(centre);
       };
       const auto group = [&](const GmshMesh::Element &e) {
         const auto &names = e.type == 1 ? g.curve_names : g.surface_names;
@@ -214,12 +198,12 @@ namespace bilayer
 
     /// The edges of Sigma and the crack, checked to be the edges shared by
     /// the cells of the two surfaces (@p minus, @p plus).
-    std::map<Edge, const GmshMesh::Element *>
-    shared_edges(const GmshMesh                     &g,
-                 const GmshGroups                   &groups,
-                 const std::map<Edge, unsigned int> &minus,
-                 const std::map<Edge, unsigned int> &plus,
-                 const std::string                  &where)
+    std::map<GmshEdge, const GmshMesh::Element *>
+    shared_edges(const GmshMesh                         &g,
+                 const GmshGroups                       &groups,
+                 const std::map<GmshEdge, unsigned int> &minus,
+                 const std::map<GmshEdge, unsigned int> &plus,
+                 const std::string                      &where)
     {
       const int sigma = groups.sigma, crack = groups.crack;
       // Sigma and the crack are the edges the two surfaces share, and
@@ -233,46 +217,46 @@ namespace bilayer
                                  "' has no triangles or quadrilaterals"));
           for (const auto &[e, n] : *edges)
             AssertThrow(n <= 2,
-                        ExcMessage(
-                          where + ": more than two cells of '" + name +
-                          "' share the edge at " +
-                          at(0.5 * (g.nodes[e.first] + g.nodes[e.second])) +
-                          " (overlapping cells)"));
+                        ExcMessage(where + ": more than two cells of '" + name +
+                                   "' share the edge at " +
+                                   point_text(0.5 * (g.nodes[e.first] +
+                                                     g.nodes[e.second])) +
+                                   " (overlapping cells)"));
         }
-      std::map<Edge, const GmshMesh::Element *> on_sigma;
+      std::map<GmshEdge, const GmshMesh::Element *> on_sigma;
       for (const auto &e : g.elements)
         if (e.type == 1 && (e.physical == sigma || e.physical == crack))
-          on_sigma[edge(e.nodes[0], e.nodes[1])] = &e;
+          on_sigma[gmsh_edge(e.nodes[0], e.nodes[1])] = &e;
       for (const auto &[e, element] : on_sigma)
         {
           const auto m = minus.find(e), p = plus.find(e);
-          AssertThrow(m != minus.end() && p != plus.end() && m->second == 1 &&
-                        p->second == 1,
-                      ExcMessage(
-                        where + ": the '" +
-                        (element->physical == sigma ? "Sigma" : "crack") +
-                        "' edge at " +
-                        at(0.5 * (g.nodes[e.first] + g.nodes[e.second])) +
-                        " is not a boundary edge of both Omega- and "
-                        "Omega+: Sigma must separate the two "
-                        "subdomains (curves shared by both surfaces)"));
+          AssertThrow(
+            m != minus.end() && p != plus.end() && m->second == 1 &&
+              p->second == 1,
+            ExcMessage(
+              where + ": the '" +
+              (element->physical == sigma ? "Sigma" : "crack") + "' edge at " +
+              point_text(0.5 * (g.nodes[e.first] + g.nodes[e.second])) +
+              " is not a boundary edge of both Omega- and "
+              "Omega+: Sigma must separate the two "
+              "subdomains (curves shared by both surfaces)"));
         }
       for (const auto &[e, n] : minus)
         AssertThrow(plus.count(e) == 0 || on_sigma.count(e) == 1,
                     ExcMessage(
                       where + ": Omega- and Omega+ share the edge at " +
-                      at(0.5 * (g.nodes[e.first] + g.nodes[e.second])) +
+                      point_text(0.5 * (g.nodes[e.first] + g.nodes[e.second])) +
                       ", which is in neither 'Sigma' nor 'crack'"));
       return on_sigma;
     }
 
 
     void
-    check_boundary_parts(const GmshMesh                     &g,
-                         const GmshGroups                   &groups,
-                         const std::map<Edge, unsigned int> &minus,
-                         const std::map<Edge, unsigned int> &plus,
-                         const std::string                  &where)
+    check_boundary_parts(const GmshMesh                         &g,
+                         const GmshGroups                       &groups,
+                         const std::map<GmshEdge, unsigned int> &minus,
+                         const std::map<GmshEdge, unsigned int> &plus,
+                         const std::string                      &where)
     {
       const int sigma = groups.sigma, crack = groups.crack;
       // The named boundary parts lie on the outer boundary: each edge is an
@@ -281,7 +265,7 @@ namespace bilayer
         if (e.type == 1 && e.physical != sigma && e.physical != crack &&
             g.curve_names.count(e.physical) > 0)
           {
-            const Edge         k = edge(e.nodes[0], e.nodes[1]);
+            const GmshEdge     k = gmsh_edge(e.nodes[0], e.nodes[1]);
             const auto         m = minus.find(k), p = plus.find(k);
             const unsigned int cells = (m == minus.end() ? 0 : m->second) +
                                        (p == plus.end() ? 0 : p->second);
@@ -289,7 +273,8 @@ namespace bilayer
                         ExcMessage(
                           where + ": the '" + g.curve_names.at(e.physical) +
                           "' edge at " +
-                          at(0.5 * (g.nodes[k.first] + g.nodes[k.second])) +
+                          point_text(0.5 *
+                                     (g.nodes[k.first] + g.nodes[k.second])) +
                           " (Gmsh curve " + std::to_string(e.entity) +
                           ") is an edge of " + std::to_string(cells) +
                           " cells, not of the outer boundary: a boundary "
@@ -300,15 +285,16 @@ namespace bilayer
 
 
     void
-    check_conforming(const GmshMesh                                  &g,
-                     const std::map<Edge, unsigned int>              &minus,
-                     const std::map<Edge, unsigned int>              &plus,
-                     const std::map<Edge, const GmshMesh::Element *> &on_sigma,
-                     const std::string                               &where)
+    check_conforming(
+      const GmshMesh                                      &g,
+      const std::map<GmshEdge, unsigned int>              &minus,
+      const std::map<GmshEdge, unsigned int>              &plus,
+      const std::map<GmshEdge, const GmshMesh::Element *> &on_sigma,
+      const std::string                                   &where)
     {
       // Non-conforming meshes: a boundary edge along another boundary edge
       // (a hanging node, or cells that do not share their nodes).
-      std::vector<Edge> boundary;
+      std::vector<GmshEdge> boundary;
       for (const auto *edges : {&minus, &plus})
         for (const auto &[e, n] : *edges)
           if (n == 1 && on_sigma.count(e) == 0)
@@ -331,7 +317,7 @@ namespace bilayer
                 const double       d = (a + l * t).distance(mid);
                 AssertThrow(!(l > 1e-8 && l < 1 - 1e-8 && d < 1e-8 * size),
                             ExcMessage(where + ": the boundary edge at " +
-                                       at(mid) +
+                                       point_text(mid) +
                                        " lies along another edge: the mesh is "
                                        "not conforming (a hanging node, or "
                                        "cells that do not share their nodes)"));
@@ -350,9 +336,9 @@ namespace bilayer
 
 
     SigmaChain
-    sigma_chain(const GmshMesh                                  &g,
-                const std::map<Edge, const GmshMesh::Element *> &on_sigma,
-                const std::string                               &where)
+    sigma_chain(const GmshMesh                                      &g,
+                const std::map<GmshEdge, const GmshMesh::Element *> &on_sigma,
+                const std::string                                   &where)
     {
       // Sigma as a chain: walk from one end through the Sigma and crack
       // edges.
@@ -365,7 +351,7 @@ namespace bilayer
         {
           AssertThrow(elements.size() <= 2,
                       ExcMessage(where + ": Sigma and the crack branch at " +
-                                 at(g.nodes[n]) +
+                                 point_text(g.nodes[n]) +
                                  "; they must form one open curve"));
           if (elements.size() == 1)
             ends.push_back(n);
@@ -484,8 +470,8 @@ namespace bilayer
               ++j;
             AssertThrow(i > 0 && j < chain.size(),
                         ExcMessage(where + ": the crack piece from " +
-                                   at(g.nodes[nodes[i]]) + " to " +
-                                   at(g.nodes[nodes[j]]) +
+                                   point_text(g.nodes[nodes[i]]) + " to " +
+                                   point_text(g.nodes[nodes[j]]) +
                                    " reaches an end of Sigma: a crack lies "
                                    "inside Sigma, its tips glued"));
             cracks.push_back({curve.parameter(g.nodes[nodes[i]]),
@@ -496,13 +482,13 @@ namespace bilayer
 
 
     std::array<std::array<bool, 2>, 2>
-    clamped_ends(const GmshMesh                     &g,
-                 const GmshGroups                   &groups,
-                 const std::vector<std::string>     &part_names,
-                 const std::vector<bool>            &clamped,
-                 const std::map<Edge, unsigned int> &minus,
-                 const std::map<Edge, unsigned int> &plus,
-                 const SigmaChain                   &sigma_chain)
+    clamped_ends(const GmshMesh                         &g,
+                 const GmshGroups                       &groups,
+                 const std::vector<std::string>         &part_names,
+                 const std::vector<bool>                &clamped,
+                 const std::map<GmshEdge, unsigned int> &minus,
+                 const std::map<GmshEdge, unsigned int> &plus,
+                 const SigmaChain                       &sigma_chain)
     {
       const int   sigma = groups.sigma, crack = groups.crack;
       const auto &nodes = sigma_chain.nodes;
@@ -525,7 +511,7 @@ namespace bilayer
             if (clamped[part])
               for (unsigned int d = 0; d < 2; ++d)
                 if ((d == 0 ? minus : plus)
-                      .count(edge(e.nodes[0], e.nodes[1])) > 0)
+                      .count(gmsh_edge(e.nodes[0], e.nodes[1])) > 0)
                   for (unsigned int k = 0; k < 2; ++k)
                     for (const unsigned int n : e.nodes)
                       clamped_end[d][k] =

@@ -17,24 +17,6 @@ namespace bilayer
 
   namespace
   {
-    /// The point @p p as "(x, y)".
-    std::string
-    at(const Point<2> &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ")";
-      return s.str();
-    }
-
-    using Edge = std::pair<unsigned int, unsigned int>;
-
-    /// The edge between the nodes @p a and @p b, the smaller node first.
-    Edge
-    edge(unsigned int a, unsigned int b)
-    {
-      return a < b ? Edge(a, b) : Edge(b, a);
-    }
-
 
     /// The cells of one physical surface with vertices of their own.
     struct SurfaceCells
@@ -142,7 +124,7 @@ namespace bilayer
           AssertThrow(!degenerate_cell(std::abs(area) / 2, diameter),
                       ExcMessage(where + ": '" + name +
                                  "' has a degenerate cell at " +
-                                 at(vertices[cell.vertices[0]])));
+                                 point_text(vertices[cell.vertices[0]])));
           if (area < 0)
             std::swap(cell.vertices[1], cell.vertices[2]);
         }
@@ -177,10 +159,10 @@ namespace bilayer
                     const std::map<int, types::manifold_id> &manifold_of,
                     Triangulation<2>                        &tria)
     {
-      std::map<Edge, const GmshMesh::Element *> lines;
+      std::map<GmshEdge, const GmshMesh::Element *> lines;
       for (const auto &e : g.elements)
         if (e.type == 1)
-          lines[edge(e.nodes[0], e.nodes[1])] = &e;
+          lines[gmsh_edge(e.nodes[0], e.nodes[1])] = &e;
       const int sigma   = g.physical_tag(1, "Sigma"),
                 crack   = g.physical_tag(1, "crack");
       bool clamped_part = false;
@@ -189,8 +171,8 @@ namespace bilayer
           if (face->at_boundary())
             {
               const auto found =
-                lines.find(edge(node_of[face->vertex_index(0)],
-                                node_of[face->vertex_index(1)]));
+                lines.find(gmsh_edge(node_of[face->vertex_index(0)],
+                                     node_of[face->vertex_index(1)]));
               if (found == lines.end())
                 {
                   face->set_boundary_id(BoundaryIds::free);

@@ -181,4 +181,13 @@ namespace bilayer
         result.push_back(name);
     return result;
   }
+
+
+  std::string
+  point_text(const Point<2> &p)
+  {
+    std::ostringstream s;
+    s << "(" << p[0] << ", " << p[1] << ")";
+    return s.str();
+  }
 } // namespace bilayer

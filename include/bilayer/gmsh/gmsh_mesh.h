@@ -5,10 +5,26 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bilayer
 {
+  /// The point @p p as "(x, y)", as messages about a Gmsh scene show it.
+  std::string
+  point_text(const dealii::Point<2> &p);
+
+  /// A line between two Gmsh nodes, the smaller node first.
+  using GmshEdge = std::pair<unsigned int, unsigned int>;
+
+  /// The line between the nodes @p a and @p b.
+  inline GmshEdge
+  gmsh_edge(const unsigned int a, const unsigned int b)
+  {
+    return a < b ? GmshEdge(a, b) : GmshEdge(b, a);
+  }
+
+
   /**
    * A 2d mesh in Gmsh's format 2 (ASCII) with its physical groups, as read
    * from a .msh file or made by the gmsh command from a .geo file. Only the
