@@ -6,6 +6,7 @@
 #include <bilayer/parameters/expressions.h>
 
 #include <cctype>
+#include <cstring>
 #include <functional>
 #include <iostream>
 #include <set>
@@ -53,6 +54,47 @@ namespace bilayer
         if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'))
           return false;
       return true;
+    }
+
+
+    std::set<std::string>
+    names_in(const std::string &text)
+    {
+      const auto in = [&](const std::size_t i, const char *chars) {
+        return i < text.size() && text[i] != '\0' &&
+               std::strchr(chars, text[i]) != nullptr;
+      };
+      const char *digits = "0123456789";
+      const char *letters =
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_";
+      std::set<std::string> names;
+      std::size_t           i = 0;
+      while (i < text.size())
+        if (in(i, letters))
+          {
+            const std::size_t begin = i;
+            while (in(i, letters) || in(i, digits))
+              ++i;
+            names.insert(text.substr(begin, i - begin));
+          }
+        else if (in(i, digits) || in(i, "."))
+          {
+            // A number with its exponent (1e-3, 2.5E+4): no name.
+            while (in(i, digits) || in(i, "."))
+              ++i;
+            const bool exponent =
+              in(i, "eE") &&
+              (in(i + 1, digits) || (in(i + 1, "+-") && in(i + 2, digits)));
+            if (exponent)
+              {
+                i += in(i + 1, "+-") ? 2 : 1;
+                while (in(i, digits))
+                  ++i;
+              }
+          }
+        else
+          ++i;
+      return names;
     }
 
 

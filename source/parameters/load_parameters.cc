@@ -15,6 +15,30 @@ namespace bilayer
   using namespace entries;
 
 
+  namespace
+  {
+    /**
+     * Why the layer @p l of the material @p m does not define one of the
+     * constants E, nu, mu, lambda of the load expressions.
+     */
+    std::string
+    absent_constant(const LayerMaterial &m, const unsigned int l)
+    {
+      const std::string layer = "Materials/" + layer_subsection(l);
+      const std::string n     = std::to_string(l + 1);
+      if (m.law == MaterialLaw::isotropic)
+        return "which is infinite for " + layer +
+               "/Poisson's ratio = 0.5 (plane stress): the loads cannot use "
+               "it";
+      return "a constant of isotropic layers only (E" + n + ", nu" + n +
+             ", mu" + n + ", lambda" + n + "), but " + layer + "/Law = " +
+             (m.law == MaterialLaw::orthotropic ? "orthotropic" :
+                                                  "anisotropic") +
+             ": write its value as a number";
+    }
+  } // namespace
+
+
   LoadParameters::LoadParameters()
   {
     for (auto &layer : traction)
@@ -33,8 +57,10 @@ namespace bilayer
       Patterns::Anything(),
       "Named constants for the expressions below, as 'name = expression; "
       "name = expression'. An expression may use E1, nu1, mu1, lambda1, E2, "
-      "nu2, mu2, lambda2 (the Lame constants of the layers, from Materials) "
-      "and the constants defined before it, e.g. 'c = 1e-3*mu1'.");
+      "nu2, mu2, lambda2 (Young's modulus, Poisson's ratio and the Lame "
+      "constants of isotropic layers, from Materials; not defined for "
+      "orthotropic and anisotropic layers) and the constants defined "
+      "before it, e.g. 'c = 1e-3*mu1'.");
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
@@ -65,17 +91,36 @@ namespace bilayer
   {
     parts = boundary_parts;
     constant_values.clear();
-    std::set<std::string> materials_constants;
+    // The material constants: E, nu, mu, lambda of each layer are reserved
+    // names; a layer whose law does not define one (orthotropic and
+    // anisotropic layers, lambda at nu = 0.5 in plane stress) leaves it
+    // out, and an expression that names it is refused (why_absent).
+    std::set<std::string>              materials_constants;
+    std::map<std::string, std::string> why_absent;
     for (unsigned int l = 0; l < 2; ++l)
       {
         const std::string n = std::to_string(l + 1);
-        for (const auto &[name, value] :
-             make_elastic_law(materials.layer[l])->load_constants())
+        const auto        given =
+          make_elastic_law(materials.layer[l])->load_constants();
+        for (const auto &[name, value] : given)
           {
             constant_values[name + n] = value;
             materials_constants.insert(name + n);
           }
+        for (const std::string name : {"E", "nu", "mu", "lambda"})
+          if (given.count(name) == 0)
+            {
+              materials_constants.insert(name + n);
+              why_absent[name + n] = absent_constant(materials.layer[l], l);
+            }
       }
+    const auto refuse_absent = [&](const std::string &entry,
+                                   const std::string &text) {
+      for (const std::string &name : expressions::names_in(text))
+        AssertThrow(why_absent.count(name) == 0,
+                    ExcMessage(entry + ": '" + text + "' uses " + name + ", " +
+                               why_absent.at(name)));
+    };
 
     prm.enter_subsection("Loads");
     constants = prm.get("Constants");
@@ -106,6 +151,7 @@ namespace bilayer
                                "material constants E1, nu1, mu1, lambda1, E2, "
                                "nu2, mu2, lambda2 and the functions of the "
                                "expressions): choose another name"));
+        refuse_absent("Loads/Constants", item);
         double     result = 0;
         const bool evaluated =
           expressions::evaluate_constant(value, constant_values, result);
@@ -122,9 +168,14 @@ namespace bilayer
       {
         prm.enter_subsection(layer_subsection(l));
         traction[l].assign(parts.size(), "0; 0");
+        const std::string where = "Loads/" + layer_subsection(l) + "/";
         for (unsigned int i = 0; i < parts.size(); ++i)
-          traction[l][i] = prm.get(parts.traction_entry(i));
+          {
+            traction[l][i] = prm.get(parts.traction_entry(i));
+            refuse_absent(where + parts.traction_entry(i), traction[l][i]);
+          }
         prescribed[l] = prm.get("Prescribed displacement");
+        refuse_absent(where + "Prescribed displacement", prescribed[l]);
         prm.leave_subsection();
       }
     prm.leave_subsection();

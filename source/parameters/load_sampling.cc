@@ -2,6 +2,7 @@
 #include <deal.II/base/point.h>
 
 #include <bilayer/parameters/scene_checks.h>
+#include <bilayer/physics/elastic_law.h>
 
 #include <cmath>
 #include <iomanip>
@@ -86,8 +87,13 @@ namespace bilayer
           // precision, with room for sums over millions of unknowns.
           const double D = std::max(geometry.x_max - geometry.x_min,
                                     geometry.y_max - geometry.y_min);
-          const double E =
-            materials.layer[static_cast<unsigned int>(layer)].youngs_modulus;
+          // (E of an isotropic layer; the energy-norm scale, the smallest
+          // stiffness, of the other laws.)
+          const LayerMaterial &material =
+            materials.layer[static_cast<unsigned int>(layer)];
+          const double E = material.law == MaterialLaw::isotropic ?
+                             material.youngs_modulus :
+                             make_elastic_law(material)->energy_norm_scale();
           // (In logarithms: the energy itself may overflow.)
           const double log_energy =
             geometry.clamped[s] ?

@@ -4,10 +4,158 @@
 #include <bilayer/parameters/material_parameters.h>
 #include <bilayer/parameters/parameter_entries.h>
 
+#include <cmath>
+
 namespace bilayer
 {
   using namespace dealii;
   using namespace entries;
+
+
+  namespace
+  {
+    /// The entries of one layer that an orthotropic law uses.
+    void
+    declare_orthotropic(ParameterHandler &prm, const LayerMaterial &defaults)
+    {
+      const OrthotropicConstants &o = defaults.orthotropic;
+      const auto                  modulus =
+        [&](const std::string &name, const double value, const char *what) {
+          prm.declare_entry(name,
+                            Patterns::Tools::to_string(value),
+                            Patterns::Double(0),
+                            std::string("Law = orthotropic: ") + what +
+                              " [stress, the unit of Young's modulus].");
+        };
+      modulus("E_1", o.E_1, "Young's modulus along the material axis 1");
+      modulus("E_2",
+              o.E_2,
+              "Young's modulus along the material axis 2 (in the plane, "
+              "perpendicular to axis 1)");
+      modulus("E_3",
+              o.E_3,
+              "Young's modulus along the material axis 3 = z (plane strain "
+              "only)");
+      const auto ratio =
+        [&](const std::string &name, const double value, const char *what) {
+          prm.declare_entry(name,
+                            Patterns::Tools::to_string(value),
+                            Patterns::Double(),
+                            std::string("Law = orthotropic: ") + what +
+                              " [-]; nu_ji = nu_ij E_j / E_i. The constants "
+                              "must make the compliance positive definite.");
+        };
+      ratio("nu_12",
+            o.nu_12,
+            "Poisson's ratio nu_12, the contraction along axis 2 of a "
+            "tension along axis 1");
+      ratio("nu_13", o.nu_13, "Poisson's ratio nu_13 (plane strain only)");
+      ratio("nu_23", o.nu_23, "Poisson's ratio nu_23 (plane strain only)");
+      modulus("G_12", o.G_12, "the in-plane shear modulus G_12");
+      prm.declare_entry("Orientation angle",
+                        Patterns::Tools::to_string(defaults.orientation_angle),
+                        Patterns::Double(-360, 360),
+                        "Law = orthotropic: the angle from the x-axis to the "
+                        "material axis 1, counter-clockwise [degrees].");
+    }
+
+
+    /// The three numbers of an orthotropic refusal, as text.
+    std::string
+    numbers3(const double a, const double b, const double c)
+    {
+      return number(a) + ", " + number(b) + ", " + number(c);
+    }
+
+
+    /**
+     * Refuse orthotropic constants that do not make the compliance of
+     * @p state positive definite, naming the entries of @p where.
+     */
+    void
+    check_orthotropic(const OrthotropicConstants &o,
+                      const PlaneState            state,
+                      const std::string          &where)
+    {
+      const bool strain = state == PlaneState::plane_strain;
+      AssertThrow(
+        o.E_1 > 0 && o.E_2 > 0 && o.G_12 > 0 && (!strain || o.E_3 > 0),
+        ExcMessage(where + (strain ? "E_1, E_2, E_3 and " : "E_1, E_2 and ") +
+                   "G_12 must be > 0, got E_1, E_2, E_3, G_12 = " +
+                   numbers3(o.E_1, o.E_2, o.E_3) + ", " + number(o.G_12)));
+      // The leading minors of the compliance: |nu_ij| < sqrt(E_i / E_j)
+      // for each pair, and in plane strain the determinant.
+      const auto pair = [&](const double       nu,
+                            const double       Ei,
+                            const double       Ej,
+                            const std::string &ij) {
+        const double bound = std::sqrt(Ei / Ej);
+        AssertThrow(std::abs(nu) < bound,
+                    ExcMessage(where + "nu_" + ij + " must satisfy |nu_" + ij +
+                               "| < sqrt(E_" + ij.substr(0, 1) + "/E_" +
+                               ij.substr(1, 1) + ") = " + number(bound) +
+                               " (a positive definite compliance), got " +
+                               number(nu)));
+      };
+      pair(o.nu_12, o.E_1, o.E_2, "12");
+      if (!strain)
+        return;
+      pair(o.nu_13, o.E_1, o.E_3, "13");
+      pair(o.nu_23, o.E_2, o.E_3, "23");
+      const double nu_21 = o.nu_12 * o.E_2 / o.E_1;
+      const double nu_31 = o.nu_13 * o.E_3 / o.E_1;
+      const double nu_32 = o.nu_23 * o.E_3 / o.E_2;
+      const double delta = 1 - o.nu_12 * nu_21 - o.nu_23 * nu_32 -
+                           o.nu_13 * nu_31 - 2 * nu_21 * nu_32 * o.nu_13;
+      AssertThrow(delta > 0,
+                  ExcMessage(where +
+                             "nu_12, nu_13, nu_23 with E_1, E_2, E_3 must make "
+                             "the 3-D compliance positive definite: 1 - "
+                             "nu_12 nu_21 - nu_23 nu_32 - nu_13 nu_31 - 2 "
+                             "nu_21 nu_32 nu_13 > 0 (nu_ji = nu_ij E_j/E_i), "
+                             "got " +
+                             number(delta) + " for nu_12, nu_13, nu_23 = " +
+                             numbers3(o.nu_12, o.nu_13, o.nu_23)));
+    }
+
+
+    /**
+     * The entry Stiffness of the current subsection (@p section); @p check:
+     * refused unless positive definite.
+     */
+    std::array<double, 6>
+    parse_stiffness(const ParameterHandler &prm,
+                    const std::string      &section,
+                    const bool              check)
+    {
+      const std::string entry = section + "/Stiffness";
+      const auto        parts =
+        Utilities::split_string_list(prm.get("Stiffness"), ',');
+      AssertThrow(parts.size() == 6,
+                  ExcMessage(entry +
+                             " must be six numbers 'C11, C12, C16, C22, C26, "
+                             "C66', got '" +
+                             prm.get("Stiffness") + "'"));
+      std::array<double, 6> c;
+      for (unsigned int i = 0; i < 6; ++i)
+        c[i] = to_double(parts[i], entry);
+      if (!check)
+        return c;
+      // Sylvester's criterion on the leading minors of
+      // [[C11, C12, C16], [C12, C22, C26], [C16, C26, C66]].
+      const double minor2 = c[0] * c[3] - c[1] * c[1];
+      const double det    = c[0] * (c[3] * c[5] - c[4] * c[4]) -
+                         c[1] * (c[1] * c[5] - c[4] * c[2]) +
+                         c[2] * (c[1] * c[4] - c[3] * c[2]);
+      AssertThrow(c[0] > 0 && minor2 > 0 && det > 0,
+                  ExcMessage(entry +
+                             " must be symmetric positive definite (C11 > 0, "
+                             "C11 C22 - C12^2 > 0 and det [[C11, C12, C16], "
+                             "[C12, C22, C26], [C16, C26, C66]] > 0), got '" +
+                             prm.get("Stiffness") + "'"));
+      return c;
+    }
+  } // namespace
 
 
   void
@@ -26,18 +174,44 @@ namespace bilayer
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
+        prm.declare_entry(
+          "Law",
+          "isotropic",
+          Patterns::Selection("isotropic|orthotropic|anisotropic"),
+          "Hooke's law of the layer: isotropic (Young's modulus, Poisson's "
+          "ratio), orthotropic (E_1, E_2, E_3, nu_12, nu_13, nu_23, G_12 in "
+          "the material axes, turned by the orientation angle) or anisotropic "
+          "(the in-plane stiffness as given) [-].");
+        prm.declare_entry(
+          "Plane state",
+          "plane strain",
+          Patterns::Selection("plane strain|plane stress"),
+          "The out-of-plane assumption of isotropic and orthotropic layers: "
+          "plane strain (eps_zz = 0) or plane stress (sigma_zz = 0) [-]. An "
+          "anisotropic layer ignores it: its stiffness is the plane law itself "
+          "(sigma_zz not defined).");
         prm.declare_entry("Young's modulus",
                           Patterns::Tools::to_string(
                             defaults.layer[l].youngs_modulus),
                           Patterns::Double(0),
-                          "Young's modulus E of the layer [stress, e.g. GPa; "
-                          "tractions use the same unit].");
+                          "Law = isotropic: Young's modulus E of the layer "
+                          "[stress, e.g. GPa; tractions use the same unit].");
         prm.declare_entry("Poisson's ratio",
                           Patterns::Tools::to_string(
                             defaults.layer[l].poisson_ratio),
                           Patterns::Double(-1, 0.5),
-                          "Poisson's ratio nu of the layer, plane strain "
-                          "[-], in (-1, 0.5).");
+                          "Law = isotropic: Poisson's ratio nu of the layer "
+                          "[-], in (-1, 0.5) in plane strain, (-1, 0.5] in "
+                          "plane stress.");
+        declare_orthotropic(prm, defaults.layer[l]);
+        prm.declare_entry(
+          "Stiffness",
+          "250, 100, 0, 250, 0, 75",
+          Patterns::List(Patterns::Double(), 6, 6, ","),
+          "Law = anisotropic: C11, C12, C16, C22, C26, C66, the symmetric "
+          "positive definite matrix of (s11, s22, s12) against (e11, e22, "
+          "2 e12) in the x-y frame [stress, the unit of Young's modulus]; "
+          "the default is isotropic (lambda = 100, mu = 75).");
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -52,21 +226,44 @@ namespace bilayer
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
-        layer[l].youngs_modulus = get_double(prm,
-                                             "Materials/" + layer_subsection(l),
-                                             "Young's modulus");
-        layer[l].poisson_ratio  = get_double(prm,
-                                            "Materials/" + layer_subsection(l),
-                                            "Poisson's ratio");
-        const std::string where = "Materials/" + layer_subsection(l) + "/";
-        AssertThrow(layer[l].youngs_modulus > 0,
-                    ExcMessage(where + "Young's modulus must be > 0, got " +
-                               prm.get("Young's modulus")));
-        AssertThrow(layer[l].poisson_ratio > -1 && layer[l].poisson_ratio < 0.5,
-                    ExcMessage(where +
-                               "Poisson's ratio must lie in "
-                               "(-1, 0.5), got " +
-                               prm.get("Poisson's ratio")));
+        const std::string section = "Materials/" + layer_subsection(l);
+        const std::string where   = section + "/";
+        LayerMaterial    &m       = layer[l];
+        const std::string law     = prm.get("Law");
+        m.law            = law == "orthotropic" ? MaterialLaw::orthotropic :
+                           law == "anisotropic" ? MaterialLaw::anisotropic :
+                                                  MaterialLaw::isotropic;
+        m.plane_state    = prm.get("Plane state") == "plane stress" ?
+                             PlaneState::plane_stress :
+                             PlaneState::plane_strain;
+        m.youngs_modulus = get_double(prm, section, "Young's modulus");
+        m.poisson_ratio  = get_double(prm, section, "Poisson's ratio");
+        OrthotropicConstants &o = m.orthotropic;
+        o.E_1                   = get_double(prm, section, "E_1");
+        o.E_2                   = get_double(prm, section, "E_2");
+        o.E_3                   = get_double(prm, section, "E_3");
+        o.nu_12                 = get_double(prm, section, "nu_12");
+        o.nu_13                 = get_double(prm, section, "nu_13");
+        o.nu_23                 = get_double(prm, section, "nu_23");
+        o.G_12                  = get_double(prm, section, "G_12");
+        m.orientation_angle     = get_double(prm, section, "Orientation angle");
+        m.stiffness =
+          parse_stiffness(prm, section, m.law == MaterialLaw::anisotropic);
+        if (m.law == MaterialLaw::orthotropic)
+          check_orthotropic(o, m.plane_state, where);
+        if (m.law == MaterialLaw::isotropic)
+          {
+            const bool stress = m.plane_state == PlaneState::plane_stress;
+            AssertThrow(m.youngs_modulus > 0,
+                        ExcMessage(where + "Young's modulus must be > 0, got " +
+                                   prm.get("Young's modulus")));
+            AssertThrow(
+              m.poisson_ratio > -1 &&
+                (m.poisson_ratio < 0.5 || (stress && m.poisson_ratio == 0.5)),
+              ExcMessage(where + "Poisson's ratio must lie in " +
+                         (stress ? "(-1, 0.5] (plane stress)" : "(-1, 0.5)") +
+                         ", got " + prm.get("Poisson's ratio")));
+          }
         prm.leave_subsection();
       }
     prm.leave_subsection();

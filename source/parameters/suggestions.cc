@@ -127,13 +127,22 @@ namespace bilayer
     std::string lower;
     for (const char c : name)
       lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (const char *word :
-         {"friction",         "thermal",     "temperature", "expansion",
-          "plane stress",     "plane state", "orthotropic", "anisotropic",
-          "stiffness tensor", "toughness",   "critical",    "body force",
-          "gravity",          "density",     "cohesive",    "growth",
-          "debond",           "eigenstrain", "plasticity",  "time step",
-          "load step"})
+    for (const char *word : {"friction",
+                             "thermal",
+                             "temperature",
+                             "expansion",
+                             "toughness",
+                             "critical",
+                             "body force",
+                             "gravity",
+                             "density",
+                             "cohesive",
+                             "growth",
+                             "debond",
+                             "eigenstrain",
+                             "plasticity",
+                             "time step",
+                             "load step"})
       if (lower.find(word) != std::string::npos)
         return not_modelled;
     // A plausible misspelling: a few letters apart (at most a third of

@@ -77,6 +77,20 @@ namespace bilayer
   std::unique_ptr<const ElasticLaw>
   make_elastic_law(const LayerMaterial &material)
   {
+    switch (material.law)
+      {
+        case MaterialLaw::orthotropic:
+          return plane_laws::orthotropic(material.orthotropic,
+                                         material.plane_state,
+                                         material.orientation_angle);
+        case MaterialLaw::anisotropic:
+          return plane_laws::anisotropic(material.stiffness);
+        case MaterialLaw::isotropic:
+          break;
+      }
+    if (material.plane_state == PlaneState::plane_stress)
+      return plane_laws::isotropic_plane_stress(material.youngs_modulus,
+                                                material.poisson_ratio);
     return std::make_unique<IsotropicPlaneStrain>(material.youngs_modulus,
                                                   material.poisson_ratio);
   }

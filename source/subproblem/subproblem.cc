@@ -29,6 +29,10 @@ namespace bilayer
     : layer_(layer)
     , subdomain_(subdomain)
     , law_(make_elastic_law(material))
+    , moduli_entries_(
+        material.law == MaterialLaw::orthotropic ? "E_1, E_2, E_3, G_12" :
+        material.law == MaterialLaw::anisotropic ? "Stiffness" :
+                                                   "Young's modulus")
     , distribution(distribution)
     , dofs(triangulation)
   {
@@ -243,7 +247,8 @@ namespace bilayer
         // divergence of the outer solver.
         const std::string layer_entry =
           "Materials/Layer " +
-          std::string(layer() == Layer::first ? "1" : "2") + "/Young's modulus";
+          std::string(layer() == Layer::first ? "1" : "2") + "/" +
+          moduli_entries_;
         // Row sums, not only entries: the factorisation adds them up.
         AssertThrow(std::isfinite(system_matrix.linfty_norm()),
                     ExcMessage(

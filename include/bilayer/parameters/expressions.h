@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 
 namespace bilayer
@@ -24,6 +25,14 @@ namespace bilayer
     /// start with a digit.
     bool
     is_identifier(const std::string &name);
+
+    /**
+     * The names (identifiers) that the expression @p text uses: its
+     * variables, constants and functions, not the digits and exponents of
+     * its numbers (1e-3).
+     */
+    std::set<std::string>
+    names_in(const std::string &text);
 
     /// Variables and functions of the expressions (muparser and deal.II's
     /// additions), which a constant may not shadow.

@@ -2,8 +2,10 @@
 #define bilayer_elastic_law_h
 
 #include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -11,14 +13,82 @@
 
 namespace bilayer
 {
+  /// Materials/Layer k/Law: the kind of Hooke's law of a layer.
+  enum class MaterialLaw
+  {
+    /// Young's modulus and Poisson's ratio.
+    isotropic,
+    /// The 3-D orthotropic constants of the material axes 1, 2 (in the
+    /// plane, axis 1 at the orientation angle) and 3 (= z).
+    orthotropic,
+    /// The in-plane stiffness of the plane problem, given as it is.
+    anisotropic
+  };
+
+
+  /// Materials/Layer k/Plane state: what the plane problem assumes about z.
+  enum class PlaneState
+  {
+    /// eps_zz = 0, sigma_zz the stress that keeps it so.
+    plane_strain,
+    /// sigma_zz = 0 (a thin plate), eps_zz free.
+    plane_stress
+  };
+
+
   /**
-   * The entries of Materials/Layer k: the material of one layer (today
-   * isotropic: Young's modulus [stress] and Poisson's ratio).
+   * The 3-D orthotropic constants of a layer in its material axes 1, 2
+   * (in the plane) and 3 (= z): Young's moduli E_i [stress], Poisson's
+   * ratios nu_ij (the contraction along j of a tension along i: nu_ji =
+   * nu_ij E_j / E_i) [-] and the in-plane shear modulus G_12 [stress].
+   * Plane stress uses E_1, E_2, nu_12, G_12 alone. The defaults are the
+   * isotropic constants E = 200, nu = 0.28, G = E / (2 (1 + nu)).
+   */
+  struct OrthotropicConstants
+  {
+    double E_1   = 200.0;
+    double E_2   = 200.0;
+    double E_3   = 200.0;
+    double nu_12 = 0.28;
+    double nu_13 = 0.28;
+    double nu_23 = 0.28;
+    double G_12  = 78.125;
+  };
+
+
+  /**
+   * The entries of Materials/Layer k: the material of one layer. The law
+   * selects which entries count: isotropic: Young's modulus [stress] and
+   * Poisson's ratio; orthotropic: the OrthotropicConstants and the
+   * orientation angle; anisotropic: the stiffness. The plane state counts
+   * for isotropic and orthotropic layers (an anisotropic stiffness is the
+   * plane law itself).
    */
   struct LayerMaterial
   {
-    double youngs_modulus = 200.0;
-    double poisson_ratio  = 0.28;
+    /// An isotropic plane-strain layer of Young's modulus @p E and
+    /// Poisson's ratio @p nu (the other entries at their defaults).
+    LayerMaterial(const double E = 200.0, const double nu = 0.28)
+      : youngs_modulus(E)
+      , poisson_ratio(nu)
+    {}
+
+    double      youngs_modulus;
+    double      poisson_ratio;
+    MaterialLaw law         = MaterialLaw::isotropic;
+    PlaneState  plane_state = PlaneState::plane_strain;
+    /// Orthotropic layers: the constants in the material axes.
+    OrthotropicConstants orthotropic;
+    /// Orthotropic layers: the angle from the x-axis to the material axis 1,
+    /// counter-clockwise [degrees].
+    double orientation_angle = 0.0;
+    /**
+     * Anisotropic layers: C11, C12, C16, C22, C26, C66 [stress], the
+     * symmetric matrix of (s11, s22, s12) against (e11, e22, 2 e12) in the
+     * x-y frame. The default is the isotropic stiffness of lambda = 100,
+     * mu = 75.
+     */
+    std::array<double, 6> stiffness = {{250.0, 100.0, 0.0, 250.0, 0.0, 75.0}};
   };
 
 
@@ -75,8 +145,9 @@ namespace bilayer
 
     /**
      * A stiffness [stress] that makes the error indicators energies: the
-     * estimator divides traction residuals by it (an isotropic law:
-     * 2 mu).
+     * estimator divides traction residuals by it (IsotropicPlaneStrain:
+     * 2 mu; GeneralPlaneLaw: the smallest eigenvalue of C in Mandel
+     * notation, which is 2 mu for an isotropic law with nu >= 0).
      */
     virtual double
     energy_norm_scale() const = 0;
@@ -84,7 +155,8 @@ namespace bilayer
     /**
      * The constants the law gives the load expressions of its layer,
      * without the layer number (an isotropic law: E, nu, mu, lambda); a
-     * law that defines none of them gives none.
+     * law that defines none of them gives none (orthotropic and
+     * anisotropic laws).
      */
     virtual std::map<std::string, double>
     load_constants() const = 0;
@@ -152,7 +224,150 @@ namespace bilayer
   };
 
 
-  /// The law that @p material describes.
+  /**
+   * A plane law with a constant general tangent C (docs/problem.md §1): the
+   * isotropic plane-stress law, the orthotropic laws (plane strain and
+   * plane stress, in the x-y frame at any orientation) and the anisotropic
+   * law of a given in-plane stiffness. make_elastic_law() builds it;
+   * isotropic plane strain stays IsotropicPlaneStrain.
+   *
+   * - sigma = C : eps, sigma_zz = Z : eps with a constant tensor Z (0 in
+   *   plane stress; in orthotropic plane strain the stress that keeps
+   *   eps_zz = 0). An anisotropic law has no sigma_zz: the plane law as
+   *   given says nothing about z, and out_of_plane_stress() returns a quiet
+   *   NaN (the outputs stress_zz and von_mises are NaN on such a layer).
+   * - energy_norm_scale(): the smallest eigenvalue of C in Mandel notation
+   *   (the 3x3 matrix of (s11, s22, sqrt(2) s12) against (e11, e22,
+   *   sqrt(2) e12)), the largest s with C >= s I: 2 mu for an isotropic law
+   *   with nu >= 0 (plane strain or plane stress).
+   * - load_constants(): E, nu, mu, lambda for the isotropic plane-stress law
+   *   (mu = E / (2 (1 + nu)) and lambda = 2 nu mu / (1 - 2 nu), the Lame
+   *   constants of the 3-D material, not the plane-stress lambda*; lambda
+   *   is left out for nu = 0.5, where it is infinite), none for the other
+   *   laws.
+   */
+  class GeneralPlaneLaw : public ElasticLaw
+  {
+  public:
+    /**
+     * The law sigma = @p C : eps, sigma_zz = @p Z : eps (@p has_sigma_zz
+     * false: sigma_zz is not defined, NaN) with the load constants
+     * @p constants. @p C must be positive definite (refused otherwise).
+     */
+    GeneralPlaneLaw(const dealii::SymmetricTensor<4, 2> &C,
+                    const dealii::SymmetricTensor<2, 2> &Z,
+                    const bool                           has_sigma_zz,
+                    std::map<std::string, double>        constants = {});
+
+    dealii::SymmetricTensor<2, 2>
+    stress(const dealii::SymmetricTensor<2, 2> &eps) const override
+    {
+      return C * eps;
+    }
+
+    double
+    out_of_plane_stress(
+      const dealii::SymmetricTensor<2, 2> &eps) const override;
+
+    double
+    bilinear_form(const dealii::SymmetricTensor<2, 2> &eps_a,
+                  const dealii::SymmetricTensor<2, 2> &eps_b) const override
+    {
+      return (C * eps_a) * eps_b;
+    }
+
+    void
+    add_stiffness(const std::vector<dealii::SymmetricTensor<2, 2>> &eps,
+                  const double                                      JxW,
+                  dealii::FullMatrix<double> &cell_matrix) const override;
+
+    dealii::SymmetricTensor<4, 2>
+    tangent() const override
+    {
+      return C;
+    }
+
+    double
+    energy_norm_scale() const override
+    {
+      return smallest_eigenvalue;
+    }
+
+    std::map<std::string, double>
+    load_constants() const override
+    {
+      return constants;
+    }
+
+  private:
+    dealii::SymmetricTensor<4, 2> C;
+    dealii::SymmetricTensor<2, 2> Z;
+    bool                          has_sigma_zz;
+    double                        smallest_eigenvalue;
+    std::map<std::string, double> constants;
+  };
+
+
+  /**
+   * The plane laws in matrices: the tangent of a 3x3 Voigt matrix D with
+   * engineering shear, (s11, s22, s12) = D (e11, e22, 2 e12), the rotation
+   * of the material frame, and the reductions of the 3-D laws
+   * (docs/problem.md §1).
+   */
+  namespace plane_laws
+  {
+    /// The tangent C of the Voigt matrix @p D (symmetric 3x3).
+    dealii::SymmetricTensor<4, 2>
+    tangent_of_voigt(const std::array<std::array<double, 3>, 3> &D);
+
+    /// The Voigt matrix of the six numbers C11, C12, C16, C22, C26, C66.
+    std::array<std::array<double, 3>, 3>
+    voigt_of_stiffness(const std::array<double, 6> &stiffness);
+
+    /**
+     * The rotation R by @p angle [degrees] counter-clockwise: the material
+     * axis 1 is R e_x.
+     */
+    dealii::Tensor<2, 2>
+    rotation(const double angle);
+
+    /**
+     * The tangent in the x-y frame of the tangent @p C_material of the
+     * material frame rotated by @p R: C_xy(e) = R C_material(R^T e R) R^T.
+     */
+    dealii::SymmetricTensor<4, 2>
+    rotate(const dealii::SymmetricTensor<4, 2> &C_material,
+           const dealii::Tensor<2, 2>          &R);
+
+    /// The smallest eigenvalue of @p C in Mandel notation.
+    double
+    smallest_mandel_eigenvalue(const dealii::SymmetricTensor<4, 2> &C);
+
+    /// The isotropic plane-stress law E / (1 - nu^2) [...], sigma_zz = 0.
+    std::unique_ptr<const ElasticLaw>
+    isotropic_plane_stress(const double youngs_modulus,
+                           const double poisson_ratio);
+
+    /**
+     * The orthotropic law of @p constants in @p state, the material axis 1
+     * at @p angle [degrees] from x: plane strain reduces the 3-D compliance
+     * by eps_zz = 0, plane stress by sigma_zz = 0.
+     */
+    std::unique_ptr<const ElasticLaw>
+    orthotropic(const OrthotropicConstants &constants,
+                const PlaneState            state,
+                const double                angle);
+
+    /// The anisotropic law of the stiffness C11, C12, C16, C22, C26, C66.
+    std::unique_ptr<const ElasticLaw>
+    anisotropic(const std::array<double, 6> &stiffness);
+  } // namespace plane_laws
+
+
+  /**
+   * The law that @p material describes: IsotropicPlaneStrain for isotropic
+   * plane strain (the default), a GeneralPlaneLaw otherwise.
+   */
   std::unique_ptr<const ElasticLaw>
   make_elastic_law(const LayerMaterial &material);
 } // namespace bilayer

@@ -274,6 +274,7 @@ namespace bilayer
     const Layer                        layer_;
     const Subdomain                    subdomain_;
     std::unique_ptr<const ElasticLaw>  law_;
+    std::string                        moduli_entries_; // named on overflow
     unsigned int                       factorisations = 0;
     const Distribution                &distribution;
     std::string                        shared_solver;
