@@ -123,8 +123,12 @@ run "E <= 0" "Materials/Layer 2/Young's modulus must be > 0, got 0" "Materials/L
 run "E < 0" "Materials/Layer 1/Young's modulus=-1: The string <-1> does not match the given pattern <[Double 0...MAX_DOUBLE" "Materials/Layer 1/Young's modulus=-1"
 run "Poisson's ratio 0.5" "Materials/Layer 1/Poisson's ratio must lie in (-1, 0.5), got 0.5" "Materials/Layer 1/Poisson's ratio=0.5"
 run "Poisson's ratio -1" "Materials/Layer 2/Poisson's ratio must lie in (-1, 0.5), got -1" "Materials/Layer 2/Poisson's ratio=-1"
-run "crack outside Sigma" "Geometry/Crack interval on Sigma must satisfy -1 < x_start <= x_end < 1, got '-2, 0.5'" "Geometry/Crack interval on Sigma=-2, 0.5"
-run "crack touching Gamma_D" "Geometry/Crack interval on Sigma must satisfy -1 < x_start <= x_end < 1, got '-0.5, 1'" "Geometry/Crack interval on Sigma=-0.5, 1"
+run "crack outside Sigma" "Geometry/Crack interval on Sigma must satisfy -1 <= x_start <= x_end <= 1, got '-2, 0.5'" "Geometry/Crack interval on Sigma=-2, 0.5"
+# An edge crack needs a free or loaded side at its mouth (gamma_c and Gamma_D
+# are disjoint), and some of Sigma must stay glued.
+run "crack touching Gamma_D" "Geometry/Crack interval on Sigma = '-0.5, 1' reaches the right side (x = 1), which is clamped (Geometry/Clamped sides = 'left, right')" "Geometry/Crack interval on Sigma=-0.5, 1"
+run "edge crack at a clamped side" "Geometry/Crack interval on Sigma = '-1, 0.5' reaches the left side (x = -1), which is clamped" "Geometry/Crack interval on Sigma=-1, 0.5" --set "Geometry/Clamped sides=left"
+run "crack covering all of Sigma" "Geometry/Crack interval on Sigma = '-1, 1' covers all of Sigma" "Geometry/Crack interval on Sigma=-1, 1" --set "Geometry/Clamped sides=bottom, top" --set "Loads/Layer 1/Traction on bottom side=0; 0" --set "Loads/Layer 1/Traction on top side=0; 0"
 run "no clamped part" "Geometry/Clamped sides must clamp a part of the boundary of both Omega- and Omega+" "Geometry/Clamped sides=bottom"
 run "load does not parse" "Loads/Layer 1/Traction on bottom side: cannot evaluate '0; c*'" "Loads/Layer 1/Traction on bottom side=0; c*"
 run "load evaluates to NaN" "Loads/Layer 1/Traction on bottom side must be finite on the bottom side" "Loads/Layer 1/Traction on bottom side=0; sqrt(x-5)"
