@@ -33,6 +33,14 @@
 // solution: energies to 1e-8 and the contact multipliers to 1e-6 of their
 // largest value (at KKT tolerance 1e-10).
 //
+// An edge crack (parameter_files/rotated_partial_closure.geo with the left
+// glued piece of Sigma made crack: the crack from the free left side, xb =
+// -1, to xb = 0.5): the rotated rectangle with the crack interval (-1, 0.5),
+// only the right side clamped, under Example 2's load: the same mechanical
+// problem, so the same energy and G at its one tip (1e-8; no tip at the
+// mouth, on the boundary), and the node at the mouth carries a contact
+// multiplier (no tangential one) in both.
+//
 // Two cracks (parameter_files/two_cracks.prm, Example 1's load on a strip
 // with crack pieces (-1.5, -0.5) and (0.5, 1.5)): every acceptance check
 // passes (mu_c >= 0, no interpenetration, complementarity), the right piece
@@ -47,6 +55,7 @@
 #include <bilayer/parameters/parameters.h>
 
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -149,6 +158,79 @@ namespace
                         1e-8 * max_abs(plain.G) &&
                       std::abs(rotated.G[1] - plain.G[1]) <=
                         1e-8 * max_abs(plain.G) ?
+                    "yes" :
+                    "NO")
+              << std::endl;
+  }
+
+  /// Whether node 0 of mu_1 (the start of Sigma) carries a contact
+  /// multiplier and no tangential one.
+  bool
+  mouth_in_contact(const Study &study)
+  {
+    const auto        &space = study.interface().space();
+    const unsigned int mu_1 = Layout::across_sigma, a = 0;
+    return space.on_crack(a) &&
+           space.set().contact(mu_1, Layout::entry(a, Layout::normal)) &&
+           !space.set().free(mu_1, Layout::entry(a, Layout::tangential));
+  }
+
+  void
+  edge_crack()
+  {
+    const std::string rectangle =
+      "subsection Geometry\n set Crack interval on Sigma = -1, 0.5\n"
+      " set Clamped sides = right\nend\n"
+      "subsection Mesh\n set Cells along Sigma = 16\nend\n"
+      "subsection Loads\n set Constants = c = 1e-3*mu1\n"
+      " subsection Layer 1\n  set Traction on bottom side = 0; -c\n"
+      "  set Traction on top side = 0; c\n end\nend\n";
+    // The glued piece xb in (-1, -0.5) made crack.
+    std::ifstream      in(files + "rotated_partial_closure.geo");
+    std::ostringstream geo;
+    geo << in.rdbuf();
+    std::string text = geo.str();
+    for (const auto &[from, to] :
+         {std::make_pair(std::string("Physical Curve(\"Sigma\") = {7, 9};"),
+                         std::string("Physical Curve(\"Sigma\") = {9};")),
+          std::make_pair(std::string("Physical Curve(\"crack\") = {8};"),
+                         std::string("Physical Curve(\"crack\") = {7, 8};"))})
+      text.replace(text.find(from), from.size(), to);
+    std::ofstream("edge_crack.geo") << text;
+    const std::string rotated =
+      "subsection Geometry\n set Gmsh file = edge_crack.geo\n"
+      " set Clamped sides = right\nend\nsubsection Loads\n"
+      " set Constants = c = 1e-3*mu1; cs = cos(_pi/6); sn = sin(_pi/6)\n"
+      " subsection Layer 1\n  set Traction on bottom = sn*c; -cs*c\n"
+      "  set Traction on top = -sn*c; cs*c\n end\nend\n";
+    Study              plain_study(scene_from_string(rectangle + solver,
+                                        "edge_crack_rectangle"),
+                      quiet);
+    Study              rotated_study(scene_from_string(rotated + solver,
+                                          "edge_crack_rotated"),
+                        quiet);
+    const CycleRecord &plain   = plain_study.run_cycle(0);
+    const CycleRecord &turned  = rotated_study.run_cycle(0);
+    const bool         one_tip = plain.release.size() == 1 &&
+                         turned.release.size() == 1 &&
+                         std::abs(plain.release[0].tip.point[0] - 0.5) < 1e-12;
+    std::cout << "edge crack, rotated by 30 degrees: accepted: "
+              << (plain.accepted() && turned.accepted() ? "yes" : "NO")
+              << "; one tip (none at the mouth): " << (one_tip ? "yes" : "NO")
+              << "; energy equal to 1e-8: "
+              << (std::abs(turned.energy - plain.energy) <=
+                      1e-8 * std::abs(plain.energy) ?
+                    "yes" :
+                    "NO")
+              << "; G equal to 1e-8: "
+              << (one_tip &&
+                      std::abs(turned.release[0].G - plain.release[0].G) <=
+                        1e-8 * std::abs(plain.release[0].G) ?
+                    "yes" :
+                    "NO")
+              << "; the mouth node in contact, no tangential multiplier: "
+              << (mouth_in_contact(plain_study) &&
+                      mouth_in_contact(rotated_study) ?
                     "yes" :
                     "NO")
               << std::endl;
@@ -387,5 +469,6 @@ main()
             << "; vertices of Sigma on the circle after refinement: "
             << (drift < 1e-12 ? "yes" : "NO") << std::endl;
   solvers_agree();
+  edge_crack();
   two_cracks();
 }

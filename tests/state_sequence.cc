@@ -6,12 +6,17 @@
 // of Sigma is cracked, so reusing them changes no operation. The tips are
 // recomputed for each crack.
 //
-// A crack end that is no mesh vertex, or a piece reaching an end of Sigma,
-// is refused with the crack left as it was.
+// A crack end that is no mesh vertex, a piece reaching an end of Sigma on
+// Gamma_D (the left side of Example 1 is clamped) and a piece covering all
+// of Sigma are refused with the crack left as it was. With the left side
+// free (only the right side clamped) a piece reaching the left end is an
+// edge crack: the state (-1, 0.5) is accepted, has one tip (x = 0.5, none
+// at the mouth) and gives bit for bit the separate run of that scene.
 
 #include <bilayer/drivers/study.h>
 #include <bilayer/parameters/parameters.h>
 
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -23,9 +28,12 @@ using namespace bilayer;
 namespace
 {
   std::string
-  scene_text(const std::string &crack, const std::string &directory)
+  scene_text(const std::string &crack,
+             const std::string &directory,
+             const std::string &clamped = "left, right")
   {
     return "subsection Geometry\n set Crack interval on Sigma = " + crack +
+           "\n set Clamped sides = " + clamped +
            "\nend\n"
            "subsection Mesh\n set Cells along Sigma = 16\nend\n"
            "subsection Loads\n set Constants = c = 1e-3*mu1\n"
@@ -134,13 +142,17 @@ main()
         states.records()[0].energy != states.records()[1].energy);
 
   // Refusals: a crack end between mesh vertices (h = 1/8), a piece that
-  // reaches the end of Sigma.
-  for (const CrackSet::Piece bad :
-       {CrackSet::Piece{-0.55, 0.5}, CrackSet::Piece{-1., 0.5}})
+  // reaches the end of Sigma on Gamma_D (clamped left side), a piece that
+  // covers all of Sigma (the left side free).
+  for (const auto &[bad, clamped] :
+       {std::make_pair(CrackSet::Piece{-0.55, 0.5}, "left, right"),
+        std::make_pair(CrackSet::Piece{-1., 0.5}, "left, right"),
+        std::make_pair(CrackSet::Piece{-1., 1.}, "right")})
     {
-      Study refused(scene_from_string(scene_text(cracks[0], "results_states"),
-                                      "state_sequence"),
-                    quiet);
+      Study refused(
+        scene_from_string(scene_text(cracks[0], "results_states", clamped),
+                          "state_sequence"),
+        quiet);
       std::ostringstream name;
       name << "crack (" << bad.start << ", " << bad.end << ")";
       try
@@ -156,4 +168,47 @@ main()
                 what.find("the crack") != std::string::npos);
         }
     }
+  // An edge crack: the left side free, the piece (-1, 0.5) reaches it.
+  {
+    const std::string edge = "-1, 0.5";
+    Study             free_left(
+      scene_from_string(scene_text(cracks[0], "results_edge_states", "right"),
+                        "state_sequence"),
+      quiet);
+    const Scene scene =
+      scene_from_string(scene_text(edge, "results_edge_alone", "right"),
+                        "state_sequence");
+    Study alone_edge(scene, quiet);
+    alone_edge.run_cycle(0);
+    const bool ok = free_left.run_states(
+      {scenes[0].geometry.crack(), scene.geometry.crack()});
+    check("edge crack (-1, 0.5), left side free: states accepted", ok);
+    const bool  two = free_left.records().size() == 2;
+    const auto &tips =
+      two ? free_left.records()[1].release : std::vector<EnergyReleaseRate>();
+    check("edge crack: one tip, at x = 0.5 (none at the mouth x = -1)",
+          tips.size() == 1 && tips[0].tip.point[0] == 0.5);
+    check("edge crack: energy, residuals, iterations, G and tips as the "
+          "separate run",
+          two &&
+            same_records(alone_edge.records().front(), free_left.records()[1]));
+    check("edge crack: multipliers as the separate run, bit for bit",
+          same(free_left.multipliers(), alone_edge.multipliers()));
+    // table.csv of the states: two tips in state 0, one in state 1 (null in
+    // the columns of tip 2).
+    std::ifstream            csv("results_edge_states/table.csv");
+    std::vector<std::string> rows;
+    for (std::string line; std::getline(csv, line);)
+      if (!line.empty() && line[0] != '#')
+        rows.push_back(line);
+    const auto ends_with = [](const std::string &a, const std::string &b) {
+      return a.size() >= b.size() &&
+             a.compare(a.size() - b.size(), b.size(), b) == 0;
+    };
+    check("edge crack: table.csv has the columns of two tips, null for the "
+          "second in the edge state",
+          rows.size() == 3 && ends_with(rows[0], ",G_tip2,dG_tip2") &&
+            !ends_with(rows[1], ",null,null") &&
+            ends_with(rows[2], ",null,null"));
+  }
 }

@@ -64,6 +64,31 @@ namespace bilayer
     }
 
 
+    /// The names of the boundary parts of @p parts with a face at the
+    /// point @p p of the meshes of @p geometry, quoted ("'left'").
+    std::string
+    parts_at(const Geometry      &geometry,
+             const Point<2>      &p,
+             const BoundaryParts &parts)
+    {
+      std::string names;
+      for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+        for (const auto &face :
+             geometry.triangulation(s).active_face_iterators())
+          if (face->at_boundary() && !on_sigma(face) &&
+              face->boundary_id() < parts.size())
+            for (const unsigned int v : face->vertex_indices())
+              if (face->vertex(v).distance(p) <= 1e-10 * face->diameter())
+                {
+                  const std::string name =
+                    "'" + parts.names[face->boundary_id()] + "'";
+                  if (names.find(name) == std::string::npos)
+                    names += (names.empty() ? "" : ", ") + name;
+                }
+      return names.empty() ? "(none: traction free)" : names;
+    }
+
+
     /// Cells, Sigma, the crack pieces and the boundary parts of the meshes
     /// of cycle 0.
     void
@@ -86,9 +111,25 @@ namespace bilayer
       out << "crack: " << cracks.size()
           << (cracks.size() == 1 ? " piece" : " pieces") << "\n";
       for (const auto &piece : cracks)
-        out << "  piece " << at(curve.point(piece.start)) << " -- "
-            << at(curve.point(piece.end)) << ": length " << std::setprecision(6)
-            << piece.end - piece.start << "\n";
+        {
+          out << "  piece " << at(curve.point(piece.start)) << " -- "
+              << at(curve.point(piece.end)) << ": length "
+              << std::setprecision(6) << piece.end - piece.start;
+          // An edge crack: its mouth on the outer boundary (no tip there),
+          // its one tip at the other end.
+          const bool mouth_at_start = curve.crack().mouth(piece.start);
+          if (mouth_at_start || curve.crack().mouth(piece.end))
+            {
+              const Point<2> mouth =
+                curve.point(mouth_at_start ? piece.start : piece.end);
+              out << "; edge crack: its mouth " << at(mouth)
+                  << " lies on the boundary part(s) "
+                  << parts_at(geometry, mouth, parts)
+                  << " (no tip there; a run must not clamp them), its tip "
+                  << at(curve.point(mouth_at_start ? piece.end : piece.start));
+            }
+          out << "\n";
+        }
       // Edges of each boundary part (in both subdomain meshes).
       std::map<types::boundary_id, unsigned int> edges;
       for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
@@ -120,8 +161,11 @@ namespace bilayer
     geometry.gmsh_file = file;
     geometry.parts =
       BoundaryParts::of_gmsh(file, gmsh_boundary_names(file, options));
+    // Every part clamped but those at the mouth of an edge crack (named
+    // in the report: a run must leave them free).
     geometry.clamped.assign(geometry.parts.size(), true);
-    geometry.allow_gmsh_commands = allow_gmsh_commands;
+    geometry.free_parts_at_crack_mouths = true;
+    geometry.allow_gmsh_commands        = allow_gmsh_commands;
 
     // The groups as Gmsh writes them, and the kind of cells the scene has
     // (which Mesh/Element shape a run must state).

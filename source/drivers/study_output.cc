@@ -97,7 +97,7 @@ namespace bilayer
     record.memory_mib = distribution.gather(memory.VmHWM / 1024.);
 
     cycle_records.push_back(record);
-    add_to_table(table, record);
+    add_to_table(table, cycle_records);
     if (distribution.is_root())
       writing([&]() { write_records(record.cycle, fields); });
     std::string error = distribution.first_error(writing.message);

@@ -32,6 +32,11 @@ namespace bilayer
       {geometry.clamped[static_cast<unsigned int>(Side::left)],
        geometry.clamped[static_cast<unsigned int>(Side::right)]}};
     curve.set_clamped_ends({{ends, ends}});
+    // An edge crack reaches a side that is not clamped (checked with the
+    // entries' names when the parameters are read).
+    const std::string refusal = curve.crack_refusal(curve.crack());
+    AssertThrow(refusal.empty(),
+                ExcMessage("Geometry/Crack interval on Sigma: " + refusal));
   }
 
 
@@ -184,24 +189,8 @@ namespace bilayer
   void
   Geometry::set_crack(const CrackSet &crack)
   {
-    const double tol          = curve.tolerance();
-    double       previous_end = curve.s_begin();
-    for (const auto &piece : crack.pieces())
-      {
-        std::ostringstream m;
-        m << std::setprecision(10) << "the crack piece (" << piece.start << ", "
-          << piece.end << ") of Sigma";
-        AssertThrow(piece.start + tol < piece.end,
-                    ExcMessage(m.str() + " is empty or reversed"));
-        AssertThrow(piece.start > previous_end + tol &&
-                      piece.end < curve.s_end() - tol,
-                    ExcMessage(m.str() +
-                               " overlaps the piece before it or "
-                               "reaches an end of Sigma (s in [" +
-                               std::to_string(curve.s_begin()) + ", " +
-                               std::to_string(curve.s_end()) + "])"));
-        previous_end = piece.end;
-      }
+    const std::string refusal = curve.crack_refusal(crack);
+    AssertThrow(refusal.empty(), ExcMessage(refusal));
     const CrackSet previous = curve.crack();
     curve.set_crack(crack);
     try

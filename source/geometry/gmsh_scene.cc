@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <optional>
 #include <sstream>
 
 namespace bilayer
@@ -16,49 +15,6 @@ namespace bilayer
 
   namespace
   {
-    /// The circle through the points @p p, if they are not collinear and
-    /// all lie on one circle (relative tolerance 1e-8): (centre, radius).
-    std::optional<std::pair<Point<2>, double>>
-    fit_circle(const std::vector<Point<2>> &p)
-    {
-      if (p.size() < 3)
-        return std::nullopt;
-      // Three well separated points: the first, the farthest from it, the
-      // farthest from the line through both.
-      const Point<2> a = p[0];
-      Point<2>       b = a;
-      for (const auto &q : p)
-        if (q.distance(a) > b.distance(a))
-          b = q;
-      const double ab  = a.distance(b);
-      Point<2>     c   = a;
-      double       off = 0;
-      for (const auto &q : p)
-        {
-          const Tensor<1, 2> d = q - a, e = (b - a) / ab;
-          const double       h = std::abs(d[0] * e[1] - d[1] * e[0]);
-          if (h > off)
-            {
-              off = h;
-              c   = q;
-            }
-        }
-      if (off <= 1e-8 * ab)
-        return std::nullopt;
-      // Circumcentre of a, b, c.
-      const double d  = 2 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) +
-                            c[0] * (a[1] - b[1]));
-      const double a2 = a.norm_square(), b2 = b.norm_square(),
-                   c2 = c.norm_square();
-      const Point<2> centre(
-        (a2 * (b[1] - c[1]) + b2 * (c[1] - a[1]) + c2 * (a[1] - b[1])) / d,
-        (a2 * (c[0] - b[0]) + b2 * (a[0] - c[0]) + c2 * (b[0] - a[0])) / d);
-      const double radius = centre.distance(a);
-      for (const auto &q : p)
-        if (std::abs(centre.distance(q) - radius) > 1e-8 * radius)
-          return std::nullopt;
-      return std::make_pair(centre, radius);
-    }
 
     /// The edges of the cells of one physical surface with the number of
     /// cells that use them.
@@ -468,12 +424,15 @@ namespace bilayer
             unsigned int j = i;
             while (j < chain.size() && chain[j]->physical == crack)
               ++j;
-            AssertThrow(i > 0 && j < chain.size(),
+            // A piece may reach an end of Sigma (an edge crack: its mouth
+            // on the outer boundary, checked by check_crack_mouths()), but
+            // not both: some of Sigma stays glued.
+            AssertThrow(i > 0 || j < chain.size(),
                         ExcMessage(where + ": the crack piece from " +
                                    point_text(g.nodes[nodes[i]]) + " to " +
                                    point_text(g.nodes[nodes[j]]) +
-                                   " reaches an end of Sigma: a crack lies "
-                                   "inside Sigma, its tips glued"));
+                                   " covers all of Sigma: some of Sigma must "
+                                   "stay glued (the physical curve 'Sigma')"));
             cracks.push_back({curve.parameter(g.nodes[nodes[i]]),
                               curve.parameter(g.nodes[nodes[j]])});
           }
@@ -519,6 +478,80 @@ namespace bilayer
                         n == (k == 0 ? nodes.front() : nodes.back());
           }
       return clamped_end;
+    }
+
+
+    /// The boundary parts (indices into @p part_names) with an edge at the
+    /// node @p node.
+    std::vector<unsigned int>
+    parts_at_node(const GmshMesh                 &g,
+                  const GmshGroups               &groups,
+                  const std::vector<std::string> &part_names,
+                  const unsigned int              node)
+    {
+      std::vector<unsigned int> parts;
+      for (const auto &e : g.elements)
+        if (e.type == 1 && e.physical != groups.sigma &&
+            e.physical != groups.crack && g.curve_names.count(e.physical) > 0 &&
+            std::count(e.nodes.begin(), e.nodes.end(), node) > 0)
+          {
+            const unsigned int part = std::find(part_names.begin(),
+                                                part_names.end(),
+                                                g.curve_names.at(e.physical)) -
+                                      part_names.begin();
+            if (part < part_names.size() &&
+                std::count(parts.begin(), parts.end(), part) == 0)
+              parts.push_back(part);
+          }
+      return parts;
+    }
+
+
+    /// The ends of the chain @p sigma (0: its first node, 1: its last) that
+    /// a piece of @p cracks reaches: the mouths of edge cracks (@p curve
+    /// runs from the first node at s_begin, not yet reversed).
+    std::array<bool, 2>
+    crack_mouths(const CrackSet &cracks, const InterfaceCurve &curve)
+    {
+      return {{cracks.mouth(curve.s_begin()), cracks.mouth(curve.s_end())}};
+    }
+
+
+    /**
+     * An edge crack's mouth (an end of Sigma that a crack piece reaches)
+     * must not lie on Gamma_D of either side (gamma_c and Gamma_D are
+     * disjoint): refused naming the end and the clamped parts there.
+     */
+    void
+    check_crack_mouths(const GmshMesh                           &g,
+                       const GmshGroups                         &groups,
+                       const SigmaChain                         &sigma,
+                       const std::array<bool, 2>                &mouths,
+                       const std::array<std::array<bool, 2>, 2> &clamped_end,
+                       const std::vector<std::string>           &part_names,
+                       const std::vector<bool>                  &clamped,
+                       const std::string                        &where)
+    {
+      for (const unsigned int k : {0u, 1u})
+        if (mouths[k] && (clamped_end[0][k] || clamped_end[1][k]))
+          {
+            const unsigned int node =
+              k == 0 ? sigma.nodes.front() : sigma.nodes.back();
+            std::string names;
+            for (const unsigned int part :
+                 parts_at_node(g, groups, part_names, node))
+              if (clamped[part])
+                names += (names.empty() ? "'" : ", '") + part_names[part] + "'";
+            AssertThrow(false,
+                        ExcMessage(where + ": a crack piece reaches the end " +
+                                   point_text(g.nodes[node]) +
+                                   " of Sigma, which lies on the clamped "
+                                   "part " +
+                                   names +
+                                   " (Geometry/Clamped sides): a crack must "
+                                   "not reach Gamma_D; an edge crack needs a "
+                                   "free or loaded boundary at its mouth"));
+          }
     }
 
 
@@ -598,8 +631,30 @@ namespace bilayer
     const SigmaChain chain = sigma_chain(g, on_sigma, where);
     curve = InterfaceCurve(sigma_pieces(g, chain, arc_centres, arc_radii), 0.);
     curve.set_crack(crack_pieces(g, chain, groups.crack, curve, where));
-    curve.set_clamped_ends(clamped_ends(
-      g, groups, geometry.parts.names, geometry.clamped, minus, plus, chain));
+    // An edge crack's mouth must stay free. --check-geometry takes every
+    // part as clamped but those at a mouth, which it names instead.
+    const std::array<bool, 2> mouths  = crack_mouths(curve.crack(), curve);
+    std::vector<bool>         clamped = geometry.clamped;
+    if (geometry.free_parts_at_crack_mouths)
+      for (const unsigned int k : {0u, 1u})
+        if (mouths[k])
+          for (const unsigned int part :
+               parts_at_node(g,
+                             groups,
+                             geometry.parts.names,
+                             k == 0 ? chain.nodes.front() : chain.nodes.back()))
+            clamped[part] = false;
+    const auto clamped_end = clamped_ends(
+      g, groups, geometry.parts.names, clamped, minus, plus, chain);
+    check_crack_mouths(g,
+                       groups,
+                       chain,
+                       mouths,
+                       clamped_end,
+                       geometry.parts.names,
+                       clamped,
+                       where);
+    curve.set_clamped_ends(clamped_end);
     if (against_orientation(g, groups, chain, curve))
       curve.reverse();
     gmsh = mesh_ptr;

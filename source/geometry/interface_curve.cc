@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <iterator>
 #include <sstream>
 
@@ -58,6 +59,49 @@ namespace bilayer
                             std::make_pair(piece.s0 + piece.length, to_b);
     }
   } // namespace
+
+
+  std::optional<std::pair<Point<2>, double>>
+  fit_circle(const std::vector<Point<2>> &p)
+  {
+    if (p.size() < 3)
+      return std::nullopt;
+    // Three well separated points: the first, the farthest from it, the
+    // farthest from the line through both.
+    const Point<2> a = p[0];
+    Point<2>       b = a;
+    for (const auto &q : p)
+      if (q.distance(a) > b.distance(a))
+        b = q;
+    const double ab  = a.distance(b);
+    Point<2>     c   = a;
+    double       off = 0;
+    for (const auto &q : p)
+      {
+        const Tensor<1, 2> d = q - a, e = (b - a) / ab;
+        const double       h = std::abs(d[0] * e[1] - d[1] * e[0]);
+        if (h > off)
+          {
+            off = h;
+            c   = q;
+          }
+      }
+    if (off <= 1e-8 * ab)
+      return std::nullopt;
+    // Circumcentre of a, b, c.
+    const double d =
+      2 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) + c[0] * (a[1] - b[1]));
+    const double a2 = a.norm_square(), b2 = b.norm_square(),
+                 c2 = c.norm_square();
+    const Point<2> centre(
+      (a2 * (b[1] - c[1]) + b2 * (c[1] - a[1]) + c2 * (a[1] - b[1])) / d,
+      (a2 * (c[0] - b[0]) + b2 * (a[0] - c[0]) + c2 * (b[0] - a[0])) / d);
+    const double radius = centre.distance(a);
+    for (const auto &q : p)
+      if (std::abs(centre.distance(q) - radius) > 1e-8 * radius)
+        return std::nullopt;
+    return std::make_pair(centre, radius);
+  }
 
 
   InterfaceCurve::InterfaceCurve(std::vector<Piece> pieces, const double start)
@@ -241,8 +285,8 @@ namespace bilayer
     auto clamped = clamped_ends;
     for (auto &ends : clamped)
       std::swap(ends[0], ends[1]);
-    *this        = InterfaceCurve(reversed, start);
-    crack_       = CrackSet(cracks, tolerance());
+    *this = InterfaceCurve(reversed, start);
+    set_crack(CrackSet(cracks, tolerance()));
     clamped_ends = clamped;
   }
 
@@ -261,6 +305,48 @@ namespace bilayer
     const double tol = tolerance();
     return (clamped_ends[d][0] && std::abs(s - s_begin()) < tol) ||
            (clamped_ends[d][1] && std::abs(s - s_end()) < tol);
+  }
+
+
+  std::string
+  InterfaceCurve::crack_refusal(const CrackSet &crack) const
+  {
+    const double tol          = tolerance();
+    const auto  &pieces       = crack.pieces();
+    double       previous_end = s_begin() - 2 * tol;
+    for (const auto &piece : pieces)
+      {
+        std::ostringstream m;
+        m << std::setprecision(10) << "the crack piece (" << piece.start << ", "
+          << piece.end << ") of Sigma";
+        if (!(piece.start + tol < piece.end))
+          return m.str() + " is empty or reversed";
+        if (!(piece.start > previous_end + tol && piece.end <= s_end() + tol))
+          {
+            m << " overlaps the piece before it or lies outside Sigma (s in ["
+              << s_begin() << ", " << s_end() << "])";
+            return m.str();
+          }
+        previous_end        = piece.end;
+        const bool at_begin = std::abs(piece.start - s_begin()) <= tol,
+                   at_end   = std::abs(piece.end - s_end()) <= tol;
+        if (at_begin && at_end)
+          {
+            m << " covers all of Sigma (s in [" << s_begin() << ", " << s_end()
+              << "]): some of Sigma must stay glued";
+            return m.str();
+          }
+        for (const unsigned int k : {0u, 1u})
+          if ((k == 0 ? at_begin : at_end) && end_on_gamma_d(k))
+            {
+              m << " reaches the end s = " << (k == 0 ? s_begin() : s_end())
+                << " of Sigma, which lies on Gamma_D (clamped): a crack must "
+                   "not reach Gamma_D (an edge crack needs a free or loaded "
+                   "boundary at its mouth)";
+              return m.str();
+            }
+      }
+    return "";
   }
 
 

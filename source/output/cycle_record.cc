@@ -480,8 +480,12 @@ namespace bilayer
                   const bool                      along_x)
   {
     const std::vector<const RecordField *> columns = csv_fields();
-    // The fields, then G at each tip (the tips are the same in every cycle).
-    const unsigned int n_tips = records.empty() ? 0 : records[0].release.size();
+    // The fields, then G at each tip (the tips are the same in every cycle;
+    // states of one mesh may differ in the crack and their number of tips:
+    // null where a record has fewer).
+    unsigned int n_tips = 0;
+    for (const CycleRecord &record : records)
+      n_tips = std::max<unsigned int>(n_tips, record.release.size());
     // Where the tips are: '#' lines before the header.
     if (n_tips > 0)
       for (const std::string &note : tip_notes(records[0].release, along_x))
@@ -508,8 +512,9 @@ namespace bilayer
 
 
   void
-  add_to_table(ConvergenceTable &table, const CycleRecord &record)
+  add_to_table(ConvergenceTable &table, const std::vector<CycleRecord> &records)
   {
+    const CycleRecord &record = records.back();
     for (const RecordField *field : csv_fields())
       {
         const RecordField::TableColumn &column = field->table;
@@ -529,16 +534,29 @@ namespace bilayer
         if (column.scientific)
           table.set_scientific(column.header, true);
       }
+    // States of one mesh (Study::run_states) may differ in their number of
+    // tips (an edge crack has one): the cells of tips a row lacks are empty,
+    // in the earlier rows of a column that appears later as well.
+    std::size_t earlier_tips = 0;
+    for (std::size_t r = 0; r + 1 < records.size(); ++r)
+      earlier_tips = std::max(earlier_tips, records[r].release.size());
     for (unsigned int t = 0; t < record.release.size(); ++t)
       {
         const std::string header = "G tip " + std::to_string(t + 1);
+        const std::string error  = "dG tip " + std::to_string(t + 1);
+        if (t >= earlier_tips)
+          for (std::size_t r = 0; r + 1 < records.size(); ++r)
+            {
+              table.add_value(header, std::string());
+              table.add_value(error, std::string());
+            }
         table.add_value(header, record.release[t].G);
         table.set_precision(header, 4);
         table.set_scientific(header, true);
-        const std::string error = "dG tip " + std::to_string(t + 1);
         table.add_value(error, record.release[t].error);
         table.set_precision(error, 1);
         table.set_scientific(error, true);
       }
+    table.start_new_row();
   }
 } // namespace bilayer

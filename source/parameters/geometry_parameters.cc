@@ -78,8 +78,13 @@ namespace bilayer
                       "-0.5, 0.5",
                       Patterns::List(Patterns::Double(), 2, 2),
                       "End points (x_start, x_end) of the through crack "
-                      "gamma_c on Sigma [length]. Equal end points mean no "
-                      "crack. The crack must lie strictly inside Omega.");
+                      "gamma_c on Sigma [length], x_min <= x_start <= x_end "
+                      "<= x_max. Equal end points mean no crack. An end "
+                      "point inside Omega is a crack tip (G is computed "
+                      "there); an end point on the left or right side "
+                      "makes an edge crack whose mouth lies on that side, "
+                      "no tip: that side must not be clamped (Clamped "
+                      "sides), and the crack must not cover all of Sigma.");
     std::string selection;
     for (const auto &name : parts.names)
       selection += (selection.empty() ? "" : "|") + name;
@@ -150,16 +155,42 @@ namespace bilayer
                 ExcMessage("Geometry/Height of Sigma must lie in (" +
                            number(y_min) + ", " + number(y_max) + "), got " +
                            number(sigma_height)));
-    AssertThrow(x_min < crack_start && crack_start <= crack_end &&
-                  crack_end < x_max,
+    // The crack may reach the left or right side (an edge crack; within
+    // the tolerance of the crack's coordinates it is put there).
+    const double tol = 1e-10 * (x_max - x_min);
+    AssertThrow(x_min - tol <= crack_start && crack_start <= crack_end &&
+                  crack_end <= x_max + tol,
                 ExcMessage("Geometry/Crack interval on Sigma must satisfy " +
-                           number(x_min) + " < x_start <= x_end < " +
+                           number(x_min) + " <= x_start <= x_end <= " +
                            number(x_max) + ", got '" + crack_text + "'"));
+    for (double *end : {&crack_start, &crack_end})
+      for (const double side : {x_min, x_max})
+        if (std::abs(*end - side) <= tol)
+          *end = side;
     const bool sides = clamped[0] || clamped[1];
     AssertThrow(sides || (clamped[2] && clamped[3]),
                 ExcMessage("Geometry/Clamped sides must clamp a part of the "
                            "boundary of both Omega- and Omega+ (left or right, "
                            "or both bottom and top), got '" +
                            clamped_text + "'"));
+    if (!has_crack())
+      return;
+    AssertThrow(crack_start > x_min || crack_end < x_max,
+                ExcMessage("Geometry/Crack interval on Sigma = '" + crack_text +
+                           "' covers all of Sigma (" + number(x_min) + " to " +
+                           number(x_max) +
+                           "): some of Sigma must stay glued; end the crack "
+                           "inside Omega on one side at least"));
+    for (const Side side : {Side::left, Side::right})
+      AssertThrow(
+        !clamped[static_cast<unsigned int>(side)] ||
+          (side == Side::left ? crack_start > x_min : crack_end < x_max),
+        ExcMessage("Geometry/Crack interval on Sigma = '" + crack_text +
+                   "' reaches the " + side_name(side) +
+                   " side (x = " + number(side == Side::left ? x_min : x_max) +
+                   "), which is clamped (Geometry/Clamped sides = '" +
+                   clamped_text +
+                   "'): a crack must not reach Gamma_D; an edge crack "
+                   "needs a free or loaded side at its mouth"));
   }
 } // namespace bilayer

@@ -106,9 +106,9 @@ namespace bilayer
       for (const double sign : {-1., 1.})
         {
           const double s = sign < 0 ? crack.start : crack.end;
-          // An end of Sigma: the crack reaches the outer boundary there.
-          if (std::abs(s - curve.s_begin()) <= tol ||
-              std::abs(s - curve.s_end()) <= tol)
+          // The mouth of an edge crack (an end of Sigma, on the outer
+          // boundary, on the crack): no tip, no G.
+          if (curve.crack().mouth(s))
             continue;
           CrackTip tip;
           tip.s         = s;

@@ -141,8 +141,12 @@ run "traction using E1 of an orthotropic layer" "Loads/Layer 1/Traction on top s
 run "prescribed displacement using nu2 of an anisotropic layer" "Loads/Layer 2/Prescribed displacement: '0; 1e-3*nu2' uses nu2, a constant of isotropic layers only (E2, nu2, mu2, lambda2), but Materials/Layer 2/Law = anisotropic" "Materials/Layer 2/Law=anisotropic" --set "Loads/Layer 2/Prescribed displacement=0; 1e-3*nu2"
 run "lambda1 at nu = 0.5 in plane stress" "Loads/Constants: 'c = 1e-9*lambda1' uses lambda1, which is infinite for Materials/Layer 1/Poisson's ratio = 0.5 (plane stress)" "Materials/Layer 1/Plane state=plane stress" --set "Materials/Layer 1/Poisson's ratio=0.5" --set "Loads/Constants=c = 1e-9*lambda1"
 run "constant named E1 of an orthotropic layer" "Loads/Constants: the name 'E1' is reserved" "Materials/Layer 1/Law=orthotropic" --set "Loads/Constants=E1 = 1"
-run "crack outside Sigma" "Geometry/Crack interval on Sigma must satisfy -1 < x_start <= x_end < 1, got '-2, 0.5'" "Geometry/Crack interval on Sigma=-2, 0.5"
-run "crack touching Gamma_D" "Geometry/Crack interval on Sigma must satisfy -1 < x_start <= x_end < 1, got '-0.5, 1'" "Geometry/Crack interval on Sigma=-0.5, 1"
+run "crack outside Sigma" "Geometry/Crack interval on Sigma must satisfy -1 <= x_start <= x_end <= 1, got '-2, 0.5'" "Geometry/Crack interval on Sigma=-2, 0.5"
+# An edge crack needs a free or loaded side at its mouth (gamma_c and Gamma_D
+# are disjoint), and some of Sigma must stay glued.
+run "crack touching Gamma_D" "Geometry/Crack interval on Sigma = '-0.5, 1' reaches the right side (x = 1), which is clamped (Geometry/Clamped sides = 'left, right')" "Geometry/Crack interval on Sigma=-0.5, 1"
+run "edge crack at a clamped side" "Geometry/Crack interval on Sigma = '-1, 0.5' reaches the left side (x = -1), which is clamped" "Geometry/Crack interval on Sigma=-1, 0.5" --set "Geometry/Clamped sides=left"
+run "crack covering all of Sigma" "Geometry/Crack interval on Sigma = '-1, 1' covers all of Sigma" "Geometry/Crack interval on Sigma=-1, 1" --set "Geometry/Clamped sides=bottom, top" --set "Loads/Layer 1/Traction on bottom side=0; 0" --set "Loads/Layer 1/Traction on top side=0; 0"
 run "no clamped part" "Geometry/Clamped sides must clamp a part of the boundary of both Omega- and Omega+" "Geometry/Clamped sides=bottom"
 run "load does not parse" "Loads/Layer 1/Traction on bottom side: cannot evaluate '0; c*'" "Loads/Layer 1/Traction on bottom side=0; c*"
 run "load evaluates to NaN" "Loads/Layer 1/Traction on bottom side must be finite on the bottom side" "Loads/Layer 1/Traction on bottom side=0; sqrt(x-5)"

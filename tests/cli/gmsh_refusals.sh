@@ -4,7 +4,9 @@
 # the statement or the entry, a non-zero exit, no backtrace and no output
 # directory. Variants of parameter_files/two_cracks.{geo,prm}:
 # - the physical groups: a missing or misnamed group, a crack that reaches
-#   the end of Sigma, a subdomain without a clamped part, a Sigma that does
+#   the end of Sigma on a clamped part or covering all of Sigma (and an
+#   edge crack whose mouth is free: accepted, and named by --check-geometry),
+#   a subdomain without a clamped part, a Sigma that does
 #   not separate the subdomains, a traction on a part the file does not
 #   have, a .geo that gmsh cannot mesh, a missing file, a .msh of another
 #   format;
@@ -136,8 +138,25 @@ case_ "misnamed clamped part" "Clamped sides" 's/^$//' \
   --set "Geometry/Clamped sides=left, rigth"
 case_ "traction on an unknown part" "Traction on hole" 's/^$//' \
   --set "Loads/Layer 1/Traction on hole=0; 1"
-case_ "crack reaching the end of Sigma" "reaches an end of Sigma" \
-  's/Physical Curve("Sigma") = {11, 13, 15};/Physical Curve("Sigma") = {13, 15};/; s/Physical Curve("crack") = {12, 14};/Physical Curve("crack") = {11, 12, 14};/'
+# An edge crack (the crack group reaching the end of Sigma at x = -2): refused
+# where that end lies on a clamped part, accepted where it is free; a crack
+# group covering all of Sigma refused.
+edge_crack='s/Physical Curve("Sigma") = {11, 13, 15};/Physical Curve("Sigma") = {13, 15};/; s/Physical Curve("crack") = {12, 14};/Physical Curve("crack") = {11, 12, 14};/'
+case_ "crack reaching the end of Sigma on Gamma_D" \
+  "a crack piece reaches the end (-2, 0) of Sigma, which lies on the clamped part 'left' (Geometry/Clamped sides)" \
+  "$edge_crack"
+case_ "crack covering all of Sigma" "covers all of Sigma" \
+  '/Physical Curve("Sigma")/d; s/Physical Curve("crack") = {12, 14};/Physical Curve("crack") = {11, 12, 13, 14, 15};/' \
+  --set "Geometry/Clamped sides=bottom, top" \
+  --set "Loads/Layer 1/Traction on bottom=0; 0" --set "Loads/Layer 1/Traction on top=0; 0"
+sed "$edge_crack" "$source_dir/two_cracks.geo" > edge_crack.geo
+sed 's/two_cracks.geo/edge_crack.geo/; s/Clamped sides = left, right/Clamped sides = right/' \
+  "$source_dir/two_cracks.prm" > edge_crack.prm
+why=""
+got=$(energy edge_crack.prm)
+[[ -n $got ]] || why="run failed: $(cat run_stderr)"
+[[ -z $(ls tmp) ]] || why="$why; temporary directory left: $(ls tmp)"
+report "edge crack with its mouth on a free part accepted" "$why"
 case_ "subdomain without a clamped part" "'Omega-' has no clamped part" 's/^$//' \
   --set "Geometry/Clamped sides=top" --set "Loads/Layer 1/Traction on top=0; 0"
 case_ "boundary curve in Sigma" "Sigma must separate the two subdomains" \
@@ -363,6 +382,15 @@ for kind in quadrilaterals triangles; do
   [[ $(grep -c '^  piece (' check_stdout) -eq 2 ]] || why="$why; not two crack pieces"
   report "--check-geometry on $kind" "$why"
 done
+# The edge crack: PASS, its mouth and the part there named (a run must leave
+# it free), its one tip; the other piece keeps its line.
+why=""
+"$bilayer" --check-geometry edge_crack.geo > check_stdout 2> stderr || why="exit status $?"
+[[ $(tail -1 check_stdout) == PASS ]] || why="$why; no PASS"
+grep -qF "  piece (-2, 0) -- (-0.5, 0): length 1.5; edge crack: its mouth (-2, 0) lies on the boundary part(s) 'left' (no tip there; a run must not clamp them), its tip (-0.5, 0)" check_stdout ||
+  why="$why; mouth not named"
+grep -qxF "  piece (0.5, 0) -- (1.5, 0): length 1" check_stdout || why="$why; inner piece"
+report "--check-geometry on an edge crack" "$why"
 sed -e '/Physical Surface("Omega+")/d' "$source_dir/two_cracks.geo" > no_plus.geo
 why=""
 "$bilayer" --check-geometry no_plus.geo > check_stdout 2> stderr

@@ -2,6 +2,7 @@
 #define bilayer_layout_h
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -154,7 +155,10 @@ namespace bilayer
   /**
    * The crack gamma_c as a set of open pieces of Sigma, each an interval of
    * the coordinate along Sigma. The crack tips belong to Sigma \ gamma_c
-   * (glued). contains() is the one test of "is this point on the crack".
+   * (glued). A piece may reach an end of Sigma on the outer boundary (an
+   * edge crack, once the ends are known: set_sigma_ends()); that end is its
+   * mouth, no tip, and lies on the crack. contains() is the one test of "is
+   * this point on the crack".
    */
   class CrackSet
   {
@@ -173,15 +177,43 @@ namespace bilayer
       , tolerance(tolerance)
     {}
 
-    /// Whether the coordinate @p s along Sigma lies inside a crack piece
-    /// (tips excluded).
+    /// The coordinates of the two ends of Sigma (InterfaceCurve::set_crack):
+    /// a piece end there is a mouth (mouth()).
+    void
+    set_sigma_ends(const double begin, const double end)
+    {
+      sigma_ends       = {{begin, end}};
+      sigma_ends_known = true;
+    }
+
+    /**
+     * Whether the coordinate @p s along Sigma is the mouth of an edge
+     * crack: an end of Sigma (on the outer boundary) that a piece reaches.
+     * It lies on the crack and is no tip.
+     */
+    bool
+    mouth(const double s) const
+    {
+      if (!sigma_ends_known || pieces_.empty())
+        return false;
+      const auto near = [this](const double a, const double b) {
+        return std::abs(a - b) <= tolerance;
+      };
+      return (near(s, sigma_ends[0]) &&
+              near(pieces_.front().start, sigma_ends[0])) ||
+             (near(s, sigma_ends[1]) &&
+              near(pieces_.back().end, sigma_ends[1]));
+    }
+
+    /// Whether the coordinate @p s along Sigma lies on the crack: inside a
+    /// crack piece (tips excluded) or at the mouth of an edge crack.
     bool
     contains(const double s) const
     {
       for (const auto &piece : pieces_)
         if (s > piece.start + tolerance && s < piece.end - tolerance)
           return true;
-      return false;
+      return mouth(s);
     }
 
     bool
@@ -197,8 +229,10 @@ namespace bilayer
     }
 
   private:
-    std::vector<Piece> pieces_;
-    double             tolerance = 0;
+    std::vector<Piece>    pieces_;
+    double                tolerance = 0;
+    std::array<double, 2> sigma_ends{{0., 0.}};
+    bool                  sigma_ends_known = false;
   };
 } // namespace bilayer
 

@@ -122,9 +122,11 @@ namespace bilayer
      * Replace the crack gamma_c by @p crack on the present meshes (the one
      * source of the crack: the multiplier spaces, the coupling, the
      * estimator and the tips follow the interface curve's CrackSet). Its
-     * pieces must be ordered, disjoint, inside Sigma and end at vertices of
-     * both meshes on Sigma; else nothing changes and the error names the
-     * end point.
+     * pieces must be ordered, disjoint, on Sigma (reaching an end of Sigma
+     * only where it is not on Gamma_D: an edge crack, leaving some of Sigma
+     * glued; InterfaceCurve::crack_refusal()) and end at vertices of both
+     * meshes on Sigma; else nothing changes and the error names the piece or
+     * the end point.
      */
     void
     set_crack(const CrackSet &crack);

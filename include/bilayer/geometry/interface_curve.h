@@ -7,7 +7,9 @@
 #include <bilayer/core/layout.h>
 
 #include <array>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bilayer
@@ -32,6 +34,14 @@ namespace bilayer
   {
     return dealii::Tensor<1, 2>({normal[1], -normal[0]});
   }
+
+  /**
+   * The circle through the points @p p, if they are not collinear and all
+   * lie on one circle (relative tolerance 1e-8): (centre, radius). The
+   * curves of a Gmsh scene whose nodes it fits are arcs of Sigma.
+   */
+  std::optional<std::pair<dealii::Point<2>, double>>
+  fit_circle(const std::vector<dealii::Point<2>> &p);
 
   /**
    * The interface Sigma as a geometric curve: a chain of straight segments
@@ -171,12 +181,25 @@ namespace bilayer
     void
     reverse();
 
-    /// The crack pieces.
+    /// The crack pieces, told the ends of Sigma (a piece that reaches one
+    /// is an edge crack: CrackSet::mouth()).
     void
     set_crack(const CrackSet &crack)
     {
       crack_ = crack;
+      crack_.set_sigma_ends(s_begin(), s_end());
     }
+
+    /**
+     * Why @p crack cannot be the crack on this curve, empty if it can: its
+     * pieces must be non-empty, ordered, disjoint and inside Sigma; a piece
+     * may reach an end of Sigma (an edge crack, its mouth on the outer
+     * boundary) only where that end is not on Gamma_D of either side
+     * (gamma_c and Gamma_D are disjoint: end_on_gamma_d()), and some of
+     * Sigma must stay glued (no piece covers all of it).
+     */
+    std::string
+    crack_refusal(const CrackSet &crack) const;
     const CrackSet &
     crack() const
     {
@@ -211,6 +234,17 @@ namespace bilayer
      */
     bool
     on_gamma_d(const double s, const unsigned int d) const;
+
+    /**
+     * Whether end @p k of Sigma (0 at s_begin, 1 at s_end) lies on Gamma_D
+     * of either side (its end node of Omega- or of Omega+ is clamped): a
+     * crack must not reach it.
+     */
+    bool
+    end_on_gamma_d(const unsigned int k) const
+    {
+      return clamped_ends[0][k] || clamped_ends[1][k];
+    }
 
     /// "segment", "arc" or "polyline of N pieces" for the run header.
     std::string

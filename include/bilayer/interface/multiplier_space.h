@@ -70,10 +70,11 @@ namespace bilayer
    * friction), -p <= . <= p elsewhere. At a corner of Sigma inside the
    * crack both components are contact components in [0, p], along the
    * normals of the two pieces that meet there (node_frame()). The crack tips
-   * belong to Sigma \ gamma_c (glued). Nodes on Gamma_D (the ends of Sigma on a
-   * clamped side) carry no multipliers (bounds [0, 0]); without
-   * non-penetration neither do the crack nodes. A component is "free" when
-   * it carries a multiplier (MultiplierSet::free()).
+   * belong to Sigma \ gamma_c (glued); the mouth of an edge crack (an end of
+   * Sigma off Gamma_D that a crack piece reaches) is a crack node. Nodes on
+   * Gamma_D (the ends of Sigma on a clamped side) carry no multipliers
+   * (bounds [0, 0]); without non-penetration neither do the crack nodes. A
+   * component is "free" when it carries a multiplier (MultiplierSet::free()).
    */
   class MultiplierSpace
   {
@@ -297,7 +298,8 @@ namespace bilayer
       return meshes[b].breakpoints;
     }
 
-    /// Whether node @p a of mu_1 lies strictly inside the crack.
+    /// Whether node @p a of mu_1 lies on the crack: strictly inside a
+    /// piece, or at the mouth of an edge crack (CrackSet::contains()).
     bool
     on_crack(const unsigned int a) const
     {

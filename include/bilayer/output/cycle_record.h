@@ -199,9 +199,12 @@ namespace bilayer
                   const std::vector<CycleRecord> &records,
                   const bool                      along_x);
 
-  /// Append @p record as a row of the mesh-size table.
+  /// Append the last of @p records (all records so far) as a row of the
+  /// mesh-size table; where the records differ in their number of crack
+  /// tips (states of one mesh), the cells of tips a row lacks are empty.
   void
-  add_to_table(dealii::ConvergenceTable &table, const CycleRecord &record);
+  add_to_table(dealii::ConvergenceTable       &table,
+               const std::vector<CycleRecord> &records);
 } // namespace bilayer
 
 #endif

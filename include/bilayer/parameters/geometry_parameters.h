@@ -82,6 +82,10 @@ namespace bilayer
     /// The scene file may run programs and write files (the command-line
     /// flag --allow-gmsh-commands; not a parameter entry).
     bool allow_gmsh_commands = false;
+    /// bilayer --check-geometry (not a parameter entry): every boundary part
+    /// is taken as clamped but those at the mouth of an edge crack (an end
+    /// of Sigma that a crack piece reaches), which a run must leave free.
+    bool free_parts_at_crack_mouths = false;
 
     double x_min        = -1.0;
     double x_max        = 1.0;
