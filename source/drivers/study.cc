@@ -4,6 +4,7 @@
 #include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <bilayer/core/progress.h>
 #include <bilayer/core/tasks.h>
@@ -19,6 +20,30 @@
 namespace bilayer
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// The diameter of the bounding box of both meshes: the length over
+    /// which the volume loads vary (the step of their gradients).
+    double
+    domain_diameter(const Geometry &domain)
+    {
+      const auto minus =
+        GridTools::compute_bounding_box(domain.triangulation(Subdomain::minus));
+      const auto plus =
+        GridTools::compute_bounding_box(domain.triangulation(Subdomain::plus));
+      Point<2> lower, upper;
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          lower[d] = std::min(minus.get_boundary_points().first[d],
+                              plus.get_boundary_points().first[d]);
+          upper[d] = std::max(minus.get_boundary_points().second[d],
+                              plus.get_boundary_points().second[d]);
+        }
+      return lower.distance(upper);
+    }
+  } // namespace
+
 
   Study::Study(const Scene        &scene,
                std::ostream       &out,
@@ -274,6 +299,12 @@ namespace bilayer
         {
           const unsigned int l = static_cast<unsigned int>(layer);
           prescribed[l]        = scene.loads.prescribed_function(layer);
+          // (The subproblems of the previous cycle, which referred to it,
+          // are gone.)
+          volume_loads[l] =
+            scene.loads.has_volume_load(layer) ?
+              scene.loads.volume_load(layer, domain_diameter(domain)) :
+              nullptr;
           for (unsigned int part = 0; part < scene.geometry.parts.size();
                ++part)
             {
@@ -297,7 +328,8 @@ namespace bilayer
                               *prescribed[l],
                               traction[l],
                               scene.solver.shared_solver,
-                              scene.solver.iterates_on_sigma());
+                              scene.solver.iterates_on_sigma(),
+                              volume_loads[l].get());
               });
             }
         }

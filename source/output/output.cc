@@ -26,8 +26,11 @@ namespace bilayer
 {
   using namespace dealii;
 
-  StressPostprocessor::StressPostprocessor(const ElasticLaw &law)
+  StressPostprocessor::StressPostprocessor(const ElasticLaw &law,
+                                           const VolumeLoad *volume)
     : law(law)
+    , eigenstrain(volume != nullptr && volume->has_eigenstrain() ? volume :
+                                                                   nullptr)
   {}
 
 
@@ -41,7 +44,9 @@ namespace bilayer
   UpdateFlags
   StressPostprocessor::get_needed_update_flags() const
   {
-    return update_gradients;
+    return eigenstrain != nullptr ?
+             update_gradients | update_quadrature_points :
+             update_gradients;
   }
 
 
@@ -54,9 +59,11 @@ namespace bilayer
       {
         const auto           &grad = inputs.solution_gradients[q];
         SymmetricTensor<2, 2> strain;
-        strain[0][0]                       = grad[0][0];
-        strain[1][1]                       = grad[1][1];
-        strain[0][1]                       = 0.5 * (grad[0][1] + grad[1][0]);
+        strain[0][0] = grad[0][0];
+        strain[1][1] = grad[1][1];
+        strain[0][1] = 0.5 * (grad[0][1] + grad[1][0]);
+        if (eigenstrain != nullptr)
+          strain -= eigenstrain->eigenstrain(inputs.evaluation_points[q]);
         const SymmetricTensor<2, 2> stress = law.stress(strain);
         const double                szz    = law.out_of_plane_stress(strain);
         const double sxx = stress[0][0], syy = stress[1][1], sxy = stress[0][1];
@@ -207,7 +214,8 @@ namespace bilayer
                                names,
                                DataOut<2>::type_dof_data,
                                interpretation);
-      output.stresses[s] = std::make_unique<StressPostprocessor>(sub.law());
+      output.stresses[s] =
+        std::make_unique<StressPostprocessor>(sub.law(), sub.volume_load());
       data_out.add_data_vector(solution, *output.stresses[s]);
 
       const unsigned int n_cells =

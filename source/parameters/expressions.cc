@@ -6,6 +6,7 @@
 #include <bilayer/parameters/expressions.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <iostream>
@@ -130,27 +131,57 @@ namespace bilayer
                     const std::map<std::string, double> &constants,
                     const std::string                   &entry)
     {
+      return function(
+        expression, 2, "x-component; y-component", constants, entry);
+    }
+
+
+    std::unique_ptr<FunctionParser<2>>
+    function(const std::string                   &expression,
+             const unsigned int                   n_components,
+             const std::string                   &components,
+             const std::map<std::string, double> &constants,
+             const std::string                   &entry)
+    {
       AssertThrow(expression.size() <= max_length,
                   ExcMessage(entry + ": longer than " +
                              std::to_string(max_length) + " characters"));
       const auto parts = Utilities::split_string_list(expression, ';');
-      AssertThrow(parts.size() == 2,
-                  ExcMessage(entry +
-                             " must have two components separated "
-                             "by ';' (x-component; y-component), got '" +
-                             expression + "'"));
-      auto       function  = std::make_unique<FunctionParser<2>>(2);
+      AssertThrow(parts.size() == n_components,
+                  ExcMessage(
+                    entry + " must have " +
+                    (n_components == 2 ? std::string("two") :
+                     n_components == 3 ? std::string("three") :
+                                         std::to_string(n_components)) +
+                    " components separated by ';' (" + components + "), got '" +
+                    expression + "'"));
+      auto       result    = std::make_unique<FunctionParser<2>>(n_components);
       const bool evaluated = quietly([&]() {
-        function->initialize("x,y", parts, constants);
-        Vector<double> value(2);
-        function->vector_value(Point<2>(0.123, 0.456), value);
+        result->initialize("x,y", parts, constants);
+        Vector<double> value(n_components);
+        result->vector_value(Point<2>(0.123, 0.456), value);
       });
       AssertThrow(evaluated,
                   ExcMessage(entry + ": cannot evaluate '" + expression +
                              "' as a function of x and y (known constants: "
                              "material constants E1, nu1, mu1, lambda1, "
                              "E2, nu2, mu2, lambda2 and Loads/Constants)"));
-      return function;
+      return result;
+    }
+
+
+    bool
+    is_zero(const std::string &expression)
+    {
+      for (const auto &part : Utilities::split_string_list(expression, ';'))
+        {
+          const std::string text  = Utilities::trim(part);
+          char             *end   = nullptr;
+          const double      value = std::strtod(text.c_str(), &end);
+          if (text.empty() || end != text.c_str() + text.size() || value != 0)
+            return false;
+        }
+      return true;
     }
   } // namespace expressions
 } // namespace bilayer

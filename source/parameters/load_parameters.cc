@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <bilayer/parameters/expression_volume_load.h>
 #include <bilayer/parameters/expressions.h>
 #include <bilayer/parameters/load_parameters.h>
 #include <bilayer/parameters/parameter_entries.h>
@@ -78,6 +79,25 @@ namespace bilayer
                           "Displacement (x-component; y-component) of the "
                           "layer on the clamped sides Gamma_D as expressions "
                           "of x and y [length].");
+        prm.declare_entry(
+          "Body force",
+          "0; 0",
+          Patterns::Anything(),
+          "Body force (x-component; y-component) on the layer, a force per "
+          "unit volume [stress / length], as expressions of x and y and the "
+          "constants; fixed in space (the energy release rate moves the "
+          "crack, not the load). '0; 0': none.");
+        prm.declare_entry(
+          "Eigenstrain",
+          "0; 0; 0",
+          Patterns::Anything(),
+          "Eigenstrain eps* of the layer (eps11; eps22; eps12: the tensor "
+          "components in the x-y frame, eps12 the tensor shear, half the "
+          "engineering shear; eps*_zz = 0) [dimensionless], as expressions of "
+          "x and y and the constants: misfit, swelling or a thermal strain "
+          "worked out by hand. The stress is sigma = C (eps(w) - eps*) and "
+          "the energy 1/2 int (eps(w) - eps*) : C (eps(w) - eps*) minus the "
+          "work of the loads. '0; 0; 0': none.");
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -176,6 +196,10 @@ namespace bilayer
           }
         prescribed[l] = prm.get("Prescribed displacement");
         refuse_absent(where + "Prescribed displacement", prescribed[l]);
+        body_force[l] = prm.get("Body force");
+        refuse_absent(where + "Body force", body_force[l]);
+        eigenstrain[l] = prm.get("Eigenstrain");
+        refuse_absent(where + "Eigenstrain", eigenstrain[l]);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -186,7 +210,43 @@ namespace bilayer
         prescribed_function(layer);
         for (unsigned int i = 0; i < parts.size(); ++i)
           traction_function(layer, i);
+        const unsigned int l = static_cast<unsigned int>(layer);
+        // (Also the ones that volume_load() skips as zero.)
+        expressions::vector_function(body_force[l],
+                                     constant_values,
+                                     "Loads/" + layer_subsection(l) +
+                                       "/Body force");
+        expressions::function(eigenstrain[l],
+                              3,
+                              "eps11; eps22; eps12",
+                              constant_values,
+                              "Loads/" + layer_subsection(l) + "/Eigenstrain");
       }
+  }
+
+
+  bool
+  LoadParameters::has_volume_load(const Layer layer) const
+  {
+    const unsigned int l = static_cast<unsigned int>(layer);
+    return !expressions::is_zero(body_force[l]) ||
+           !expressions::is_zero(eigenstrain[l]);
+  }
+
+
+  std::unique_ptr<VolumeLoad>
+  LoadParameters::volume_load(const Layer  layer,
+                              const double length_scale) const
+  {
+    if (!has_volume_load(layer))
+      return nullptr;
+    const unsigned int l = static_cast<unsigned int>(layer);
+    return std::make_unique<ExpressionVolumeLoad>(body_force[l],
+                                                  eigenstrain[l],
+                                                  constant_values,
+                                                  "Loads/" +
+                                                    layer_subsection(l),
+                                                  length_scale);
   }
 
 

@@ -41,6 +41,12 @@ namespace bilayer
                   ExcMessage("Loads/Layer 2/" + parts.traction_entry(i) +
                              " must be '0; 0': layer 2 is absent "
                              "(Materials/Number of layers = 1)"));
+    AssertThrow(materials.n_layers == 2 ||
+                  !loads.has_volume_load(Layer::second),
+                ExcMessage("Loads/Layer 2/Body force and Loads/Layer "
+                           "2/Eigenstrain must be zero ('0; 0', '0; 0; 0'): "
+                           "layer 2 is absent (Materials/Number of layers = "
+                           "1)"));
     for (const Layer layer : {Layer::first, Layer::second})
       for (unsigned int i = 0; i < parts.size(); ++i)
         AssertThrow(

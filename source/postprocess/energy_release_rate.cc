@@ -104,6 +104,53 @@ namespace bilayer
     }
 
 
+    /**
+     * The same with the volume terms of @p volume (docs/fracture.md, "Body
+     * forces and eigenstrains"), the loads fixed in space:
+     *   int sigma : (grad u grad theta) - W div theta
+     *       + sigma : ((grad eps*) theta) + (f . u) div theta
+     *       + ((grad f) theta) . u dx,
+     * sigma = C (eps(u) - eps*), W = (eps(u) - eps*) : sigma / 2, @p u the
+     * values of the displacement at the quadrature points.
+     */
+    double
+    cell_integral(const FEValues<2>               &fe_values,
+                  const std::vector<Tensor<2, 2>> &grad_u,
+                  const std::vector<Tensor<1, 2>> &u,
+                  const ElasticLaw                &law,
+                  const VolumeLoad                &volume,
+                  const ThetaField                &field)
+    {
+      const bool eigenstrain = volume.has_eigenstrain();
+      const bool body_force  = volume.has_body_force();
+      double     sum         = 0;
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const Point<2>       &x          = fe_values.quadrature_point(q);
+          const Tensor<2, 2>    grad_theta = field.gradient(x);
+          const Tensor<1, 2>    theta      = field.value(x);
+          SymmetricTensor<2, 2> elastic    = symmetrize(grad_u[q]);
+          if (eigenstrain)
+            elastic -= volume.eigenstrain(x);
+          const SymmetricTensor<2, 2> stress = law.stress(elastic);
+          double                      integrand =
+            scalar_product(Tensor<2, 2>(stress), grad_u[q] * grad_theta) -
+            law.energy_density(elastic) * trace(grad_theta);
+          if (eigenstrain)
+            {
+              // (grad eps*) theta = sum_j d eps* / d x_j theta_j.
+              const auto d_eps = volume.eigenstrain_gradient(x);
+              integrand += stress * (d_eps[0] * theta[0] + d_eps[1] * theta[1]);
+            }
+          if (body_force)
+            integrand += (volume.body_force(x) * u[q]) * trace(grad_theta) +
+                         (volume.body_force_gradient(x) * theta) * u[q];
+          sum += integrand * fe_values.JxW(q);
+        }
+      return sum;
+    }
+
+
     /// The domain integral of subproblem @p sub (solution @p u) at each tip.
     void
     subproblem_integrals(const ElasticSubproblem       &sub,
@@ -118,8 +165,10 @@ namespace bilayer
       std::map<unsigned int, std::unique_ptr<FEValues<2>>> by_pieces;
       const SimilarityBreaker          fresh(sub.fe().reference_cell());
       const FEValuesExtractors::Vector displacement(0);
-      const ElasticLaw                &law = sub.law();
+      const ElasticLaw                &law    = sub.law();
+      const VolumeLoad *const          volume = sub.volume_load();
       std::vector<Tensor<2, 2>>        grad_u;
+      std::vector<Tensor<1, 2>>        u_values;
       for (const auto &cell : sub.dof_handler().active_cell_iterators())
         {
           // No point of a cell is farther from its centre than its
@@ -143,16 +192,26 @@ namespace bilayer
               subdivided_quadrature(sub.fe().reference_cell(),
                                     sub.fe().degree + 3,
                                     m),
-              update_gradients | update_quadrature_points | update_JxW_values);
+              update_gradients | update_quadrature_points | update_JxW_values |
+                (volume != nullptr ? update_values : update_default));
           FEValues<2> &fe_values = *fe_values_m;
           fresh.apply(fe_values);
           fe_values.reinit(cell);
           grad_u.resize(fe_values.n_quadrature_points);
           fe_values[displacement].get_function_gradients(u, grad_u);
+          if (volume != nullptr)
+            {
+              u_values.resize(fe_values.n_quadrature_points);
+              fe_values[displacement].get_function_values(u, u_values);
+            }
           for (unsigned int t = 0; t < n; ++t)
             if (tips[t].defined() &&
                 fields[t].reaches(cell->center(), diameter))
-              integral(t) += cell_integral(fe_values, grad_u, law, fields[t]);
+              integral(t) +=
+                volume == nullptr ?
+                  cell_integral(fe_values, grad_u, law, fields[t]) :
+                  cell_integral(
+                    fe_values, grad_u, u_values, law, *volume, fields[t]);
         }
     }
 

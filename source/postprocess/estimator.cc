@@ -3,11 +3,13 @@
 #include <deal.II/numerics/error_estimator.h>
 
 #include <bilayer/core/boundary_ids.h>
+#include <bilayer/core/similarity_breaker.h>
 #include <bilayer/core/tasks.h>
 #include <bilayer/interface/interface_diagnostics.h>
 #include <bilayer/postprocess/estimator.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace bilayer
@@ -71,27 +73,43 @@ namespace bilayer
     }
 
 
+    /// The eigenstrain of @p sub, or null where it has none.
+    const VolumeLoad *
+    eigenstrain_of(const ElasticSubproblem &sub)
+    {
+      const VolumeLoad *volume = sub.volume_load();
+      return volume != nullptr && volume->has_eigenstrain() ? volume : nullptr;
+    }
+
+
     /// The integral over the Sigma face @p f of @p cell of
-    /// |sigma(w) n - t|^2 / scale^2, t the traction of the multipliers.
+    /// |sigma(w) n - t|^2 / scale^2, t the traction of the multipliers,
+    /// sigma(w) = C (eps(w) - eps* / S) with an eigenstrain (@p w and the
+    /// multipliers are the solution's over @p S).
     double
     face_residual(const ElasticSubproblem                   &sub,
                   const unsigned int                         s,
                   const Interface                           &interface,
                   const Vector<double>                      &w,
                   const BlockVector<double>                 &mu,
+                  const double                               S,
                   const DoFHandler<2>::active_cell_iterator &cell,
                   const unsigned int                         f,
                   FEFaceValues<2>                           &fe_face,
                   std::vector<SymmetricTensor<2, 2>>        &strain)
     {
       const FEValuesExtractors::Vector displacement(0);
-      const ElasticLaw                &law   = sub.law();
-      const double                     scale = law.energy_norm_scale();
+      const ElasticLaw                &law         = sub.law();
+      const VolumeLoad *const          eigenstrain = eigenstrain_of(sub);
+      const double                     scale       = law.energy_norm_scale();
       fe_face.reinit(cell, f);
       fe_face[displacement].get_function_symmetric_gradients(w, strain);
       double sum = 0;
       for (const unsigned int q : fe_face.quadrature_point_indices())
         {
+          if (eigenstrain != nullptr)
+            strain[q] -=
+              eigenstrain->eigenstrain(fe_face.quadrature_point(q)) / S;
           const SymmetricTensor<2, 2> stress = law.stress(strain[q]);
           const Tensor<1, 2>          residual =
             stress * fe_face.normal_vector(q) -
@@ -112,6 +130,7 @@ namespace bilayer
                     const Interface                   &interface,
                     const Vector<double>              &w,
                     const BlockVector<double>         &mu,
+                    const double                       S,
                     const std::vector<ContactSegment> &contact,
                     const double                       contact_weight,
                     const Quadrature<1>               &face_quadrature,
@@ -129,7 +148,7 @@ namespace bilayer
           if (on_sigma(cell->face(f)))
             {
               const double sum = face_residual(
-                sub, s, interface, w, mu, cell, f, fe_face, strain);
+                sub, s, interface, w, mu, S, cell, f, fe_face, strain);
               double term = cell->face(f)->diameter() / 24. * sum;
               // Layer 1 on the crack: the complementarity of the segments
               // of the mu_1 mesh under the face, by overlap.
@@ -147,14 +166,83 @@ namespace bilayer
     }
 
 
+    /**
+     * The cell residual of a subproblem with a VolumeLoad, added to
+     * @p eta2: h_K^2 / 12 int_K |f + div sigma(w)|^2 / scale^2 dx with
+     * sigma(w) = C (eps(w) - eps*), h_K the diameter of the cell, @p w the
+     * solution over @p S (so are f and eps* here). The weight is 1/12 of
+     * the residual estimator's h_K^2, as Kelly's h_F / 24 on the faces is
+     * 1/12 of its h_F / 2. div sigma(w) = sum_j C d eps / d x_j e_j from
+     * the Hessians of w (the law is linear), d eps* / d x_j from
+     * VolumeLoad::eigenstrain_gradient().
+     */
+    void
+    add_cell_residuals(const ElasticSubproblem &sub,
+                       const Vector<double>    &w,
+                       const double             S,
+                       Vector<double>          &eta2)
+    {
+      const VolumeLoad *const volume = sub.volume_load();
+      if (volume == nullptr)
+        return;
+      const ElasticLaw                &law   = sub.law();
+      const double                     scale = law.energy_norm_scale();
+      const FEValuesExtractors::Vector displacement(0);
+      FEValues<2>                      fe_values(
+        sub.mapping(),
+        sub.fe(),
+        sub.fe().reference_cell().get_gauss_type_quadrature<2>(sub.fe().degree +
+                                                               1),
+        update_hessians | update_quadrature_points | update_JxW_values);
+      const SimilarityBreaker   fresh(sub.fe().reference_cell());
+      std::vector<Tensor<3, 2>> hessians(fe_values.n_quadrature_points);
+      for (const auto &cell : sub.dof_handler().active_cell_iterators())
+        {
+          fresh.apply(fe_values);
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_hessians(w, hessians);
+          double sum = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              const Point<2> &x = fe_values.quadrature_point(q);
+              Tensor<1, 2>    residual;
+              if (volume->has_body_force())
+                residual = volume->body_force(x) / S;
+              std::array<SymmetricTensor<2, 2>, 2> d_eps_star;
+              if (volume->has_eigenstrain())
+                d_eps_star = volume->eigenstrain_gradient(x);
+              for (unsigned int j = 0; j < 2; ++j)
+                {
+                  // d eps(w) / d x_j - d eps* / d x_j.
+                  SymmetricTensor<2, 2> d_eps;
+                  const Tensor<3, 2>   &H = hessians[q];
+                  d_eps[0][0]             = H[0][0][j];
+                  d_eps[1][1]             = H[1][1][j];
+                  d_eps[0][1]             = 0.5 * (H[0][1][j] + H[1][0][j]);
+                  if (volume->has_eigenstrain())
+                    d_eps -= d_eps_star[j] / S;
+                  const SymmetricTensor<2, 2> d_sigma = law.stress(d_eps);
+                  residual[0] += d_sigma[0][j];
+                  residual[1] += d_sigma[1][j];
+                }
+              sum += (residual * residual) / (scale * scale) * fe_values.JxW(q);
+            }
+          const double h = cell->diameter();
+          eta2[cell->active_cell_index()] += h * h / 12. * sum;
+        }
+    }
+
+
     /// The squared indicators of subproblem @p s, by active cell: Kelly's,
-    /// and with @p interface_terms the Sigma terms.
+    /// with a VolumeLoad the cell residual, and with @p interface_terms the
+    /// Sigma terms.
     void
     squared_indicators(const ElasticSubproblem           &sub,
                        const unsigned int                 s,
                        const Interface                   &interface,
                        const Vector<double>              &w,
                        const BlockVector<double>         &mu,
+                       const double                       S,
                        const std::vector<ContactSegment> &contact,
                        const bool                         interface_terms,
                        const double                       contact_weight,
@@ -170,6 +258,7 @@ namespace bilayer
         sub.mapping(), sub.dof_handler(), face_quadrature, {}, w, kelly);
       for (unsigned int i = 0; i < kelly.size(); ++i)
         eta2[i] = double(kelly[i]) * kelly[i];
+      add_cell_residuals(sub, w, S, eta2);
       if (!interface_terms)
         return;
       add_sigma_terms(sub,
@@ -177,6 +266,7 @@ namespace bilayer
                       interface,
                       w,
                       mu,
+                      S,
                       contact,
                       contact_weight,
                       face_quadrature,
@@ -265,6 +355,7 @@ namespace bilayer
                              interface,
                              w[s],
                              mu,
+                             S,
                              contact,
                              interface_terms,
                              contact_weight,

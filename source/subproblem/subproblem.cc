@@ -192,6 +192,8 @@ namespace bilayer
   {
     shared_solver = shared_solver_type;
     shared.reset();
+    volume_             = volume;
+    eigenstrain_energy_ = 0;
     Timer timer;
     dofs.distribute_dofs(*fe_system);
 
@@ -235,6 +237,8 @@ namespace bilayer
         load_vector.reinit(dofs.n_dofs());
       }
     assemble(clamped, traction, volume);
+    if (volume != nullptr && volume->has_eigenstrain())
+      eigenstrain_energy_ = eigenstrain_energy();
     assembly_seconds = timer.wall_time();
 
     timer.restart();
@@ -529,9 +533,36 @@ namespace bilayer
 
 
   double
+  ElasticSubproblem::eigenstrain_energy() const
+  {
+    FEValues<2> fe_values(
+      mapping(),
+      *fe_system,
+      fe_system->reference_cell().get_gauss_type_quadrature<2>(
+        fe_system->degree + 1),
+      update_quadrature_points | update_JxW_values);
+    const SimilarityBreaker fresh(fe_system->reference_cell());
+    double                  sum = 0;
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        fresh.apply(fe_values);
+        fe_values.reinit(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          sum += law_->energy_density(
+                   volume_->eigenstrain(fe_values.quadrature_point(q))) *
+                 fe_values.JxW(q);
+      }
+    return sum;
+  }
+
+
+  double
   ElasticSubproblem::energy(const Vector<double> &w) const
   {
-    return 0.5 * energy_norm_squared(w) -
-           (shared ? shared->load_product(w) : ordered_dot(load_vector, w));
+    const double energy =
+      0.5 * energy_norm_squared(w) -
+      (shared ? shared->load_product(w) : ordered_dot(load_vector, w));
+    // (Without an eigenstrain exactly the sum above, bit for bit.)
+    return eigenstrain_energy_ == 0 ? energy : energy + eigenstrain_energy_;
   }
 } // namespace bilayer

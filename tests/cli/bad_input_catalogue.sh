@@ -152,6 +152,15 @@ run "load does not parse" "Loads/Layer 1/Traction on bottom side: cannot evaluat
 run "load evaluates to NaN" "Loads/Layer 1/Traction on bottom side must be finite on the bottom side" "Loads/Layer 1/Traction on bottom side=0; sqrt(x-5)"
 run "prescribed displacement infinite" "Loads/Layer 2/Prescribed displacement must be finite on the left side" "Loads/Layer 2/Prescribed displacement=0; 1/(x-x)"
 run "load on an absent layer" "Loads/Layer 2/Traction on top side must be '0; 0': layer 2 is absent (Materials/Number of layers = 1)" "Loads/Layer 2/Traction on top side=0; 1" --set "Materials/Number of layers=1"
+# Body forces and eigenstrains: the number of components and the parse when
+# read; a value that is not finite where it is evaluated (the assembly,
+# after the output directory was staged: staging removed, one line, exit 1).
+run "body force of three components" "Loads/Layer 1/Body force must have two components separated by ';' (x-component; y-component), got '0; 1; 2'" "Loads/Layer 1/Body force=0; 1; 2"
+run "eigenstrain of two components" "Loads/Layer 2/Eigenstrain must have three components separated by ';' (eps11; eps22; eps12), got '1e-3; 0'" "Loads/Layer 2/Eigenstrain=1e-3; 0"
+run "body force does not parse" "Loads/Layer 1/Body force: cannot evaluate '0; c*'" "Loads/Layer 1/Body force=0; c*"
+run "eigenstrain NaN everywhere" "Loads/Layer 1/Eigenstrain is not finite at (x, y) = (" "Loads/Layer 1/Eigenstrain=log(x-10); 0; 0"
+run "body force infinite" "Loads/Layer 2/Body force is not finite at (x, y) = (" "Loads/Layer 2/Body force=0; 1/(x-x)"
+run "eigenstrain on an absent layer" "Loads/Layer 2/Body force and Loads/Layer 2/Eigenstrain must be zero ('0; 0', '0; 0; 0'): layer 2 is absent (Materials/Number of layers = 1)" "Loads/Layer 2/Eigenstrain=1e-3; 0; 0" --set "Materials/Number of layers=1"
 run "missing mesh file" "Mesh/Mesh files: cannot open" "Mesh/Mesh files=nothere_{side}.msh"
 run "mesh file is a directory" "Mesh/Mesh files: cannot open 'mesh_dir_minus': not a regular file" "Mesh/Mesh files=mesh_dir_{side}"
 # Broken meshes (Gmsh format 2.2, three columns of two triangles per half

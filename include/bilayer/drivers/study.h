@@ -212,6 +212,12 @@ namespace bilayer
     const Scene         scene;
     std::ostream       &out;
     const Distribution &distribution;
+
+    /// Per layer: its body force and eigenstrain (Loads/Layer k), null
+    /// where it has neither; the subproblems of the layer refer to it (so
+    /// declared before them).
+    std::array<std::unique_ptr<VolumeLoad>, Layout::n_layers> volume_loads;
+
     /// Progress (Output/Terminal output = full) and the checks, both on the
     /// first process only.
     dealii::ConditionalOStream                        pcout, rout;

@@ -7,6 +7,7 @@
 #include <bilayer/interface/interface_diagnostics.h>
 #include <bilayer/output/output_directory.h>
 #include <bilayer/physics/elastic_law.h>
+#include <bilayer/physics/volume_load.h>
 #include <bilayer/solvers/outer_solver.h>
 #include <bilayer/subproblem/subproblem.h>
 
@@ -23,11 +24,15 @@ namespace bilayer
    * ElasticLaw: sigma, sigma_zz, and the von Mises stress
    * sqrt(((s_xx - s_yy)^2 + (s_yy - s_zz)^2 + (s_zz - s_xx)^2) / 2
    *      + 3 s_xy^2).
+   * With an eigenstrain eps* (@p volume), of the elastic strain:
+   * sigma = C (eps(w) - eps*), sigma_zz = out_of_plane_stress(eps(w) -
+   * eps*) (plane strain, eps*_zz = 0).
    */
   class StressPostprocessor : public dealii::DataPostprocessor<2>
   {
   public:
-    explicit StressPostprocessor(const ElasticLaw &law);
+    explicit StressPostprocessor(const ElasticLaw &law,
+                                 const VolumeLoad *volume = nullptr);
 
     void
     evaluate_vector_field(
@@ -42,6 +47,8 @@ namespace bilayer
 
   private:
     const ElasticLaw &law;
+    /// The eigenstrain, or null where the layer has none.
+    const VolumeLoad *eigenstrain;
   };
 
   /**

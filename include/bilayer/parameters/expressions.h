@@ -55,6 +55,23 @@ namespace bilayer
     vector_function(const std::string                   &expression,
                     const std::map<std::string, double> &constants,
                     const std::string                   &entry);
+
+    /**
+     * As vector_function(), with @p n_components components separated by
+     * ';', described by @p components in the message that refuses another
+     * number (e.g. "eps11; eps22; eps12").
+     */
+    std::unique_ptr<dealii::FunctionParser<2>>
+    function(const std::string                   &expression,
+             const unsigned int                   n_components,
+             const std::string                   &components,
+             const std::map<std::string, double> &constants,
+             const std::string                   &entry);
+
+    /// Whether every ';'-separated component of @p expression is the
+    /// number 0 ("0", "0.0", "-0", "0e0", blanks around).
+    bool
+    is_zero(const std::string &expression);
   } // namespace expressions
 } // namespace bilayer
 

@@ -7,6 +7,7 @@
 #include <bilayer/core/layout.h>
 #include <bilayer/parameters/geometry_parameters.h>
 #include <bilayer/parameters/material_parameters.h>
+#include <bilayer/physics/volume_load.h>
 
 #include <array>
 #include <map>
@@ -15,8 +16,9 @@
 #include <vector>
 
 /**
- * The subsection Loads: named constants, tractions on the boundary parts
- * and prescribed displacements, as expressions (expressions.h).
+ * The subsection Loads: named constants, tractions on the boundary parts,
+ * prescribed displacements, body forces and eigenstrains, as expressions
+ * (expressions.h).
  */
 namespace bilayer
 {
@@ -34,6 +36,10 @@ namespace bilayer
     std::array<std::vector<std::string>, Layout::n_layers> traction;
     /// prescribed[layer], "u_x; u_y", on the clamped sides
     std::array<std::string, 2> prescribed = {{"0; 0", "0; 0"}};
+    /// body_force[layer], "f_x; f_y" [stress / length]
+    std::array<std::string, 2> body_force = {{"0; 0", "0; 0"}};
+    /// eigenstrain[layer], "eps11; eps22; eps12" [-]
+    std::array<std::string, 2> eigenstrain = {{"0; 0; 0", "0; 0; 0"}};
 
     /// The evaluated constants (material constants included).
     std::map<std::string, double> constant_values;
@@ -52,6 +58,18 @@ namespace bilayer
     traction_function(const Layer layer, const unsigned int part) const;
     std::unique_ptr<dealii::FunctionParser<2>>
     prescribed_function(const Layer layer) const;
+    /**
+     * The body force and eigenstrain of @p layer as a VolumeLoad
+     * (ExpressionVolumeLoad, its default gradients with the step 1e-3 of
+     * @p length_scale), or null where both entries are "0" in every
+     * component: such a layer passes no VolumeLoad, exactly as a scene
+     * without these entries.
+     */
+    std::unique_ptr<VolumeLoad>
+    volume_load(const Layer layer, const double length_scale) const;
+    /// Whether @p layer has a body force or an eigenstrain.
+    bool
+    has_volume_load(const Layer layer) const;
     /// Whether the traction expression of a part is identically "0; 0".
     bool
     traction_is_zero(const Layer layer, const unsigned int part) const;

@@ -5,18 +5,24 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <array>
+
 namespace bilayer
 {
   /**
    * The volume terms of a layer's load: a body force f [stress / length]
-   * and an eigenstrain eps* (thermal, misfit, swelling strains), entering
-   * the right-hand side of the cell system as
+   * and an eigenstrain eps* (thermal, misfit, swelling strains; in-plane,
+   * eps*_zz = 0), entering the right-hand side of the cell system as
    *
    *   l_vol(z) = int f . z + sigma(eps*) : eps(z) dx,
    *
-   * so that the stress of a displacement w is sigma(eps(w) - eps*). The
-   * shipped scenes carry none (tractions and prescribed displacements
-   * only); ElasticSubproblem::setup() takes one where a scene has it.
+   * so that the stress of a displacement w is sigma(eps(w) - eps*) and the
+   * energy is the potential energy of the eigenstrained body,
+   *
+   *   Pi(w) = 1/2 int (eps(w) - eps*) : C (eps(w) - eps*) - int f . w - ...
+   *
+   * (docs/problem.md §1). A layer without either passes no VolumeLoad at
+   * all (ElasticSubproblem::setup() takes a null pointer).
    */
   class VolumeLoad
   {
@@ -30,6 +36,49 @@ namespace bilayer
     /// The eigenstrain at @p p.
     virtual dealii::SymmetricTensor<2, 2>
     eigenstrain(const dealii::Point<2> &p) const = 0;
+
+    /// Whether the body force may be non-zero (false: it is zero
+    /// everywhere, and the terms of f may be skipped).
+    virtual bool
+    has_body_force() const
+    {
+      return true;
+    }
+
+    /// Whether the eigenstrain may be non-zero (false: zero everywhere).
+    virtual bool
+    has_eigenstrain() const
+    {
+      return true;
+    }
+
+    /**
+     * The length over which the fields vary, of the order of the size of
+     * the domain: the step of the default gradients below is
+     * gradient_step_fraction times it.
+     */
+    virtual double
+    length_scale() const
+    {
+      return 1;
+    }
+
+    /// The step of the default gradients over length_scale().
+    static constexpr double gradient_step_fraction = 1e-3;
+
+    /**
+     * grad f at @p p: entry (i, j) = d f_i / d x_j. The default: the
+     * fourth-order central difference (f(p - 2h) - 8 f(p - h) + 8 f(p + h)
+     * - f(p + 2h)) / 12h along each axis, h = gradient_step_fraction *
+     * length_scale() (truncation h^4 f^(5) / 30, exact for polynomials of
+     * degree 4; rounding about 1e-16 |f| / h).
+     */
+    virtual dealii::Tensor<2, 2>
+    body_force_gradient(const dealii::Point<2> &p) const;
+
+    /// d eps* / d x_j at @p p for j = 0, 1 (the default as above).
+    virtual std::array<dealii::SymmetricTensor<2, 2>, 2>
+    eigenstrain_gradient(const dealii::Point<2> &p) const;
   };
 } // namespace bilayer
 

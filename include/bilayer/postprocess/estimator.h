@@ -15,7 +15,8 @@ namespace bilayer
    * Error indicators per active cell of the two subdomain meshes (indexed
    * by active_cell_index()), for adaptive refinement:
    *   eta_K^2 = eta_K(u)^2 + eta_K(v)^2 + sum over the Sigma faces F of K
-   *             of h_F / 24 int_F |(sigma(w) n - t) / (2 mu)|^2 ds,
+   *             of h_F / 24 int_F |(sigma(w) n - t) / (2 mu)|^2 ds
+   *             [+ h_K^2 / 12 int_K |(f + div sigma(w)) / (2 mu)|^2 dx],
    * where eta_K(w) is Kelly's indicator (jumps of the normal derivative
    * across interior faces, deal.II's KellyErrorEstimator) of each layer and,
    * with @p interface_terms, t is the traction of the multipliers on the
@@ -31,6 +32,12 @@ namespace bilayer
    * among the faces by overlap; an energy over 2 mu, so again a squared
    * length): the discrete constraints hold at the nodes only, and the product
    * is non-zero on the segment where the contact zone ends.
+   * A layer with a VolumeLoad (body force f, eigenstrain eps*) has
+   * sigma(w) = C (eps(w) - eps*) in the Sigma residual and the cell
+   * residual in brackets (h_K the cell's diameter; the weight 1/12 of the
+   * residual estimator's h_K^2, as Kelly's h_F / 24 is 1/12 of its
+   * h_F / 2; div sigma from the Hessians of w and the gradient of eps*); a
+   * layer without one has neither.
    *
    * With @p global_estimate, also the global estimate in the units of the
    * energy norm,

@@ -30,6 +30,10 @@
  *
  * W = sigma : eps / 2, s_d = +-1 the direction of growth along tau, kappa
  * the curvature of Sigma (the last term exists on a curved Sigma only).
+ * A layer with a VolumeLoad (body force f, eigenstrain eps*, both fixed in
+ * space) adds sigma : ((grad eps*) theta) + (f . u) div theta +
+ * ((grad f) theta) . u to the integrand, with sigma = C (eps - eps*) and
+ * W = (eps - eps*) : sigma / 2 (docs/fracture.md §5).
  */
 namespace bilayer
 {

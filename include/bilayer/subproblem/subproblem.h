@@ -63,7 +63,10 @@ namespace bilayer
      * Distribute dofs, build constraints, assemble the stiffness matrix and
      * the load vector, factorise. @p traction[side] is used on the sides
      * that are not clamped; @p prescribed on the clamped ones; @p volume
-     * (if not null) adds its volume terms to the load.
+     * (if not null) adds its volume terms to the load and the constant E*
+     * of an eigenstrain to energy(); it is kept (volume_load(): the
+     * stresses, G and the error estimator read it) and must outlive the
+     * subproblem's solutions.
      */
     void
     setup(const std::vector<bool>                        &clamped,
@@ -177,9 +180,22 @@ namespace bilayer
     double
     energy_norm_squared(const dealii::Vector<double> &w) const;
 
-    /// Pi(w) = a(w, w) / 2 - (F, w) [energy].
+    /**
+     * Pi(w) = a(w, w) / 2 - (F, w) + E* [energy], with E* =
+     * 1/2 int eps* : C eps* dx the constant of an eigenstrain (0 without
+     * one): the potential energy of the eigenstrained body,
+     * 1/2 int (eps(w) - eps*) : C (eps(w) - eps*) dx - int f . w dx - the
+     * work of the tractions.
+     */
     double
     energy(const dealii::Vector<double> &w) const;
+
+    /// The VolumeLoad that setup() was given (null: none).
+    const VolumeLoad *
+    volume_load() const
+    {
+      return volume_;
+    }
 
     /// The constraints of solve_homogeneous(): the hanging nodes and zero
     /// displacement on the clamped sides.
@@ -308,6 +324,15 @@ namespace bilayer
       std::vector<std::pair<unsigned int, double>> entries;
     };
     std::vector<ConstrainedSigmaDof> constrained_sigma_dofs;
+
+    /// The volume terms of setup(), and E* of energy() (owners only).
+    const VolumeLoad *volume_             = nullptr;
+    double            eigenstrain_energy_ = 0;
+
+    /// E* = 1/2 int eps* : C eps* dx over all cells (the Gauss rule of the
+    /// assembly).
+    double
+    eigenstrain_energy() const;
 
     /// The Sigma dofs to eliminate last for the Schur complement, or none
     /// if a constrained Sigma dof depends on dofs off Sigma.
