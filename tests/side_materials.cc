@@ -230,9 +230,6 @@ namespace
               << ": nodal displacements = the exact field (1e-10 of its "
                  "largest value): "
               << yes(error <= 1e-10 * largest) << std::endl;
-    std::cerr << name << ": relative energy error "
-              << std::abs(energy - exact_energy) / exact_energy
-              << ", relative nodal error " << error / largest << std::endl;
   }
 } // namespace
 
@@ -310,8 +307,6 @@ namespace
               << "interface crack: the finite difference of Pi agrees with "
                  "the domain integral G at the tip to 2 %: "
               << yes(std::abs(G_fd - G) <= 0.02 * std::abs(G)) << std::endl;
-    std::cerr << "interface crack: G = " << G << ", G_FD = " << G_fd
-              << ", relative difference " << (G_fd - G) / G << std::endl;
   }
 } // namespace
 
