@@ -315,13 +315,13 @@ namespace bilayer
           for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
             {
               auto &sub = subproblems[Layout::index(layer, sd)];
-              sub =
-                std::make_unique<ElasticSubproblem>(layer,
-                                                    sd,
-                                                    domain.triangulation(sd),
-                                                    scene.mesh.degree(layer),
-                                                    scene.materials.layer[l],
-                                                    distribution);
+              sub       = std::make_unique<ElasticSubproblem>(
+                layer,
+                sd,
+                domain.triangulation(sd),
+                scene.mesh.degree(layer),
+                scene.materials.material(layer, sd),
+                distribution);
               ElasticSubproblem *const target = sub.get();
               setups.add([&, target, l]() {
                 target->setup(scene.geometry.clamped,

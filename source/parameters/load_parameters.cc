@@ -7,7 +7,9 @@
 #include <bilayer/parameters/parameter_entries.h>
 #include <bilayer/physics/elastic_law.h>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace bilayer
@@ -19,23 +21,71 @@ namespace bilayer
   namespace
   {
     /**
-     * Why the layer @p l of the material @p m does not define one of the
-     * constants E, nu, mu, lambda of the load expressions.
+     * Why the material @p m of the layer @p l, given in the subsection
+     * @p section, does not define one of the constants E, nu, mu, lambda of
+     * the load expressions.
      */
     std::string
-    absent_constant(const LayerMaterial &m, const unsigned int l)
+    absent_constant(const LayerMaterial &m,
+                    const unsigned int   l,
+                    const std::string   &section)
     {
-      const std::string layer = "Materials/" + layer_subsection(l);
-      const std::string n     = std::to_string(l + 1);
+      const std::string n = std::to_string(l + 1);
       if (m.law == MaterialLaw::isotropic)
-        return "which is infinite for " + layer +
+        return "which is infinite for " + section +
                "/Poisson's ratio = 0.5 (plane stress): the loads cannot use "
                "it";
       return "a constant of isotropic layers only (E" + n + ", nu" + n +
-             ", mu" + n + ", lambda" + n + "), but " + layer + "/Law = " +
+             ", mu" + n + ", lambda" + n + "), but " + section + "/Law = " +
              (m.law == MaterialLaw::orthotropic ? "orthotropic" :
                                                   "anisotropic") +
              ": write its value as a number";
+    }
+
+
+    /**
+     * The constants E, nu, mu, lambda of the layer @p l that both its sides
+     * define alike (@p values, with the layer number), and why the others
+     * are not defined (@p why_absent): a side whose law does not define
+     * one, or sides whose values differ.
+     */
+    void
+    layer_constants(const MaterialParameters           &materials,
+                    const unsigned int                  l,
+                    std::map<std::string, double>      &values,
+                    std::map<std::string, std::string> &why_absent)
+    {
+      const Layer       layer   = static_cast<Layer>(l);
+      const std::string n       = std::to_string(l + 1);
+      const std::string section = "Materials/" + layer_subsection(l);
+      std::array<std::map<std::string, double>, 2> given;
+      for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+        given[static_cast<unsigned int>(sd)] =
+          make_elastic_law(materials.material(layer, sd))->load_constants();
+      for (const std::string name : {"E", "nu", "mu", "lambda"})
+        {
+          const bool minus = given[0].count(name) > 0;
+          const bool plus  = given[1].count(name) > 0;
+          if (minus && plus && given[0].at(name) == given[1].at(name))
+            values[name + n] = given[0].at(name);
+          else if (minus && plus)
+            why_absent[name + n] =
+              "which differs between the sides of the layer (" + name + " = " +
+              number(given[0].at(name)) + " on " + section + "/Omega-, " +
+              number(given[1].at(name)) +
+              " on Omega+): write the value of one side as a number";
+          else
+            {
+              const unsigned int s = minus ? 1 : 0;
+              why_absent[name + n] =
+                absent_constant(materials.material(layer,
+                                                   static_cast<Subdomain>(s)),
+                                l,
+                                materials.side[l][s] ?
+                                  section + (s == 0 ? "/Omega-" : "/Omega+") :
+                                  section);
+            }
+        }
     }
   } // namespace
 
@@ -113,26 +163,19 @@ namespace bilayer
     constant_values.clear();
     // The material constants: E, nu, mu, lambda of each layer are reserved
     // names; a layer whose law does not define one (orthotropic and
-    // anisotropic layers, lambda at nu = 0.5 in plane stress) leaves it
-    // out, and an expression that names it is refused (why_absent).
+    // anisotropic layers, lambda at nu = 0.5 in plane stress) or whose
+    // sides give it different values leaves it out, and an expression that
+    // names it is refused (why_absent).
     std::set<std::string>              materials_constants;
     std::map<std::string, std::string> why_absent;
     for (unsigned int l = 0; l < 2; ++l)
       {
-        const std::string n = std::to_string(l + 1);
-        const auto        given =
-          make_elastic_law(materials.layer[l])->load_constants();
-        for (const auto &[name, value] : given)
-          {
-            constant_values[name + n] = value;
-            materials_constants.insert(name + n);
-          }
+        std::map<std::string, double> values;
+        layer_constants(materials, l, values, why_absent);
+        for (const auto &[name, value] : values)
+          constant_values[name] = value;
         for (const std::string name : {"E", "nu", "mu", "lambda"})
-          if (given.count(name) == 0)
-            {
-              materials_constants.insert(name + n);
-              why_absent[name + n] = absent_constant(materials.layer[l], l);
-            }
+          materials_constants.insert(name + std::to_string(l + 1));
       }
     const auto refuse_absent = [&](const std::string &entry,
                                    const std::string &text) {

@@ -88,17 +88,26 @@ namespace bilayer
           const double D = std::max(geometry.x_max - geometry.x_min,
                                     geometry.y_max - geometry.y_min);
           // (E of an isotropic layer; the energy-norm scale, the smallest
-          // stiffness, of the other laws.)
-          const LayerMaterial &material =
-            materials.layer[static_cast<unsigned int>(layer)];
-          const double E = material.law == MaterialLaw::isotropic ?
-                             material.youngs_modulus :
-                             make_elastic_law(material)->energy_norm_scale();
-          // (In logarithms: the energy itself may overflow.)
-          const double log_energy =
-            geometry.clamped[s] ?
-              std::log10(E) + 2 * std::log10(largest) :
-              2 * std::log10(largest) + 2 * std::log10(D) - std::log10(E);
+          // stiffness, of the other laws; of the side of the layer that
+          // makes the energy the farthest from 1 where the sides differ.)
+          double E = 0, log_energy = 0;
+          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+            {
+              const LayerMaterial &material = materials.material(layer, sd);
+              const double         E_side =
+                material.law == MaterialLaw::isotropic ?
+                          material.youngs_modulus :
+                          make_elastic_law(material)->energy_norm_scale();
+              // (In logarithms: the energy itself may overflow.)
+              const double log_side =
+                geometry.clamped[s] ?
+                  std::log10(E_side) + 2 * std::log10(largest) :
+                  2 * std::log10(largest) + 2 * std::log10(D) -
+                    std::log10(E_side);
+              if (sd == Subdomain::minus ||
+                  std::abs(log_side) > std::abs(log_energy))
+                E = E_side, log_energy = log_side;
+            }
           // (Moduli beyond that range are refused where the stiffness is
           // assembled, naming the modulus.)
           if ((log_energy <= max_load_energy_log10 &&

@@ -5,6 +5,11 @@
 #include <bilayer/parameters/parameter_entries.h>
 
 #include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
 
 namespace bilayer
 {
@@ -120,22 +125,20 @@ namespace bilayer
 
 
     /**
-     * The entry Stiffness of the current subsection (@p section); @p check:
-     * refused unless positive definite.
+     * The entry @p entry (a Stiffness) of the text @p text; @p check: refused
+     * unless positive definite.
      */
     std::array<double, 6>
-    parse_stiffness(const ParameterHandler &prm,
-                    const std::string      &section,
-                    const bool              check)
+    parse_stiffness(const std::string &text,
+                    const std::string &entry,
+                    const bool         check)
     {
-      const std::string entry = section + "/Stiffness";
-      const auto        parts =
-        Utilities::split_string_list(prm.get("Stiffness"), ',');
+      const auto parts = Utilities::split_string_list(text, ',');
       AssertThrow(parts.size() == 6,
                   ExcMessage(entry +
                              " must be six numbers 'C11, C12, C16, C22, C26, "
                              "C66', got '" +
-                             prm.get("Stiffness") + "'"));
+                             text + "'"));
       std::array<double, 6> c;
       for (unsigned int i = 0; i < 6; ++i)
         c[i] = to_double(parts[i], entry);
@@ -152,8 +155,171 @@ namespace bilayer
                              " must be symmetric positive definite (C11 > 0, "
                              "C11 C22 - C12^2 > 0 and det [[C11, C12, C16], "
                              "[C12, C22, C26], [C16, C26, C66]] > 0), got '" +
-                             prm.get("Stiffness") + "'"));
+                             text + "'"));
       return c;
+    }
+
+
+    /// The entries of a layer's law, which its sides may override.
+    const std::vector<std::string> law_entries = {"Law",
+                                                  "Young's modulus",
+                                                  "Poisson's ratio",
+                                                  "E_1",
+                                                  "E_2",
+                                                  "E_3",
+                                                  "nu_12",
+                                                  "nu_13",
+                                                  "nu_23",
+                                                  "G_12",
+                                                  "Orientation angle",
+                                                  "Stiffness"};
+
+
+    /// The pattern of the law entry @p name of a layer.
+    std::unique_ptr<Patterns::PatternBase>
+    law_pattern(const std::string &name)
+    {
+      if (name == "Law")
+        return std::make_unique<Patterns::Selection>(
+          "isotropic|orthotropic|anisotropic");
+      if (name == "Poisson's ratio")
+        return std::make_unique<Patterns::Double>(-1, 0.5);
+      if (name == "Orientation angle")
+        return std::make_unique<Patterns::Double>(-360, 360);
+      if (name == "Stiffness")
+        return std::make_unique<Patterns::List>(Patterns::Double(), 6, 6, ",");
+      if (name.substr(0, 3) == "nu_")
+        return std::make_unique<Patterns::Double>();
+      return std::make_unique<Patterns::Double>(0);
+    }
+
+
+    /// The text of an entry and its full path, by the entry's name.
+    using EntryText = std::function<std::string(const std::string &)>;
+
+
+    /**
+     * Read the law entries of @p m from @p text and refuse inadmissible
+     * constants: @p entry names an entry in the messages, @p where (a
+     * subsection and '/') the messages on several entries. The plane state
+     * of @p m is given.
+     */
+    void
+    read_law(LayerMaterial     &m,
+             const EntryText   &text,
+             const EntryText   &entry,
+             const std::string &where)
+    {
+      const std::string law = text("Law");
+      m.law                 = law == "orthotropic" ? MaterialLaw::orthotropic :
+                              law == "anisotropic" ? MaterialLaw::anisotropic :
+                                                     MaterialLaw::isotropic;
+      const auto value      = [&](const std::string &name) {
+        return to_double(text(name), entry(name));
+      };
+      m.youngs_modulus        = value("Young's modulus");
+      m.poisson_ratio         = value("Poisson's ratio");
+      OrthotropicConstants &o = m.orthotropic;
+      o.E_1                   = value("E_1");
+      o.E_2                   = value("E_2");
+      o.E_3                   = value("E_3");
+      o.nu_12                 = value("nu_12");
+      o.nu_13                 = value("nu_13");
+      o.nu_23                 = value("nu_23");
+      o.G_12                  = value("G_12");
+      m.orientation_angle     = value("Orientation angle");
+      m.stiffness             = parse_stiffness(text("Stiffness"),
+                                    entry("Stiffness"),
+                                    m.law == MaterialLaw::anisotropic);
+      if (m.law == MaterialLaw::orthotropic)
+        check_orthotropic(o, m.plane_state, where);
+      if (m.law == MaterialLaw::isotropic)
+        {
+          const bool stress = m.plane_state == PlaneState::plane_stress;
+          AssertThrow(m.youngs_modulus > 0,
+                      ExcMessage(entry("Young's modulus") +
+                                 " must be > 0, got " +
+                                 text("Young's modulus")));
+          AssertThrow(
+            m.poisson_ratio > -1 &&
+              (m.poisson_ratio < 0.5 || (stress && m.poisson_ratio == 0.5)),
+            ExcMessage(entry("Poisson's ratio") + " must lie in " +
+                       (stress ? "(-1, 0.5] (plane stress)" : "(-1, 0.5)") +
+                       ", got " + text("Poisson's ratio")));
+        }
+    }
+
+
+    /// The subsections of the sides of a layer.
+    const std::array<std::string, 2> side_subsections = {{"Omega-", "Omega+"}};
+
+
+    /**
+     * The subsection Materials/Layer k/Omega- or Omega+ (@p side) of the
+     * layer @p l, entered: the layer's material @p layer with the entries
+     * the side gives, checked; none if it gives none.
+     */
+    std::optional<LayerMaterial>
+    parse_side(const ParameterHandler &prm,
+               const unsigned int      l,
+               const unsigned int      side,
+               const LayerMaterial    &layer,
+               const EntryText        &layer_text)
+    {
+      const std::string layer_section = "Materials/" + layer_subsection(l);
+      const std::string section = layer_section + "/" + side_subsections[side];
+      std::map<std::string, std::string> given;
+      for (const std::string &name : law_entries)
+        {
+          const std::string value = Utilities::trim(prm.get(name));
+          if (value.empty())
+            continue;
+          const auto pattern = law_pattern(name);
+          AssertThrow(pattern->match(value),
+                      ExcMessage(section + "/" + name + ": '" + value +
+                                 "' does not match the pattern " +
+                                 pattern->description() + " of " +
+                                 layer_section + "/" + name +
+                                 " (empty: as the layer)"));
+          given[name] = value;
+        }
+      if (given.empty())
+        return {};
+      LayerMaterial m = layer;
+      read_law(
+        m,
+        [&](const std::string &name) {
+          return given.count(name) ? given.at(name) : layer_text(name);
+        },
+        [&](const std::string &name) {
+          return (given.count(name) ? section : layer_section) + "/" + name;
+        },
+        section + "/");
+      return m;
+    }
+
+
+    /// The subsections Omega- and Omega+ of the layer @p l (entered).
+    void
+    declare_sides(ParameterHandler &prm, const unsigned int l)
+    {
+      const std::string layer = "Materials/" + layer_subsection(l);
+      for (unsigned int s = 0; s < 2; ++s)
+        {
+          prm.enter_subsection(side_subsections[s]);
+          for (const std::string &name : law_entries)
+            prm.declare_entry(
+              name,
+              "",
+              Patterns::Anything(),
+              "The layer's material on " + side_subsections[s] +
+                (s == 0 ? " (below Sigma; a Gmsh scene's group Omega-)" :
+                          " (above Sigma; a Gmsh scene's group Omega+)") +
+                ": empty (the default) as " + layer + "/" + name +
+                ", else a value of that entry for this side alone. The "
+                "plane state is the layer's.");
+          prm.leave_subsection();
+        }
     }
   } // namespace
 
@@ -212,6 +378,7 @@ namespace bilayer
           "positive definite matrix of (s11, s22, s12) against (e11, e22, "
           "2 e12) in the x-y frame [stress, the unit of Young's modulus]; "
           "the default is isotropic (lambda = 100, mu = 75).");
+        declare_sides(prm, l);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -226,43 +393,27 @@ namespace bilayer
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
-        const std::string section = "Materials/" + layer_subsection(l);
-        const std::string where   = section + "/";
-        LayerMaterial    &m       = layer[l];
-        const std::string law     = prm.get("Law");
-        m.law            = law == "orthotropic" ? MaterialLaw::orthotropic :
-                           law == "anisotropic" ? MaterialLaw::anisotropic :
-                                                  MaterialLaw::isotropic;
-        m.plane_state    = prm.get("Plane state") == "plane stress" ?
-                             PlaneState::plane_stress :
-                             PlaneState::plane_strain;
-        m.youngs_modulus = get_double(prm, section, "Young's modulus");
-        m.poisson_ratio  = get_double(prm, section, "Poisson's ratio");
-        OrthotropicConstants &o = m.orthotropic;
-        o.E_1                   = get_double(prm, section, "E_1");
-        o.E_2                   = get_double(prm, section, "E_2");
-        o.E_3                   = get_double(prm, section, "E_3");
-        o.nu_12                 = get_double(prm, section, "nu_12");
-        o.nu_13                 = get_double(prm, section, "nu_13");
-        o.nu_23                 = get_double(prm, section, "nu_23");
-        o.G_12                  = get_double(prm, section, "G_12");
-        m.orientation_angle     = get_double(prm, section, "Orientation angle");
-        m.stiffness =
-          parse_stiffness(prm, section, m.law == MaterialLaw::anisotropic);
-        if (m.law == MaterialLaw::orthotropic)
-          check_orthotropic(o, m.plane_state, where);
-        if (m.law == MaterialLaw::isotropic)
+        const std::string where = "Materials/" + layer_subsection(l) + "/";
+        LayerMaterial    &m     = layer[l];
+        m.plane_state           = prm.get("Plane state") == "plane stress" ?
+                                    PlaneState::plane_stress :
+                                    PlaneState::plane_strain;
+        std::map<std::string, std::string> texts;
+        for (const std::string &name : law_entries)
+          texts[name] = prm.get(name);
+        const EntryText text = [&](const std::string &name) {
+          return texts.at(name);
+        };
+        read_law(
+          m,
+          text,
+          [&](const std::string &name) { return where + name; },
+          where);
+        for (unsigned int s = 0; s < 2; ++s)
           {
-            const bool stress = m.plane_state == PlaneState::plane_stress;
-            AssertThrow(m.youngs_modulus > 0,
-                        ExcMessage(where + "Young's modulus must be > 0, got " +
-                                   prm.get("Young's modulus")));
-            AssertThrow(
-              m.poisson_ratio > -1 &&
-                (m.poisson_ratio < 0.5 || (stress && m.poisson_ratio == 0.5)),
-              ExcMessage(where + "Poisson's ratio must lie in " +
-                         (stress ? "(-1, 0.5] (plane stress)" : "(-1, 0.5)") +
-                         ", got " + prm.get("Poisson's ratio")));
+            prm.enter_subsection(side_subsections[s]);
+            side[l][s] = parse_side(prm, l, s, m, text);
+            prm.leave_subsection();
           }
         prm.leave_subsection();
       }

@@ -124,6 +124,16 @@ namespace bilayer
       "; what bilayer models and what not: the README's table 'What "
       "bilayer models - and what not'; every entry: bilayer "
       "--print-parameters";
+    // The plane state is the layer's: the sides of Sigma have none.
+    const std::string plane_state = "/Plane state";
+    if ((name.find("/Omega-/") != std::string::npos ||
+         name.find("/Omega+/") != std::string::npos) &&
+        name.size() > plane_state.size() &&
+        name.compare(name.size() - plane_state.size(),
+                     plane_state.size(),
+                     plane_state) == 0)
+      return "; the plane state is one per layer (Materials/Layer k/Plane "
+             "state), the same on both sides of Sigma";
     std::string lower;
     for (const char c : name)
       lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

@@ -141,6 +141,17 @@ run "traction using E1 of an orthotropic layer" "Loads/Layer 1/Traction on top s
 run "prescribed displacement using nu2 of an anisotropic layer" "Loads/Layer 2/Prescribed displacement: '0; 1e-3*nu2' uses nu2, a constant of isotropic layers only (E2, nu2, mu2, lambda2), but Materials/Layer 2/Law = anisotropic" "Materials/Layer 2/Law=anisotropic" --set "Loads/Layer 2/Prescribed displacement=0; 1e-3*nu2"
 run "lambda1 at nu = 0.5 in plane stress" "Loads/Constants: 'c = 1e-9*lambda1' uses lambda1, which is infinite for Materials/Layer 1/Poisson's ratio = 0.5 (plane stress)" "Materials/Layer 1/Plane state=plane stress" --set "Materials/Layer 1/Poisson's ratio=0.5" --set "Loads/Constants=c = 1e-9*lambda1"
 run "constant named E1 of an orthotropic layer" "Loads/Constants: the name 'E1' is reserved" "Materials/Layer 1/Law=orthotropic" --set "Loads/Constants=E1 = 1"
+# Materials per side of Sigma (Materials/Layer k/Omega- and Omega+): the
+# plane state is the layer's, a side's constants are checked like the
+# layer's, naming the side's entry, and the load constants of a layer whose
+# sides differ are not defined.
+run "plane state on a side" "the plane state is one per layer (Materials/Layer k/Plane state), the same on both sides of Sigma" "Materials/Layer 1/Omega+/Plane state=plane stress"
+run "negative Young's modulus on Omega+" "Materials/Layer 1/Omega+/Young's modulus: '-5' does not match the pattern [Double 0...MAX_DOUBLE (inclusive)] of Materials/Layer 1/Young's modulus (empty: as the layer)" "Materials/Layer 1/Omega+/Young's modulus=-5"
+run "zero Young's modulus on Omega-" "Materials/Layer 2/Omega-/Young's modulus must be > 0, got 0" "Materials/Layer 2/Omega-/Young's modulus=0"
+run "side stiffness not positive definite" "Materials/Layer 1/Omega-/Stiffness must be symmetric positive definite" "Materials/Layer 1/Omega-/Law=anisotropic" --set "Materials/Layer 1/Omega-/Stiffness=100, 120, 0, 100, 0, 30"
+run "side orthotropic compliance not positive definite" "Materials/Layer 2/Omega+/nu_12, nu_13, nu_23 with E_1, E_2, E_3 must make the 3-D compliance positive definite" "Materials/Layer 2/Omega+/Law=orthotropic" --set "Materials/Layer 2/Omega+/nu_12=0.6" --set "Materials/Layer 2/Omega+/nu_13=0.6" --set "Materials/Layer 2/Omega+/nu_23=0.6"
+run "mu1 of a layer whose sides differ" "Loads/Constants: 'c = 1e-3*mu1' uses mu1, which differs between the sides of the layer (mu = 78.125 on Materials/Layer 1/Omega-, 39.0625 on Omega+): write the value of one side as a number" "Materials/Layer 1/Omega+/Young's modulus=100"
+run "E2 of a layer with an orthotropic side" "Loads/Layer 2/Prescribed displacement: '0; 1e-6*E2' uses E2, a constant of isotropic layers only (E2, nu2, mu2, lambda2), but Materials/Layer 2/Omega-/Law = orthotropic" "Materials/Layer 2/Omega-/Law=orthotropic" --set "Loads/Layer 2/Prescribed displacement=0; 1e-6*E2"
 run "crack outside Sigma" "Geometry/Crack interval on Sigma must satisfy -1 <= x_start <= x_end <= 1, got '-2, 0.5'" "Geometry/Crack interval on Sigma=-2, 0.5"
 # An edge crack needs a free or loaded side at its mouth (gamma_c and Gamma_D
 # are disjoint), and some of Sigma must stay glued.

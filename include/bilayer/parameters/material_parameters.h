@@ -7,18 +7,37 @@
 #include <bilayer/physics/elastic_law.h>
 
 #include <array>
+#include <optional>
 
 /**
- * The subsection Materials: the number of layers and each layer's entries
- * (LayerMaterial, elastic_law.h: the law's own parameters).
+ * The subsection Materials: the number of layers, each layer's entries
+ * (LayerMaterial, elastic_law.h: the law's own parameters) and, in its
+ * subsections Omega- and Omega+, the law entries that differ on one side of
+ * Sigma (empty: as the layer).
  */
 namespace bilayer
 {
   struct MaterialParameters
   {
     std::array<LayerMaterial, 2> layer = {{{200.0, 0.28}, {112.0, 0.32}}};
+    /**
+     * side[l][s]: the material of layer l on the subdomain s (0: Omega-,
+     * 1: Omega+) where Materials/Layer k/Omega- or Omega+ gives a law entry:
+     * the layer's material with those entries; empty where the side gives
+     * none (then the side has the layer's material, the very same object).
+     */
+    std::array<std::array<std::optional<LayerMaterial>, 2>, 2> side;
     /// 2: the two-layer structure; 1: layer 2 absent (a single body).
     unsigned int n_layers = 2;
+
+    /// The material of the layer @p l on the subdomain @p s.
+    const LayerMaterial &
+    material(const Layer l, const Subdomain s) const
+    {
+      const auto &m =
+        side[static_cast<unsigned int>(l)][static_cast<unsigned int>(s)];
+      return m ? *m : layer[static_cast<unsigned int>(l)];
+    }
 
     bool
     has_layer(const Layer l) const
