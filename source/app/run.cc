@@ -11,6 +11,7 @@
 #include <bilayer/core/build_info.h>
 #include <bilayer/drivers/resources.h>
 #include <bilayer/drivers/study.h>
+#include <bilayer/output/directory_anchor.h>
 #include <bilayer/output/output.h>
 #include <bilayer/output/output_directory.h>
 #include <bilayer/parameters/parameters.h>
@@ -35,7 +36,7 @@ namespace bilayer
     refuse(const bool reporter, const std::string &message)
     {
       if (reporter)
-        std::cerr << "bilayer: error: " << message << std::endl;
+        std::cerr << "bilayer: error: " << unanchored(message) << std::endl;
       return ExitStatus::error;
     }
 
@@ -221,6 +222,41 @@ namespace bilayer
     }
 
 
+    /**
+     * The staging directory as every process writes into it: anchored
+     * (directory_anchor.h) to the directory the first process made, so that
+     * no file of the run lands in a directory put in its place.
+     */
+    std::string
+    anchor_staging(const Distribution                     &processes,
+                   const std::unique_ptr<StagedDirectory> &output,
+                   const std::string                      &staging)
+    {
+      bool        known = true;
+      std::string id;
+      if (processes.is_root())
+        id = std::to_string(output->device_id()) + " " +
+             std::to_string(output->inode_id());
+      processes.broadcast(known, id);
+      std::istringstream in(id);
+      std::uintmax_t     device = 0, inode = 0;
+      in >> device >> inode;
+      std::string anchored, problem;
+      try
+        {
+          anchored = anchor_directory(staging, device, inode);
+        }
+      catch (const ExceptionBase &e)
+        {
+          problem = "Output/Output directory: " + one_line_message(e);
+        }
+      problem = processes.first_error(problem);
+      if (!problem.empty())
+        throw CollectiveError(problem);
+      return anchored;
+    }
+
+
     /// The first line of a run: versions, processes, threads, the BLAS.
     void
     print_banner(const Distribution &processes, const unsigned int blas_threads)
@@ -287,8 +323,8 @@ namespace bilayer
       if (!passed)
         {
           std::cerr << "bilayer: cycle " << failed_cycle
-                    << " FAILED: " << failure << " (its results are in "
-                    << where << ")" << std::endl;
+                    << " FAILED: " << unanchored(failure)
+                    << " (its results are in " << where << ")" << std::endl;
           return ExitStatus::failed_checks;
         }
       std::cout << "bilayer: results are in " << requested << std::endl;
@@ -360,7 +396,7 @@ namespace bilayer
             return refuse(reporter, staging);
           // (As the user wrote it, for the last line of a successful run.)
           const std::string requested = scene.output.directory;
-          scene.output.directory      = staging;
+          scene.output.directory = anchor_staging(processes, output, staging);
           if (processes.is_root() &&
               scene.output.terminal == TerminalOutput::full)
             print_banner(processes, blas_threads);
@@ -374,7 +410,8 @@ namespace bilayer
         }
       catch (const ExceptionBase &e)
         {
-          std::cerr << "bilayer: error: " << one_line_message(e) << std::endl;
+          std::cerr << "bilayer: error: " << unanchored(one_line_message(e))
+                    << std::endl;
         }
       catch (const std::bad_alloc &)
         {
@@ -383,7 +420,7 @@ namespace bilayer
         }
       catch (const std::exception &e)
         {
-          std::cerr << "bilayer: error: " << e.what() << std::endl;
+          std::cerr << "bilayer: error: " << unanchored(e.what()) << std::endl;
         }
       catch (...)
         {

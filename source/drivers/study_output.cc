@@ -102,13 +102,16 @@ namespace bilayer
       writing([&]() { write_records(record.cycle, fields); });
     std::string error = distribution.first_error(writing.message);
     // The files just written are there (checked again at the next cycle
-    // and before the results are published).
-    if (error.empty() && directory_check)
+    // and before the results are published); a write that failed because
+    // the directory was removed or replaced is reported as such.
+    if (directory_check)
       {
         FirstFailure written;
         if (distribution.is_root())
           written(directory_check);
-        error = distribution.first_error(written.message);
+        const std::string changed = distribution.first_error(written.message);
+        if (!changed.empty())
+          error = changed;
       }
     if (!error.empty())
       throw CollectiveError("writing the results of cycle " +

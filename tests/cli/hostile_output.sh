@@ -136,11 +136,15 @@ done
 # watcher acts once the records of cycles 0-2 are staged: table.csv, the
 # last file of a cycle, has 4 lines; cycles 3 and 4 take seconds).
 long=(--set "Mesh/Number of cycles=5")
-staged() { # DIR.partial: wait until cycle 2's records are staged
-  for _ in $(seq 500); do
-    [[ $(wc -l < "$1/table.csv" 2> /dev/null) -ge 4 ]] && return 0
+staged() { # DIR.partial [PID]: wait until cycle 2's records are staged (while PID runs; at most 2 minutes)
+  local lines
+  for _ in $(seq 6000); do
+    lines=$({ wc -l < "$1/table.csv"; } 2> /dev/null)
+    [[ ${lines:-0} -ge 4 ]] && return 0
+    [[ -n ${2:-} ]] && ! kill -0 "$2" 2> /dev/null && break
     sleep 0.02
   done
+  echo "(the run never staged cycle 2 in $1)"
   return 1
 }
 midrun() { # NAME ACTION FRAGMENT: a run into out; ACTION (shell code) once cycle 2 is staged; FRAGMENT an extended regular expression
@@ -149,7 +153,7 @@ midrun() { # NAME ACTION FRAGMENT: a run into out; ACTION (shell code) once cycl
   before=$(digest out)
   "$bilayer" "$prm" "${fast[@]}" "${long[@]}" --set "Output/Output directory=out" > mid.out 2> mid.err &
   local pid=$!
-  staged out.partial && eval "$action"
+  staged out.partial $pid && eval "$action"
   wait $pid 2> /dev/null
   rc=$?
   local why=""
@@ -178,7 +182,7 @@ midrun "an early cycle's file removed from the staging mid-run" "rm -f out.parti
 # replace; the commit refuses, the results stay in out.partial.
 "$bilayer" "$prm" "${fast[@]}" "${long[@]}" --set "Output/Output directory=out" > mid.out 2> mid.err &
 pid=$!
-staged out.partial && echo mine > out/added.txt
+staged out.partial $pid && echo mine > out/added.txt
 wait $pid
 rc=$?
 why=""
@@ -194,7 +198,7 @@ run out || verdict "the next run removes the kept out.partial" "exit status $?"
 mkdir -p cwd && cp "$prm" cwd/scene.prm
 (cd cwd && exec "$bilayer" scene.prm "${fast[@]}" "${long[@]}" --set "Output/Output directory=res" > ../cwd.out 2> ../cwd.err) &
 pid=$!
-staged cwd/res.partial && rm -rf cwd
+staged cwd/res.partial $pid && rm -rf cwd
 wait $pid
 rc=$?
 why=""
@@ -232,7 +236,7 @@ for signal in INT TERM HUP; do
   before=$(digest out)
   "$bilayer" "$prm" "${fast[@]}" "${long[@]}" --set "Output/Output directory=out" > sig.out 2> sig.err &
   pid=$!
-  staged out.partial && kill -s $signal $pid
+  staged out.partial $pid && kill -s $signal $pid
   wait $pid 2> /dev/null
   rc=$?
   why=""
@@ -249,7 +253,7 @@ set +m
 rm -rf h h.*
 (trap '' HUP; exec "$bilayer" "$prm" "${fast[@]}" --set "Mesh/Number of cycles=4" --set "Output/Output directory=h" > h.out 2> h.err) &
 pid=$!
-staged h.partial && kill -s HUP $pid
+staged h.partial $pid && kill -s HUP $pid
 wait $pid
 rc=$?
 [[ $rc -eq 0 && -s h/interface-03.csv && ! -e h.partial ]] && verdict "SIGHUP ignored as by nohup: the run completes" "" ||
@@ -316,4 +320,4 @@ if command -v mpirun > /dev/null; then
   verdict "DEAL_II_NUM_THREADS=abc under mpirun -np 2: one line of bilayer's" "$why"
 fi
 
-((failures == 0))
+verdicts_end

@@ -93,4 +93,4 @@ assert t["tasks"] >= 1 and t["blas"] >= 1 and t["blas_set_by"]
 PY
 verdict "threads and BLAS reported" "$why"
 
-((failures == 0))
+verdicts_end

@@ -44,4 +44,4 @@ if python3 "$scripts/plot_sigma" empty --output p2 > log 2> err; then why="accep
 grep -q "holds no interface-NN.csv" err || why="$why; message: $(cat err)"
 verdict "a directory without interface CSV files refused with one line" "$why"
 
-[[ $failures -eq 0 ]]
+verdicts_end

@@ -92,6 +92,19 @@ namespace bilayer
     std::string
     commit(const bool success);
 
+    /// The device and inode number of the staging directory.
+    std::uintmax_t
+    device_id() const
+    {
+      return device;
+    }
+
+    std::uintmax_t
+    inode_id() const
+    {
+      return inode;
+    }
+
     /// Free bytes on the file system of the staging directory.
     std::uintmax_t
     free_bytes() const;
