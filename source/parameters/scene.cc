@@ -3,6 +3,7 @@
 #include <bilayer/parameters/scene.h>
 #include <bilayer/parameters/scene_checks.h>
 
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -44,12 +45,121 @@ namespace bilayer
   }
 
 
+  namespace
+  {
+    /// Calls @p f(line, path) for each line of a short parameter file
+    /// (path "Section/Subsection/Entry" for entries, "" for other lines).
+    template <typename Function>
+    void
+    for_each_line(const std::string &short_prm, const Function &f)
+    {
+      std::vector<std::string> sections;
+      std::istringstream       in(short_prm);
+      for (std::string line; std::getline(in, line);)
+        {
+          const std::string trimmed = Utilities::trim(line);
+          std::string       path;
+          if (trimmed.rfind("subsection ", 0) == 0)
+            sections.push_back(Utilities::trim(trimmed.substr(11)));
+          else if (trimmed == "end" && !sections.empty())
+            sections.pop_back();
+          else if (trimmed.rfind("set ", 0) == 0)
+            {
+              const auto equal = trimmed.find('=');
+              for (const auto &section : sections)
+                path += section + "/";
+              path += Utilities::trim(trimmed.substr(4, equal - 4));
+            }
+          f(line, path);
+        }
+    }
+
+
+    /// Whether @p law (in @p plane_state) reads the material entry @p name.
+    bool
+    law_reads(const std::string &law,
+              const std::string &plane_state,
+              const std::string &name)
+    {
+      if (law == "anisotropic")
+        return name == "Stiffness";
+      if (law == "orthotropic")
+        return name == "E_1" || name == "E_2" || name == "nu_12" ||
+               name == "G_12" || name == "Orientation angle" ||
+               name == "Plane state" ||
+               (plane_state != "plane stress" &&
+                (name == "E_3" || name == "nu_13" || name == "nu_23"));
+      return name == "Young's modulus" || name == "Poisson's ratio" ||
+             name == "Plane state";
+    }
+
+
+    /// Why the elastic-law entry @p path (Materials/Layer k/[side/]name) is
+    /// not used: "" if it is or if it is no entry of a law. A layer's entry
+    /// is used where a side without its own value reads it.
+    std::string
+    unused_law_entry(const std::string                        &path,
+                     const std::map<std::string, std::string> &values)
+    {
+      static const std::set<std::string> names = {"Young's modulus",
+                                                  "Poisson's ratio",
+                                                  "E_1",
+                                                  "E_2",
+                                                  "E_3",
+                                                  "nu_12",
+                                                  "nu_13",
+                                                  "nu_23",
+                                                  "G_12",
+                                                  "Orientation angle",
+                                                  "Stiffness",
+                                                  "Plane state"};
+      const auto parts = Utilities::split_string_list(path, '/');
+      if (parts.size() < 3 || parts.size() > 4 || parts[0] != "Materials" ||
+          names.count(parts.back()) == 0)
+        return "";
+      const std::string layer = parts[0] + "/" + parts[1] + "/";
+      const std::string name  = parts.back();
+      const auto        value = [&](const std::string &p) {
+        const auto it = values.find(p);
+        return it == values.end() ? std::string() : it->second;
+      };
+      const std::string layer_law = value(layer + "Law");
+      const std::string plane     = value(layer + "Plane state");
+      const auto        side_law  = [&](const std::string &side) {
+        const std::string own = value(layer + side + "/Law");
+        return own.empty() ? layer_law : own;
+      };
+      if (parts.size() == 4)
+        return value(path).empty() ||
+                   law_reads(side_law(parts[2]), plane, name) ?
+                 "" :
+                 "not used by Law = " + side_law(parts[2]) + " on " + parts[2];
+      bool read = false;
+      for (const std::string side : {"Omega-", "Omega+"})
+        read = read || (value(layer + side + "/" + name).empty() &&
+                        law_reads(side_law(side), plane, name));
+      if (read)
+        return "";
+      for (const std::string side : {"Omega-", "Omega+"})
+        if (law_reads(side_law(side), plane, name) &&
+            !value(layer + side + "/" + name).empty())
+          return "given on each side where a law reads it";
+      const std::string law = side_law("Omega-") == side_law("Omega+") ?
+                                "Law = " + side_law("Omega-") :
+                                "the laws of Omega- and Omega+";
+      return "not used by " + law +
+             (law_reads(side_law("Omega-"), "plane strain", name) ||
+                  law_reads(side_law("Omega+"), "plane strain", name) ?
+                " in " + plane :
+                "");
+    }
+  } // namespace
+
+
   std::string
   applicable_entries(const std::string &short_prm, const Scene &scene)
   {
-    if (scene.geometry.gmsh_file.empty())
-      return short_prm;
-    const std::set<std::string> unused = {
+    const std::set<std::string> gmsh_unused = {
       "Geometry/Lower left corner",
       "Geometry/Upper right corner",
       "Geometry/Height of Sigma",
@@ -59,33 +169,32 @@ namespace bilayer
       "Mesh/Cells along Sigma on the plus side",
       "Mesh/Fit crack tips",
       "Mesh/Mesh files"};
-    std::vector<std::string> sections;
-    std::string              result;
-    std::istringstream       in(short_prm);
-    for (std::string line; std::getline(in, line);)
-      {
-        const std::string trimmed = Utilities::trim(line);
-        if (trimmed.rfind("subsection ", 0) == 0)
-          sections.push_back(Utilities::trim(trimmed.substr(11)));
-        else if (trimmed == "end" && !sections.empty())
-          sections.pop_back();
-        else if (trimmed.rfind("set ", 0) == 0)
-          {
-            const auto  equal = trimmed.find('=');
-            std::string path;
-            for (const auto &section : sections)
-              path += section + "/";
-            path += Utilities::trim(trimmed.substr(4, equal - 4));
-            if (unused.count(path) > 0)
-              {
-                result += line.substr(0, line.find_first_not_of(' ')) + "# " +
-                          path +
-                          ": not used by a Gmsh scene (Geometry/Gmsh file)\n";
-                continue;
-              }
-          }
-        result += line + "\n";
-      }
+    const bool                         gmsh = !scene.geometry.gmsh_file.empty();
+    std::map<std::string, std::string> values;
+    for_each_line(short_prm,
+                  [&](const std::string &line, const std::string &path) {
+                    if (!path.empty())
+                      values[path] =
+                        Utilities::trim(line.substr(line.find('=') + 1));
+                  });
+    std::string result;
+    for_each_line(short_prm,
+                  [&](const std::string &line, const std::string &path) {
+                    std::string why;
+                    if (gmsh && gmsh_unused.count(path) > 0)
+                      why = "not used by a Gmsh scene (Geometry/Gmsh file)";
+                    else if (scene.materials.n_layers == 1 &&
+                             (path.rfind("Materials/Layer 2/", 0) == 0 ||
+                              path.rfind("Loads/Layer 2/", 0) == 0))
+                      why = "not used (Materials/Number of layers = 1)";
+                    else if (!path.empty())
+                      why = unused_law_entry(path, values);
+                    if (why.empty())
+                      result += line + "\n";
+                    else
+                      result += line.substr(0, line.find_first_not_of(' ')) +
+                                "# " + path + ": " + why + "\n";
+                  });
     return result;
   }
 } // namespace bilayer

@@ -71,7 +71,11 @@ namespace bilayer
    * the scene does not use, each replaced by a comment line that names it:
    * for a Gmsh scene (Geometry/Gmsh file) the rectangle's corners, Height
    * of Sigma and Crack interval, and the structured mesh's cell counts,
-   * Fit crack tips and Mesh files.
+   * Fit crack tips and Mesh files; the material entries that no side's
+   * elastic law reads (an isotropic layer's E_1 ... Stiffness, an
+   * orthotropic one's E_3, nu_13, nu_23 in plane stress, a layer's entry
+   * that both sides give themselves, a side's entry its law does not read);
+   * every entry of layer 2 in a one-layer scene.
    */
   std::string
   applicable_entries(const std::string &short_prm, const Scene &scene);
