@@ -160,19 +160,8 @@ namespace bilayer
     }
 
 
-    /// The entries of a layer's law, which its sides may override.
-    const std::vector<std::string> law_entries = {"Law",
-                                                  "Young's modulus",
-                                                  "Poisson's ratio",
-                                                  "E_1",
-                                                  "E_2",
-                                                  "E_3",
-                                                  "nu_12",
-                                                  "nu_13",
-                                                  "nu_23",
-                                                  "G_12",
-                                                  "Orientation angle",
-                                                  "Stiffness"};
+    const std::vector<std::string> &law_entries =
+      MaterialParameters::law_entry_names();
 
 
     /// The pattern of the law entry @p name of a layer.
@@ -418,5 +407,44 @@ namespace bilayer
         prm.leave_subsection();
       }
     prm.leave_subsection();
+  }
+
+
+  const std::vector<std::string> &
+  MaterialParameters::law_entry_names()
+  {
+    static const std::vector<std::string> names = {"Law",
+                                                   "Young's modulus",
+                                                   "Poisson's ratio",
+                                                   "E_1",
+                                                   "E_2",
+                                                   "E_3",
+                                                   "nu_12",
+                                                   "nu_13",
+                                                   "nu_23",
+                                                   "G_12",
+                                                   "Orientation angle",
+                                                   "Stiffness"};
+    return names;
+  }
+
+
+  bool
+  MaterialParameters::law_reads(const std::string &law,
+                                const std::string &plane_state,
+                                const std::string &name)
+  {
+    if (name == "Law")
+      return true;
+    if (law == "anisotropic")
+      return name == "Stiffness";
+    if (law == "orthotropic")
+      return name == "E_1" || name == "E_2" || name == "nu_12" ||
+             name == "G_12" || name == "Orientation angle" ||
+             name == "Plane state" ||
+             (plane_state != "plane stress" &&
+              (name == "E_3" || name == "nu_13" || name == "nu_23"));
+    return name == "Young's modulus" || name == "Poisson's ratio" ||
+           name == "Plane state";
   }
 } // namespace bilayer

@@ -3,6 +3,7 @@
 #include <bilayer/parameters/scene.h>
 #include <bilayer/parameters/scene_checks.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <sstream>
@@ -75,25 +76,6 @@ namespace bilayer
     }
 
 
-    /// Whether @p law (in @p plane_state) reads the material entry @p name.
-    bool
-    law_reads(const std::string &law,
-              const std::string &plane_state,
-              const std::string &name)
-    {
-      if (law == "anisotropic")
-        return name == "Stiffness";
-      if (law == "orthotropic")
-        return name == "E_1" || name == "E_2" || name == "nu_12" ||
-               name == "G_12" || name == "Orientation angle" ||
-               name == "Plane state" ||
-               (plane_state != "plane stress" &&
-                (name == "E_3" || name == "nu_13" || name == "nu_23"));
-      return name == "Young's modulus" || name == "Poisson's ratio" ||
-             name == "Plane state";
-    }
-
-
     /// Why the elastic-law entry @p path (Materials/Layer k/[side/]name) is
     /// not used: "" if it is or if it is no entry of a law. A layer's entry
     /// is used where a side without its own value reads it.
@@ -101,21 +83,12 @@ namespace bilayer
     unused_law_entry(const std::string                        &path,
                      const std::map<std::string, std::string> &values)
     {
-      static const std::set<std::string> names = {"Young's modulus",
-                                                  "Poisson's ratio",
-                                                  "E_1",
-                                                  "E_2",
-                                                  "E_3",
-                                                  "nu_12",
-                                                  "nu_13",
-                                                  "nu_23",
-                                                  "G_12",
-                                                  "Orientation angle",
-                                                  "Stiffness",
-                                                  "Plane state"};
-      const auto parts = Utilities::split_string_list(path, '/');
+      const auto &names = MaterialParameters::law_entry_names();
+      const auto  parts = Utilities::split_string_list(path, '/');
       if (parts.size() < 3 || parts.size() > 4 || parts[0] != "Materials" ||
-          names.count(parts.back()) == 0)
+          (std::find(names.begin(), names.end(), parts.back()) == names.end() &&
+           parts.back() != "Plane state") ||
+          parts.back() == "Law")
         return "";
       const std::string layer = parts[0] + "/" + parts[1] + "/";
       const std::string name  = parts.back();
@@ -131,25 +104,32 @@ namespace bilayer
       };
       if (parts.size() == 4)
         return value(path).empty() ||
-                   law_reads(side_law(parts[2]), plane, name) ?
+                   MaterialParameters::law_reads(side_law(parts[2]),
+                                                 plane,
+                                                 name) ?
                  "" :
                  "not used by Law = " + side_law(parts[2]) + " on " + parts[2];
       bool read = false;
       for (const std::string side : {"Omega-", "Omega+"})
-        read = read || (value(layer + side + "/" + name).empty() &&
-                        law_reads(side_law(side), plane, name));
+        read =
+          read || (value(layer + side + "/" + name).empty() &&
+                   MaterialParameters::law_reads(side_law(side), plane, name));
       if (read)
         return "";
       for (const std::string side : {"Omega-", "Omega+"})
-        if (law_reads(side_law(side), plane, name) &&
+        if (MaterialParameters::law_reads(side_law(side), plane, name) &&
             !value(layer + side + "/" + name).empty())
           return "given on each side where a law reads it";
       const std::string law = side_law("Omega-") == side_law("Omega+") ?
                                 "Law = " + side_law("Omega-") :
                                 "the laws of Omega- and Omega+";
       return "not used by " + law +
-             (law_reads(side_law("Omega-"), "plane strain", name) ||
-                  law_reads(side_law("Omega+"), "plane strain", name) ?
+             (MaterialParameters::law_reads(side_law("Omega-"),
+                                            "plane strain",
+                                            name) ||
+                  MaterialParameters::law_reads(side_law("Omega+"),
+                                                "plane strain",
+                                                name) ?
                 " in " + plane :
                 "");
     }

@@ -8,6 +8,8 @@
 
 #include <array>
 #include <optional>
+#include <string>
+#include <vector>
 
 /**
  * The subsection Materials: the number of layers, each layer's entries
@@ -47,6 +49,19 @@ namespace bilayer
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
+
+    /// The entries of a layer's law ("Law", "Young's modulus", ...,
+    /// "Stiffness"), which its sides may override.
+    static const std::vector<std::string> &
+    law_entry_names();
+
+    /// Whether a layer of Law = @p law ("isotropic", "orthotropic",
+    /// "anisotropic") in @p plane_state ("plane strain", "plane stress")
+    /// reads the entry @p name of Materials/Layer k (Plane state included).
+    static bool
+    law_reads(const std::string &law,
+              const std::string &plane_state,
+              const std::string &name);
     void
     parse_parameters(dealii::ParameterHandler &prm);
   };
