@@ -24,8 +24,11 @@
 // angle 0), (3) across it (90). Each at a/W = 1/20 and 1/40 (adaptive Q2,
 // 12 cycles from 20 cells along Sigma, the tips fitted to vertices).
 // Asserted for each case:
-// - the runs are accepted, two tips, equal G (1e-6, the scene is symmetric);
-// - G at a/W = 1/40 within 1 % of the closed form;
+// - the runs are accepted, two tips, equal G (1e-3: the scene is symmetric,
+//   the mesh with the tips fitted to vertices at a/W = 1/40 is not; measured
+//   1e-10 at 1/20, up to 1e-4 at 1/40);
+// - G (the mean of the two tips) at a/W = 1/40 within 1 % of the closed
+//   form;
 // - the finite-size deficit 1 - G/G_closed is analytic in (a/W)^2 (the
 //   fixed-grip plate, as the isotropic plane-strain crack of
 //   energy_release_rate.cc): the deficit ratio from 1/20 to 1/40 lies in
@@ -152,17 +155,19 @@ namespace
               << std::endl;
     if (!two)
       return;
-    const bool equal = std::abs(G20[0] - G20[1]) <= 1e-6 * G20[0] &&
-                       std::abs(G40[0] - G40[1]) <= 1e-6 * G40[0];
-    std::cout << c.name << ": both tips alike (1e-6): " << yes(equal)
+    const bool equal = std::abs(G20[0] - G20[1]) <= 1e-3 * G20[0] &&
+                       std::abs(G40[0] - G40[1]) <= 1e-3 * G40[0];
+    std::cout << c.name << ": both tips alike (1e-3): " << yes(equal)
               << std::endl;
-    const double r20          = G20[0] / c.a.griffith(0.05),
-                 r40          = G40[0] / c.a.griffith(0.025);
+    const double r20          = (G20[0] + G20[1]) / 2 / c.a.griffith(0.05),
+                 r40          = (G40[0] + G40[1]) / 2 / c.a.griffith(0.025);
     const double ratio        = (1 - r20) / (1 - r40);
     const double extrapolated = (4 * r40 - r20) / 3;
     std::ofstream(measured, std::ios::app)
-      << std::setprecision(7) << c.name
-      << ": G_closed(1/40) = " << c.a.griffith(0.025)
+      << std::setprecision(7) << c.name << ": tips differ by "
+      << std::abs(G20[0] - G20[1]) / G20[0] << " and "
+      << std::abs(G40[0] - G40[1]) / G40[0]
+      << ", G_closed(1/40) = " << c.a.griffith(0.025)
       << ", G/G_closed at a/W = 1/20: " << r20 << ", at 1/40: " << r40
       << ", deficit ratio " << ratio << ", extrapolated " << extrapolated
       << std::endl;

@@ -173,6 +173,7 @@ namespace
       << "\n set Clamped sides = left, right\nend\n"
       << "subsection Mesh\n set Polynomial degree of layer 1 = 2\n"
       << " set Polynomial degree of layer 2 = 2\n set Number of cycles = 1\n"
+      << " set Element shape = triangles\n"
       << "end\nsubsection Materials\n subsection Layer 1\n"
       << "  set Law = orthotropic\n  set E_1 = 140\n  set E_2 = 10\n"
       << "  set E_3 = 12\n  set nu_12 = 0.3\n  set nu_13 = 0.28\n"
