@@ -21,7 +21,8 @@
 // Cases: (1) isotropic plane stress (E = 1, nu = 0.3); orthotropic plane
 // strain, E_1 = 3, E_2 = 1, E_3 = 1.2, nu_12 = 0.25, nu_13 = 0.3, nu_23 =
 // 0.35, G_12 = 0.5, (2) the fibres (axis 1) along the crack (Orientation
-// angle 0), (3) across it (90). Each at a/W = 1/20 and 1/40 (adaptive Q2,
+// angle 0), (3) across it (90); (4) the same layer in plane stress, the
+// fibres along the crack. Each at a/W = 1/20 and 1/40 (adaptive Q2,
 // 12 cycles from 20 cells along Sigma, the tips fitted to vertices).
 // Asserted for each case:
 // - the runs are accepted, two tips, equal G (1e-3: the scene is symmetric,
@@ -197,4 +198,7 @@ main()
   check({"orthotropic, plane strain, fibres across the crack",
          o.entries(true, 90),
          o.compliance(true, 90)});
+  check({"orthotropic, plane stress, fibres along the crack",
+         o.entries(false, 0),
+         o.compliance(false, 0)});
 }
