@@ -77,6 +77,8 @@ COMMANDS = {
     "work_precision": {"command": "scripts/work_precision --output {out}/w"},
     "crack_growth_end": {"command": "scripts/crack_growth parameter_files/partial_closure.prm "
                                     "--tip end --output {out}/c"},
+    # docs/geometry.md: the composite ply (issue 32), its own settings (a few seconds).
+    "composite_ply": {"command": RUN % "parameter_files/composite_ply.prm"},
 }
 
 PAPER = r"paper's settings \(Uzawa, theta = 65, 16 cells\).*?"
@@ -186,6 +188,20 @@ CLAIMS = [
      "tolerance": ("exact",)}
     for k in range(5)
 ] + [
+    # docs/geometry.md, the composite ply on an aluminium sheet.
+    {"id": "geometry.composite_ply.dofs", "doc": "docs/geometry.md", "fast": True,
+     "pattern": Q("2026-12-03): {} dofs on the last cycle"), "command": "composite_ply",
+     "extract": json_key("cycles.-1.dofs"), "tolerance": ("exact",)},
+    {"id": "geometry.composite_ply.energy", "doc": "docs/geometry.md", "fast": True,
+     "pattern": Q("energy Pi = {} GPa mm²"), "command": "composite_ply",
+     "extract": json_key("cycles.-1.energy"), "tolerance": ("rounded",)},
+    {"id": "geometry.composite_ply.G_open", "doc": "docs/geometry.md", "fast": True,
+     "pattern": Q("G = {} GPa mm (0.0995 J/m²)"), "command": "composite_ply",
+     "extract": json_key("cycles.-1.crack_tips.0.G"), "tolerance": ("rounded",)},
+    {"id": "geometry.composite_ply.G_closed", "doc": "docs/geometry.md", "fast": True,
+     "pattern": Q("x = −10 and {} at the closed tip"), "command": "composite_ply",
+     "extract": json_key("cycles.-1.crack_tips.1.G"), "tolerance": ("rounded",)},
+
     # Timings of the study scripts (slow: minutes).
     {"id": "reproduction.table1.time", "doc": "docs/reproduction.md", "fast": False,
      "pattern": Q("(P1 triangles; about {} s,"), "command": "mesh_convergence_table1",
