@@ -77,6 +77,15 @@ COMMANDS = {
     "work_precision": {"command": "scripts/work_precision --output {out}/w"},
     "crack_growth_end": {"command": "scripts/crack_growth parameter_files/partial_closure.prm "
                                     "--tip end --output {out}/c"},
+    # docs/accuracy.md: adaptive rates on the composite ply (a minute each).
+    "mesh_convergence_ply_q1": {"command": 'scripts/mesh_convergence parameter_files/composite_ply.prm '
+                                           '--reference -2.58217670e-05 --output {out}/m '
+                                           '--set "Output/Write VTU=false" --set "Mesh/Number of cycles=16" '
+                                           '--set "Mesh/Polynomial degree of layer 1=1" '
+                                           '--set "Mesh/Polynomial degree of layer 2=1"'},
+    "mesh_convergence_ply_q2": {"command": 'scripts/mesh_convergence parameter_files/composite_ply.prm '
+                                           '--reference -2.58217670e-05 --output {out}/m '
+                                           '--set "Output/Write VTU=false" --set "Mesh/Number of cycles=18"'},
     # docs/geometry.md: the composite ply (issue 32), its own settings (a few seconds).
     "composite_ply": {"command": RUN % "parameter_files/composite_ply.prm"},
 }
@@ -188,6 +197,19 @@ CLAIMS = [
      "tolerance": ("exact",)}
     for k in range(5)
 ] + [
+    # docs/accuracy.md, the rates of adaptive Q1 and Q2 on the composite ply (slow).
+    {"id": "accuracy.ply.q1_rate", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("| 16, 625 668 | N^{} (cycles 8–15)"), "command": "mesh_convergence_ply_q1",
+     "extract": {"regex": r"least squares over cycles \d+-\d+: e_h ~ N\^(\S+) "},
+     "tolerance": ("rounded",)},
+    {"id": "accuracy.ply.q2_rate", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("| 18, 139 724 | N^{} (cycles 9–17)"), "command": "mesh_convergence_ply_q2",
+     "extract": {"regex": r"least squares over cycles \d+-\d+: e_h ~ N\^(\S+) "},
+     "tolerance": ("rounded",)},
+    {"id": "accuracy.ply.q2_dofs", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("| 18, {} | N^-1.06"), "command": "mesh_convergence_ply_q2",
+     "extract": {"regex": r"^\s*17\s+(\d+)\s"}, "tolerance": ("exact",)},
+
     # docs/geometry.md, the composite ply on an aluminium sheet.
     {"id": "geometry.composite_ply.dofs", "doc": "docs/geometry.md", "fast": True,
      "pattern": Q("2026-12-03): {} dofs on the last cycle"), "command": "composite_ply",
