@@ -77,6 +77,17 @@ COMMANDS = {
     "work_precision": {"command": "scripts/work_precision --output {out}/w"},
     "crack_growth_end": {"command": "scripts/crack_growth parameter_files/partial_closure.prm "
                                     "--tip end --output {out}/c"},
+    # docs/accuracy.md: adaptive rates on the composite ply (a minute each).
+    "mesh_convergence_ply_q1": {"command": 'scripts/mesh_convergence parameter_files/composite_ply.prm '
+                                           '--reference -2.58217670e-05 --output {out}/m '
+                                           '--set "Output/Write VTU=false" --set "Mesh/Number of cycles=16" '
+                                           '--set "Mesh/Polynomial degree of layer 1=1" '
+                                           '--set "Mesh/Polynomial degree of layer 2=1"'},
+    "mesh_convergence_ply_q2": {"command": 'scripts/mesh_convergence parameter_files/composite_ply.prm '
+                                           '--reference -2.58217670e-05 --output {out}/m '
+                                           '--set "Output/Write VTU=false" --set "Mesh/Number of cycles=18"'},
+    # docs/geometry.md: the composite ply (issue 32), its own settings (a few seconds).
+    "composite_ply": {"command": RUN % "parameter_files/composite_ply.prm"},
 }
 
 PAPER = r"paper's settings \(Uzawa, theta = 65, 16 cells\).*?"
@@ -186,6 +197,33 @@ CLAIMS = [
      "tolerance": ("exact",)}
     for k in range(5)
 ] + [
+    # docs/accuracy.md, the rates of adaptive Q1 and Q2 on the composite ply (slow).
+    {"id": "accuracy.ply.q1_rate", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("| 16, 625 668 | N^{} (cycles 8–15)"), "command": "mesh_convergence_ply_q1",
+     "extract": {"regex": r"least squares over cycles \d+-\d+: e_h ~ N\^(\S+) "},
+     "tolerance": ("rounded",)},
+    {"id": "accuracy.ply.q2_rate", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("| 18, 139 724 | N^{} (cycles 9–17)"), "command": "mesh_convergence_ply_q2",
+     "extract": {"regex": r"least squares over cycles \d+-\d+: e_h ~ N\^(\S+) "},
+     "tolerance": ("rounded",)},
+    {"id": "accuracy.ply.q2_dofs", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("| 18, {} | N^-1.06"), "command": "mesh_convergence_ply_q2",
+     "extract": {"regex": r"^\s*17\s+(\d+)\s"}, "tolerance": ("exact",)},
+
+    # docs/geometry.md, the composite ply on an aluminium sheet.
+    {"id": "geometry.composite_ply.dofs", "doc": "docs/geometry.md", "fast": True,
+     "pattern": Q("2026-12-03): {} dofs on the last cycle"), "command": "composite_ply",
+     "extract": json_key("cycles.-1.dofs"), "tolerance": ("exact",)},
+    {"id": "geometry.composite_ply.energy", "doc": "docs/geometry.md", "fast": True,
+     "pattern": Q("energy Pi = {} GPa mm²"), "command": "composite_ply",
+     "extract": json_key("cycles.-1.energy"), "tolerance": ("rounded",)},
+    {"id": "geometry.composite_ply.G_open", "doc": "docs/geometry.md", "fast": True,
+     "pattern": Q("G = {} GPa mm (0.0995 J/m²)"), "command": "composite_ply",
+     "extract": json_key("cycles.-1.crack_tips.0.G"), "tolerance": ("rounded",)},
+    {"id": "geometry.composite_ply.G_closed", "doc": "docs/geometry.md", "fast": True,
+     "pattern": Q("x = −10 and {} at the closed tip"), "command": "composite_ply",
+     "extract": json_key("cycles.-1.crack_tips.1.G"), "tolerance": ("rounded",)},
+
     # Timings of the study scripts (slow: minutes).
     {"id": "reproduction.table1.time", "doc": "docs/reproduction.md", "fast": False,
      "pattern": Q("(P1 triangles; about {} s,"), "command": "mesh_convergence_table1",
