@@ -139,15 +139,15 @@ namespace
         error[0] = std::max(error[0], e_sd[0]);
         error[1] = std::max(error[1], e_sd[1]);
       }
-    const CycleRecord &r       = study.records().back();
+    const CycleRecord &r         = study.records().back();
     double             largest_G = 0;
     for (const EnergyReleaseRate &g : r.release)
-      largest_G = std::max(largest_G,
-                           std::isfinite(g.G) ? std::abs(g.G) : 1e300);
+      largest_G =
+        std::max(largest_G, std::isfinite(g.G) ? std::abs(g.G) : 1e300);
     std::ofstream("measured.txt", std::ios::app)
       << c.name << ": in-plane stress / s = " << error[0] / c.scale
-      << ", |sigma_zz - expected| / s = " << error[1] / c.scale
-      << " (expected " << c.sigma_zz << "), |Pi| / (s |eps_f| area) = "
+      << ", |sigma_zz - expected| / s = " << error[1] / c.scale << " (expected "
+      << c.sigma_zz << "), |Pi| / (s |eps_f| area) = "
       << std::abs(r.energy) / (c.scale * e_norm * area)
       << ", |G| / (s |eps_f|) = " << largest_G / (c.scale * e_norm)
       << std::endl;

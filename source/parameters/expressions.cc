@@ -156,8 +156,7 @@ namespace bilayer
                                          std::to_string(n_components)) +
                     (n_components == 1 ? " component, no ';' (" :
                                          " components separated by ';' (") +
-                    components + "), got '" +
-                    expression + "'"));
+                    components + "), got '" + expression + "'"));
       auto       result    = std::make_unique<FunctionParser<2>>(n_components);
       const bool evaluated = quietly([&]() {
         result->initialize("x,y", parts, constants);

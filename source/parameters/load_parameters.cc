@@ -240,11 +240,8 @@ namespace bilayer
 
     temperature_change = prm.get("Temperature change");
     refuse_absent("Loads/Temperature change", temperature_change);
-    expressions::function(temperature_change,
-                          1,
-                          "dT",
-                          constant_values,
-                          "Loads/Temperature change");
+    expressions::function(
+      temperature_change, 1, "dT", constant_values, "Loads/Temperature change");
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));

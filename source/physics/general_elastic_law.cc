@@ -179,7 +179,7 @@ namespace bilayer
       Matrix3               D = {};
       SymmetricTensor<2, 2> Z, P;
       double                E_zz = 0;
-      D[2][2] = o.G_12;
+      D[2][2]                    = o.G_12;
       if (state == PlaneState::plane_stress)
         {
           // sigma_zz = 0: the 2x2 compliance [[1/E_1, -nu_12/E_1],

@@ -334,8 +334,8 @@ namespace bilayer
                     const dealii::SymmetricTensor<2, 2> &Z,
                     const bool                           has_sigma_zz,
                     std::map<std::string, double>        constants = {},
-                    const dealii::SymmetricTensor<2, 2> &P    = {},
-                    const double                         E_zz = 0);
+                    const dealii::SymmetricTensor<2, 2> &P         = {},
+                    const double                         E_zz      = 0);
 
     dealii::SymmetricTensor<2, 2>
     stress(const dealii::SymmetricTensor<2, 2> &eps) const override

@@ -23,8 +23,8 @@ namespace bilayer
    *
    * (docs/problem.md §1). A thermal load (ThermalVolumeLoad) enters as the
    * plane eigenstrain that the law gives its 3-D thermal strain, with the
-   * sigma_zz of eigenstress_zz(). A layer without either passes no VolumeLoad at
-   * all (ElasticSubproblem::setup() takes a null pointer).
+   * sigma_zz of eigenstress_zz(). A layer without either passes no VolumeLoad
+   * at all (ElasticSubproblem::setup() takes a null pointer).
    */
   class VolumeLoad
   {
