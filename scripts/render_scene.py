@@ -1,6 +1,7 @@
 """Render a bilayer result of any geometry with ParaView (run by
 scripts/render_scenes through `scripts/headless pvbatch`): both layers side by
-side (layer 2 shifted by 1.2 times the width of the specimen), deformed by
+side (layer 2 shifted by 1.2 times the width of the specimen; a one-layer
+result alone), deformed by
 the displacement times a magnification chosen so that the largest
 displacement appears as 8 % of the specimen's size, coloured by the von
 Mises stress, with the cell edges, a colour bar and the title.
@@ -19,10 +20,12 @@ width, height = bounds[1] - bounds[0], bounds[3] - bounds[2]
 size = max(width, height)
 umax = max(abs(x) for x in reader.PointData["displacement"].GetRange(-1))
 magnification = 0.08 * size / umax if umax > 0 else 1.0
-shift = 1.2 * width
+layer_range = reader.PointData["layer"].GetRange() if "layer" in reader.PointData.keys() else (1, 2)
+layers = (1, 2) if layer_range[1] > 1.5 else (1,)  # one layer: Materials/Number of layers = 1
+shift = 1.2 * width if len(layers) == 2 else 0.0
 
 view = CreateView("RenderView")
-view.ViewSize = [1400, 8 * ((int(1400 * max(height, 0.3 * width) / (2.2 * width)) + 200) // 8)]
+view.ViewSize = [1400, 8 * ((int(1400 * max(height, 0.3 * width) / ((1.0 + shift / width) * width)) + 200) // 8)]
 view.OrientationAxesVisibility = 0
 view.Background = [1, 1, 1]
 try:
@@ -32,7 +35,7 @@ except AttributeError:
 lut = GetColorTransferFunction("von_mises")
 lut.ApplyPreset("Rainbow Uniform", True)
 vmax = 0.0
-for layer in (1, 2):
+for layer in layers:
     threshold = Threshold(Input=reader)
     threshold.Scalars = ["CELLS", "layer"]
     try:
@@ -60,7 +63,7 @@ bar.ComponentTitle = ""
 bar.TitleColor = [0, 0, 0]
 bar.LabelColor = [0, 0, 0]
 bar.Visibility = 1
-caption = Text(Text="%s (layer 1 left, layer 2 right; displacement x%.3g)" % (title, magnification))
+caption = Text(Text="%s (%s; displacement x%.3g)" % (title, "layer 1 left, layer 2 right" if len(layers) == 2 else "one layer", magnification))
 cdisplay = Show(caption, view)
 cdisplay.WindowLocation = "Upper Center"
 cdisplay.Color = [0, 0, 0]

@@ -52,6 +52,7 @@ namespace
     {"G_12", "45"},
     {"Orientation angle", "35"},
     {"Stiffness", "260, 90, 10, 240, 5, 70"},
+    {"Thermal expansion", "2e-5"},
     {"Plane state", "@"}};
 
   std::string
@@ -93,12 +94,13 @@ namespace
   check(const std::string &name,
         const std::string &layer,
         const std::string &plane,
-        const std::string &sides = "")
+        const std::string &sides = "",
+        const std::string &loads = "")
   {
     const auto materials = [&](const std::string &extra) {
       return "subsection Materials\n subsection Layer 1\n" + layer +
              "  set Plane state = " + plane + "\n" + extra + sides +
-             " end\nend\n";
+             " end\nend\n" + loads;
     };
     const std::string text      = base_text() + materials("");
     const std::string used      = used_entries(text);
@@ -143,6 +145,11 @@ main()
         "  set Law = orthotropic\n" + orthotropic,
         "plane stress");
   check("anisotropic", "  set Law = anisotropic\n", "plane strain");
+  check("isotropic, plane strain, cooled by 100 K (alpha = 1e-5)",
+        "  set Law = isotropic\n  set Thermal expansion = 1e-5\n",
+        "plane strain",
+        "",
+        "subsection Loads\n set Temperature change = -100\nend\n");
   check("orthotropic below Sigma, isotropic above",
         "  set Law = orthotropic\n" + orthotropic,
         "plane strain",

@@ -299,12 +299,6 @@ namespace bilayer
         {
           const unsigned int l = static_cast<unsigned int>(layer);
           prescribed[l]        = scene.loads.prescribed_function(layer);
-          // (The subproblems of the previous cycle, which referred to it,
-          // are gone.)
-          volume_loads[l] =
-            scene.loads.has_volume_load(layer) ?
-              scene.loads.volume_load(layer, domain_diameter(domain)) :
-              nullptr;
           for (unsigned int part = 0; part < scene.geometry.parts.size();
                ++part)
             {
@@ -314,7 +308,14 @@ namespace bilayer
             }
           for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
             {
-              auto &sub = subproblems[Layout::index(layer, sd)];
+              const unsigned int i = Layout::index(layer, sd);
+              // (The subproblem of the previous cycle, which referred to
+              // it, is gone.)
+              volume_loads[i] =
+                scene.loads.volume_load(layer,
+                                        scene.materials.material(layer, sd),
+                                        domain_diameter(domain));
+              auto &sub = subproblems[i];
               sub       = std::make_unique<ElasticSubproblem>(
                 layer,
                 sd,
@@ -323,13 +324,13 @@ namespace bilayer
                 scene.materials.material(layer, sd),
                 distribution);
               ElasticSubproblem *const target = sub.get();
-              setups.add([&, target, l]() {
+              setups.add([&, target, l, i]() {
                 target->setup(scene.geometry.clamped,
                               *prescribed[l],
                               traction[l],
                               scene.solver.shared_solver,
                               scene.solver.iterates_on_sigma(),
-                              volume_loads[l].get());
+                              volume_loads[i].get());
               });
             }
         }

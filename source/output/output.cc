@@ -65,7 +65,11 @@ namespace bilayer
         if (eigenstrain != nullptr)
           strain -= eigenstrain->eigenstrain(inputs.evaluation_points[q]);
         const SymmetricTensor<2, 2> stress = law.stress(strain);
-        const double                szz    = law.out_of_plane_stress(strain);
+        const double                szz =
+          law.out_of_plane_stress(strain) +
+          (eigenstrain != nullptr ?
+             eigenstrain->eigenstress_zz(inputs.evaluation_points[q]) :
+             0.);
         const double sxx = stress[0][0], syy = stress[1][1], sxy = stress[0][1];
         computed_quantities[q](0) = ElasticLaw::von_mises(stress, szz);
         computed_quantities[q](1) = sxx;

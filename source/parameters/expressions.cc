@@ -150,11 +150,13 @@ namespace bilayer
       AssertThrow(parts.size() == n_components,
                   ExcMessage(
                     entry + " must have " +
-                    (n_components == 2 ? std::string("two") :
+                    (n_components == 1 ? std::string("one") :
+                     n_components == 2 ? std::string("two") :
                      n_components == 3 ? std::string("three") :
                                          std::to_string(n_components)) +
-                    " components separated by ';' (" + components + "), got '" +
-                    expression + "'"));
+                    (n_components == 1 ? " component, no ';' (" :
+                                         " components separated by ';' (") +
+                    components + "), got '" + expression + "'"));
       auto       result    = std::make_unique<FunctionParser<2>>(n_components);
       const bool evaluated = quietly([&]() {
         result->initialize("x,y", parts, constants);

@@ -5,6 +5,7 @@
 #include <bilayer/parameters/expressions.h>
 #include <bilayer/parameters/load_parameters.h>
 #include <bilayer/parameters/parameter_entries.h>
+#include <bilayer/parameters/thermal_volume_load.h>
 #include <bilayer/physics/elastic_law.h>
 
 #include <array>
@@ -112,6 +113,16 @@ namespace bilayer
       "constants of isotropic layers, from Materials; not defined for "
       "orthotropic and anisotropic layers) and the constants defined "
       "before it, e.g. 'c = 1e-3*mu1'.");
+    prm.declare_entry(
+      "Temperature change",
+      "0",
+      Patterns::Anything(),
+      "Temperature change dT from the stress-free state [K], an expression "
+      "of x and y and the constants, on every layer: the thermal strain "
+      "alpha dT (Materials/Layer k/Thermal expansion) enters as an "
+      "eigenstrain, in plane strain with eps_zz = 0 (isotropic: (1 + nu) "
+      "alpha dT in the plane, sigma_zz = nu (sigma_xx + sigma_yy) - E alpha "
+      "dT), in plane stress alpha dT. '0': none.");
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
@@ -227,6 +238,10 @@ namespace bilayer
         constant_values[name] = result;
       }
 
+    temperature_change = prm.get("Temperature change");
+    refuse_absent("Loads/Temperature change", temperature_change);
+    expressions::function(
+      temperature_change, 1, "dT", constant_values, "Loads/Temperature change");
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
@@ -290,6 +305,34 @@ namespace bilayer
                                                   "Loads/" +
                                                     layer_subsection(l),
                                                   length_scale);
+  }
+
+
+  bool
+  LoadParameters::has_thermal_load(const LayerMaterial &material) const
+  {
+    return !expressions::is_zero(temperature_change) &&
+           has_thermal_expansion(material);
+  }
+
+
+  std::unique_ptr<VolumeLoad>
+  LoadParameters::volume_load(const Layer          layer,
+                              const LayerMaterial &material,
+                              const double         length_scale) const
+  {
+    auto load = volume_load(layer, length_scale);
+    if (!has_thermal_load(material))
+      return load;
+    return std::make_unique<ThermalVolumeLoad>(
+      std::move(load),
+      expressions::function(temperature_change,
+                            1,
+                            "dT",
+                            constant_values,
+                            "Loads/Temperature change"),
+      material,
+      length_scale);
   }
 
 

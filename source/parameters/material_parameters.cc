@@ -160,6 +160,42 @@ namespace bilayer
     }
 
 
+    /**
+     * The entry @p entry (a Thermal expansion) of the text @p text for the
+     * law @p law: one number alpha (every law: isotropic alpha I;
+     * orthotropic alpha_1 = alpha_2 = alpha_3; anisotropic alpha_11 =
+     * alpha_22, alpha_12 = 0) or, for orthotropic and anisotropic laws,
+     * three.
+     */
+    std::array<double, 3>
+    parse_thermal_expansion(const std::string &text,
+                            const std::string &entry,
+                            const MaterialLaw  law)
+    {
+      const auto parts = Utilities::split_string_list(text, ',');
+      const bool three = law != MaterialLaw::isotropic;
+      AssertThrow(parts.size() == 1 || (three && parts.size() == 3),
+                  ExcMessage(
+                    entry + " must be " +
+                    (law == MaterialLaw::isotropic ?
+                       "one number alpha [1/K] (Law = isotropic)" :
+                     law == MaterialLaw::orthotropic ?
+                       "one number alpha or three 'alpha_1, alpha_2, "
+                       "alpha_3' in the material axes [1/K] (Law = "
+                       "orthotropic)" :
+                       "one number alpha or three 'alpha_11, alpha_22, "
+                       "alpha_12' in the x-y frame [1/K] (Law = "
+                       "anisotropic)") +
+                    ", finite, got '" + text + "'"));
+      std::array<double, 3> a;
+      for (unsigned int i = 0; i < parts.size(); ++i)
+        a[i] = to_double(parts[i], entry);
+      if (parts.size() == 1)
+        a = {{a[0], a[0], law == MaterialLaw::anisotropic ? 0. : a[0]}};
+      return a;
+    }
+
+
     const std::vector<std::string> &law_entries =
       MaterialParameters::law_entry_names();
 
@@ -177,6 +213,8 @@ namespace bilayer
         return std::make_unique<Patterns::Double>(-360, 360);
       if (name == "Stiffness")
         return std::make_unique<Patterns::List>(Patterns::Double(), 6, 6, ",");
+      if (name == "Thermal expansion")
+        return std::make_unique<Patterns::List>(Patterns::Double(), 1, 3, ",");
       if (name.substr(0, 3) == "nu_")
         return std::make_unique<Patterns::Double>();
       return std::make_unique<Patterns::Double>(0);
@@ -220,6 +258,9 @@ namespace bilayer
       m.stiffness             = parse_stiffness(text("Stiffness"),
                                     entry("Stiffness"),
                                     m.law == MaterialLaw::anisotropic);
+      m.thermal_expansion = parse_thermal_expansion(text("Thermal expansion"),
+                                                    entry("Thermal expansion"),
+                                                    m.law);
       if (m.law == MaterialLaw::orthotropic)
         check_orthotropic(o, m.plane_state, where);
       if (m.law == MaterialLaw::isotropic)
@@ -367,6 +408,18 @@ namespace bilayer
           "positive definite matrix of (s11, s22, s12) against (e11, e22, "
           "2 e12) in the x-y frame [stress, the unit of Young's modulus]; "
           "the default is isotropic (lambda = 100, mu = 75).");
+        prm.declare_entry(
+          "Thermal expansion",
+          "0",
+          Patterns::Anything(),
+          "The coefficient of thermal expansion alpha [1/K], the thermal "
+          "strain alpha dT under Loads/Temperature change: one number "
+          "(isotropic; for the other laws alpha I as well), or for Law = "
+          "orthotropic 'alpha_1, alpha_2, alpha_3' in the material axes "
+          "(turned by the orientation angle; alpha_3 along z), for Law = "
+          "anisotropic 'alpha_11, alpha_22, alpha_12', the plane eigenstrain "
+          "per kelvin in the x-y frame as it enters the plane law (sigma_zz "
+          "not defined).");
         declare_sides(prm, l);
         prm.leave_subsection();
       }
@@ -424,7 +477,8 @@ namespace bilayer
                                                    "nu_23",
                                                    "G_12",
                                                    "Orientation angle",
-                                                   "Stiffness"};
+                                                   "Stiffness",
+                                                   "Thermal expansion"};
     return names;
   }
 
@@ -434,7 +488,7 @@ namespace bilayer
                                 const std::string &plane_state,
                                 const std::string &name)
   {
-    if (name == "Law")
+    if (name == "Law" || name == "Thermal expansion")
       return true;
     if (law == "anisotropic")
       return name == "Stiffness";

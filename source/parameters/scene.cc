@@ -96,6 +96,14 @@ namespace bilayer
         const auto it = values.find(p);
         return it == values.end() ? std::string() : it->second;
       };
+      if (name == "Thermal expansion")
+        {
+          const std::string dT = value("Loads/Temperature change");
+          return (parts.size() == 4 && value(path).empty()) ||
+                     !(dT.empty() || dT == "0") ?
+                   "" :
+                   "not used (Loads/Temperature change = 0)";
+        }
       const std::string layer_law = value(layer + "Law");
       const std::string plane     = value(layer + "Plane state");
       const auto        side_law  = [&](const std::string &side) {

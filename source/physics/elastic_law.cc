@@ -74,6 +74,46 @@ namespace bilayer
   }
 
 
+  Eigenstrain3D
+  thermal_strain(const LayerMaterial &material)
+  {
+    const std::array<double, 3> &a = material.thermal_expansion;
+    Eigenstrain3D                eps;
+    if (material.law == MaterialLaw::isotropic)
+      {
+        eps.in_plane = a[0] * unit_symmetric_tensor<2>();
+        eps.zz       = a[0];
+      }
+    else if (material.law == MaterialLaw::orthotropic)
+      {
+        // R diag(alpha_1, alpha_2) R^T: the material axis 1 is R e_x.
+        const Tensor<2, 2> R = plane_laws::rotation(material.orientation_angle);
+        Tensor<2, 2>       A;
+        A[0][0]      = a[0];
+        A[1][1]      = a[1];
+        eps.in_plane = symmetrize(Tensor<2, 2>(R * A * transpose(R)));
+        eps.zz       = a[2];
+      }
+    else
+      {
+        eps.in_plane[0][0] = a[0];
+        eps.in_plane[1][1] = a[1];
+        eps.in_plane[0][1] = a[2];
+      }
+    return eps;
+  }
+
+
+  bool
+  has_thermal_expansion(const LayerMaterial &material)
+  {
+    for (const double a : material.thermal_expansion)
+      if (a != 0)
+        return true;
+    return false;
+  }
+
+
   std::unique_ptr<const ElasticLaw>
   make_elastic_law(const LayerMaterial &material)
   {

@@ -26,10 +26,14 @@ namespace bilayer
   GeneralPlaneLaw::GeneralPlaneLaw(const SymmetricTensor<4, 2>  &C,
                                    const SymmetricTensor<2, 2>  &Z,
                                    const bool                    has_sigma_zz,
-                                   std::map<std::string, double> constants)
+                                   std::map<std::string, double> constants,
+                                   const SymmetricTensor<2, 2>  &P,
+                                   const double                  E_zz)
     : C(C)
     , Z(Z)
     , has_sigma_zz(has_sigma_zz)
+    , P(P)
+    , E_zz(E_zz)
     , smallest_eigenvalue(plane_laws::smallest_mandel_eigenvalue(C))
     , constants(std::move(constants))
   {
@@ -173,8 +177,9 @@ namespace bilayer
       // In the material frame: the in-plane stiffness D and the row Z of
       // sigma_zz.
       Matrix3               D = {};
-      SymmetricTensor<2, 2> Z;
-      D[2][2] = o.G_12;
+      SymmetricTensor<2, 2> Z, P;
+      double                E_zz = 0;
+      D[2][2]                    = o.G_12;
       if (state == PlaneState::plane_stress)
         {
           // sigma_zz = 0: the 2x2 compliance [[1/E_1, -nu_12/E_1],
@@ -201,14 +206,24 @@ namespace bilayer
               D[i][j] = K[i][j];
           Z[0][0] = K[2][0];
           Z[1][1] = K[2][1];
+          // A 3-D eigenstrain's eps_zz under eps_zz = 0: the in-plane
+          // eigenstrain gains -(S_p3 / S_33) eps_zz = (nu_31, nu_32)
+          // eps_zz, sigma_zz gains -eps_zz / S_33 = -E_3 eps_zz.
+          P[0][0] = -S[0][2] / S[2][2];
+          P[1][1] = -S[1][2] / S[2][2];
+          E_zz    = 1 / S[2][2];
         }
       const Tensor<2, 2> R = rotation(angle);
       // sigma_zz = Z : (R^T e R) = (R Z R^T) : e.
-      const SymmetricTensor<2, 2> Z_xy =
-        symmetrize(Tensor<2, 2>(R * Tensor<2, 2>(Z) * transpose(R)));
+      const auto to_xy = [&R](const SymmetricTensor<2, 2> &T) {
+        return symmetrize(Tensor<2, 2>(R * Tensor<2, 2>(T) * transpose(R)));
+      };
       return std::make_unique<GeneralPlaneLaw>(rotate(tangent_of_voigt(D), R),
-                                               Z_xy,
-                                               true);
+                                               to_xy(Z),
+                                               true,
+                                               std::map<std::string, double>(),
+                                               to_xy(P),
+                                               E_zz);
     }
 
 

@@ -172,6 +172,20 @@ run "body force does not parse" "Loads/Layer 1/Body force: cannot evaluate '0; c
 run "eigenstrain NaN everywhere" "Loads/Layer 1/Eigenstrain is not finite at (x, y) = (" "Loads/Layer 1/Eigenstrain=log(x-10); 0; 0"
 run "body force infinite" "Loads/Layer 2/Body force is not finite at (x, y) = (" "Loads/Layer 2/Body force=0; 1/(x-x)"
 run "eigenstrain on an absent layer" "Loads/Layer 2/Body force and Loads/Layer 2/Eigenstrain must be zero ('0; 0', '0; 0; 0'): layer 2 is absent (Materials/Number of layers = 1)" "Loads/Layer 2/Eigenstrain=1e-3; 0; 0" --set "Materials/Number of layers=1"
+# Thermal loads (issue 32): Materials/Layer k/Thermal expansion (one number,
+# or three for orthotropic and anisotropic laws, finite) and Loads/Temperature
+# change (one expression, finite where evaluated, no constant of a layer
+# that does not define it).
+run "thermal expansion of two numbers" "Materials/Layer 1/Thermal expansion must be one number alpha [1/K] (Law = isotropic), finite, got '1e-5, 2e-5'" "Materials/Layer 1/Thermal expansion=1e-5, 2e-5"
+run "three thermal expansions of an isotropic layer" "Materials/Layer 2/Thermal expansion must be one number alpha [1/K] (Law = isotropic)" "Materials/Layer 2/Thermal expansion=1e-5, 1e-5, 1e-5"
+run "orthotropic thermal expansion of two numbers" "Materials/Layer 2/Thermal expansion must be one number alpha or three 'alpha_1, alpha_2, alpha_3' in the material axes [1/K] (Law = orthotropic)" "Materials/Layer 2/Law=orthotropic" --set "Materials/Layer 2/Thermal expansion=1e-5, 2e-5"
+run "thermal expansion not a number" "Materials/Layer 1/Thermal expansion: cannot read 'hot' as a number" "Materials/Layer 1/Thermal expansion=hot"
+run "thermal expansion infinite" "Materials/Layer 1/Thermal expansion: 'inf' is outside the range of normal double numbers" "Materials/Layer 1/Thermal expansion=inf"
+run "side thermal expansion of two numbers" "Materials/Layer 1/Omega+/Thermal expansion must be one number alpha [1/K] (Law = isotropic)" "Materials/Layer 1/Omega+/Thermal expansion=1e-5, 2e-5"
+run "temperature change of two components" "Loads/Temperature change must have one component, no ';' (dT), got '1; 2'" "Loads/Temperature change=1; 2"
+run "temperature change does not parse" "Loads/Temperature change: cannot evaluate 'c*'" "Loads/Temperature change=c*"
+run "temperature change NaN" "Loads/Temperature change is not finite at (x, y) = (" "Loads/Temperature change=log(x-10)" --set "Materials/Layer 1/Thermal expansion=1e-5"
+run "temperature change using E2 of an orthotropic layer" "Loads/Temperature change: '1e-3*E2' uses E2, a constant of isotropic layers only (E2, nu2, mu2, lambda2), but Materials/Layer 2/Law = orthotropic" "Materials/Layer 2/Law=orthotropic" --set "Loads/Temperature change=1e-3*E2"
 run "missing mesh file" "Mesh/Mesh files: cannot open" "Mesh/Mesh files=nothere_{side}.msh"
 run "mesh file is a directory" "Mesh/Mesh files: cannot open 'mesh_dir_minus': not a regular file" "Mesh/Mesh files=mesh_dir_{side}"
 # Broken meshes (Gmsh format 2.2, three columns of two triangles per half

@@ -213,10 +213,11 @@ namespace bilayer
     std::ostream       &out;
     const Distribution &distribution;
 
-    /// Per layer: its body force and eigenstrain (Loads/Layer k), null
-    /// where it has neither; the subproblems of the layer refer to it (so
-    /// declared before them).
-    std::array<std::unique_ptr<VolumeLoad>, Layout::n_layers> volume_loads;
+    /// Per subproblem: its body force and eigenstrain (Loads/Layer k, and
+    /// the thermal strain of its material under Loads/Temperature change),
+    /// null where it has none; the subproblem refers to it (so declared
+    /// before them).
+    PerSubproblem<std::unique_ptr<VolumeLoad>> volume_loads;
 
     /// Progress (Output/Terminal output = full) and the checks, both on the
     /// first process only.

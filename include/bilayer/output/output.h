@@ -26,7 +26,8 @@ namespace bilayer
    *      + 3 s_xy^2).
    * With an eigenstrain eps* (@p volume), of the elastic strain:
    * sigma = C (eps(w) - eps*), sigma_zz = out_of_plane_stress(eps(w) -
-   * eps*) (plane strain, eps*_zz = 0).
+   * eps*) + VolumeLoad::eigenstress_zz() (a thermal load in plane strain:
+   * -E_3 alpha_3 dT; 0 for an in-plane eigenstrain).
    */
   class StressPostprocessor : public dealii::DataPostprocessor<2>
   {

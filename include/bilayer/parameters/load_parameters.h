@@ -40,6 +40,8 @@ namespace bilayer
     std::array<std::string, 2> body_force = {{"0; 0", "0; 0"}};
     /// eigenstrain[layer], "eps11; eps22; eps12" [-]
     std::array<std::string, 2> eigenstrain = {{"0; 0; 0", "0; 0; 0"}};
+    /// Loads/Temperature change, dT(x, y) [K] (every layer)
+    std::string temperature_change = "0";
 
     /// The evaluated constants (material constants included).
     std::map<std::string, double> constant_values;
@@ -67,6 +69,20 @@ namespace bilayer
      */
     std::unique_ptr<VolumeLoad>
     volume_load(const Layer layer, const double length_scale) const;
+    /**
+     * The volume load of the subproblem of @p layer whose material is
+     * @p material: volume_load(layer, length_scale), and where the
+     * temperature changes and the material expands (has_thermal_load()),
+     * that load inside a ThermalVolumeLoad with the plane eigenstrain of the
+     * material's law. Null where there is neither.
+     */
+    std::unique_ptr<VolumeLoad>
+    volume_load(const Layer          layer,
+                const LayerMaterial &material,
+                const double         length_scale) const;
+    /// Whether Loads/Temperature change is not "0" and @p material expands.
+    bool
+    has_thermal_load(const LayerMaterial &material) const;
     /// Whether @p layer has a body force or an eigenstrain.
     bool
     has_volume_load(const Layer layer) const;

@@ -74,7 +74,8 @@ namespace bilayer
    * Fit crack tips and Mesh files; the material entries that no side's
    * elastic law reads (an isotropic layer's E_1 ... Stiffness, an
    * orthotropic one's E_3, nu_13, nu_23 in plane stress, a layer's entry
-   * that both sides give themselves, a side's entry its law does not read);
+   * that both sides give themselves, a side's entry its law does not read,
+   * the thermal expansion without a temperature change);
    * every entry of layer 2 in a one-layer scene.
    */
   std::string

@@ -89,7 +89,56 @@ namespace bilayer
      * mu = 75.
      */
     std::array<double, 6> stiffness = {{250.0, 100.0, 0.0, 250.0, 0.0, 75.0}};
+    /**
+     * Materials/Layer k/Thermal expansion [1/K], three numbers whose
+     * meaning the law gives: isotropic (alpha, alpha, alpha); orthotropic
+     * (alpha_1, alpha_2, alpha_3) in the material axes; anisotropic
+     * (alpha_11, alpha_22, alpha_12), the plane eigenstrain per kelvin in
+     * the x-y frame (tensor shear). thermal_strain() reads them.
+     */
+    std::array<double, 3> thermal_expansion = {{0.0, 0.0, 0.0}};
   };
+
+
+  /**
+   * A 3-D eigenstrain without out-of-plane shears: its in-plane components
+   * (x-y frame) and eps_zz.
+   */
+  struct Eigenstrain3D
+  {
+    dealii::SymmetricTensor<2, 2> in_plane;
+    double                        zz = 0;
+  };
+
+
+  /**
+   * The eigenstrain of the plane problem that a 3-D eigenstrain implies
+   * under a plane state (ElasticLaw::plane_eigenstrain(), docs/problem.md
+   * §1): the in-plane eigenstrain eps*_eff of sigma = C (eps - eps*_eff) and
+   * the out-of-plane stress sigma_zz at eps = eps*_eff, so that
+   * sigma_zz = Z : (eps - eps*_eff) + sigma_zz_offset.
+   */
+  struct PlaneEigenstrain
+  {
+    dealii::SymmetricTensor<2, 2> in_plane;
+    double                        sigma_zz_offset = 0;
+  };
+
+
+  /**
+   * The thermal strain of @p material per kelvin of temperature change
+   * (alpha, a 3-D tensor in the x-y-z frame): isotropic alpha I;
+   * orthotropic R diag(alpha_1, alpha_2) R^T in the plane (R the rotation
+   * by the orientation angle), alpha_3 along z; anisotropic the given
+   * in-plane tensor, eps_zz = 0 (the plane law says nothing about z: the
+   * numbers are the plane eigenstrain per kelvin as it enters the law).
+   */
+  Eigenstrain3D
+  thermal_strain(const LayerMaterial &material);
+
+  /// Whether @p material expands (some coefficient not zero).
+  bool
+  has_thermal_expansion(const LayerMaterial &material);
 
 
   /**
@@ -161,6 +210,22 @@ namespace bilayer
     virtual std::map<std::string, double>
     load_constants() const = 0;
 
+    /**
+     * The plane eigenstrain of the 3-D eigenstrain @p eps3 (a thermal
+     * strain alpha dT), linear in it. Plane stress (sigma_zz = 0): the
+     * in-plane part, sigma_zz_offset = 0. Plane strain (eps_zz = 0): from
+     * the 3-D compliance S, eps_p = S_pp sigma_p + S_p3 sigma_zz + eps3_p
+     * and 0 = S_3p sigma_p + S_33 sigma_zz + eps3_zz give
+     *   eps*_eff = eps3_p - (S_p3 / S_33) eps3_zz,
+     *   sigma_zz = -(S_3p / S_33) sigma_p - eps3_zz / S_33
+     *            = Z : (eps - eps*_eff) - E_3 eps3_zz
+     * (isotropic: eps*_eff = eps3_p + nu eps3_zz I, sigma_zz = nu (sigma_xx
+     * + sigma_yy) - E eps3_zz). An anisotropic law: the in-plane part as
+     * given (its sigma_zz is not defined).
+     */
+    virtual PlaneEigenstrain
+    plane_eigenstrain(const Eigenstrain3D &eps3) const = 0;
+
     /// The von Mises stress of the in-plane stress @p s and sigma_zz @p s_zz.
     static double
     von_mises(const dealii::SymmetricTensor<2, 2> &s, const double s_zz);
@@ -219,6 +284,13 @@ namespace bilayer
     std::map<std::string, double>
     load_constants() const override;
 
+    PlaneEigenstrain
+    plane_eigenstrain(const Eigenstrain3D &eps3) const override
+    {
+      return {eps3.in_plane + nu * eps3.zz * dealii::unit_symmetric_tensor<2>(),
+              -E * eps3.zz};
+    }
+
   private:
     double E, nu, mu, lambda;
   };
@@ -253,11 +325,17 @@ namespace bilayer
      * The law sigma = @p C : eps, sigma_zz = @p Z : eps (@p has_sigma_zz
      * false: sigma_zz is not defined, NaN) with the load constants
      * @p constants. @p C must be positive definite (refused otherwise).
+     * The plane eigenstrain of a 3-D one (plane_eigenstrain()):
+     * eps*_eff = eps3_p + @p P eps3_zz, sigma_zz_offset = -@p E_zz eps3_zz
+     * (plane strain: P = -S_p3 / S_33 in the x-y frame, E_zz = 1 / S_33;
+     * plane stress and anisotropic: 0).
      */
     GeneralPlaneLaw(const dealii::SymmetricTensor<4, 2> &C,
                     const dealii::SymmetricTensor<2, 2> &Z,
                     const bool                           has_sigma_zz,
-                    std::map<std::string, double>        constants = {});
+                    std::map<std::string, double>        constants = {},
+                    const dealii::SymmetricTensor<2, 2> &P         = {},
+                    const double                         E_zz      = 0);
 
     dealii::SymmetricTensor<2, 2>
     stress(const dealii::SymmetricTensor<2, 2> &eps) const override
@@ -299,10 +377,18 @@ namespace bilayer
       return constants;
     }
 
+    PlaneEigenstrain
+    plane_eigenstrain(const Eigenstrain3D &eps3) const override
+    {
+      return {eps3.in_plane + eps3.zz * P, -E_zz * eps3.zz};
+    }
+
   private:
     dealii::SymmetricTensor<4, 2> C;
     dealii::SymmetricTensor<2, 2> Z;
     bool                          has_sigma_zz;
+    dealii::SymmetricTensor<2, 2> P;
+    double                        E_zz;
     double                        smallest_eigenvalue;
     std::map<std::string, double> constants;
   };

@@ -21,8 +21,10 @@ namespace bilayer
    *
    *   Pi(w) = 1/2 int (eps(w) - eps*) : C (eps(w) - eps*) - int f . w - ...
    *
-   * (docs/problem.md §1). A layer without either passes no VolumeLoad at
-   * all (ElasticSubproblem::setup() takes a null pointer).
+   * (docs/problem.md §1). A thermal load (ThermalVolumeLoad) enters as the
+   * plane eigenstrain that the law gives its 3-D thermal strain, with the
+   * sigma_zz of eigenstress_zz(). A layer without either passes no VolumeLoad
+   * at all (ElasticSubproblem::setup() takes a null pointer).
    */
   class VolumeLoad
   {
@@ -36,6 +38,18 @@ namespace bilayer
     /// The eigenstrain at @p p.
     virtual dealii::SymmetricTensor<2, 2>
     eigenstrain(const dealii::Point<2> &p) const = 0;
+
+    /**
+     * The out-of-plane stress of the eigenstrain at @p p where the elastic
+     * in-plane strain is zero: sigma_zz = Z : (eps(w) - eps*) + this (a
+     * thermal strain in plane strain: -E_3 alpha_3 dT,
+     * ElasticLaw::plane_eigenstrain()). 0 for an in-plane eigenstrain.
+     */
+    virtual double
+    eigenstress_zz(const dealii::Point<2> &) const
+    {
+      return 0;
+    }
 
     /// Whether the body force may be non-zero (false: it is zero
     /// everywhere, and the terms of f may be skipped).
