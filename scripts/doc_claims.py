@@ -86,6 +86,16 @@ COMMANDS = {
     "mesh_convergence_ply_q2": {"command": 'scripts/mesh_convergence parameter_files/composite_ply.prm '
                                            '--reference -2.58217670e-05 --output {out}/m '
                                            '--set "Output/Write VTU=false" --set "Mesh/Number of cycles=18"'},
+    # docs/accuracy.md: adaptive rates on the thin film, a thermal bimaterial (a minute each).
+    "mesh_convergence_film_q1": {"command": 'scripts/mesh_convergence parameter_files/thin_film.prm '
+                                            '--reference 1.5267337820e-02 --output {out}/m '
+                                            '--set "Output/Write VTU=false" --set "Solver/Tolerance=1e-10" '
+                                            '--set "Mesh/Number of cycles=18" '
+                                            '--set "Mesh/Polynomial degree of layer 1=1"'},
+    "mesh_convergence_film_q2": {"command": 'scripts/mesh_convergence parameter_files/thin_film.prm '
+                                            '--reference 1.5267337820e-02 --output {out}/m '
+                                            '--set "Output/Write VTU=false" --set "Solver/Tolerance=1e-10" '
+                                            '--set "Mesh/Number of cycles=28"'},
     # docs/geometry.md: the composite ply (issue 32), its own settings (a few seconds).
     "composite_ply": {"command": RUN % "parameter_files/composite_ply.prm"},
 }
@@ -209,6 +219,19 @@ CLAIMS = [
     {"id": "accuracy.ply.q2_dofs", "doc": "docs/accuracy.md", "fast": False,
      "pattern": Q("| 18, {} | N^-1.06"), "command": "mesh_convergence_ply_q2",
      "extract": {"regex": r"^\s*17\s+(\d+)\s"}, "tolerance": ("exact",)},
+
+    # docs/accuracy.md, the rates of adaptive Q1 and Q2 on the thin film (slow).
+    {"id": "accuracy.film.q1_rate", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("| 18, 297 906 | N^{} (cycles 9–17)"), "command": "mesh_convergence_film_q1",
+     "extract": {"regex": r"least squares over cycles \d+-\d+: e_h ~ N\^(\S+) "},
+     "tolerance": ("rounded",)},
+    {"id": "accuracy.film.q2_rate", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("| 28, 571 494 | N^{} (cycles 14–27)"), "command": "mesh_convergence_film_q2",
+     "extract": {"regex": r"least squares over cycles \d+-\d+: e_h ~ N\^(\S+) "},
+     "tolerance": ("rounded",)},
+    {"id": "accuracy.film.q2_dofs", "doc": "docs/accuracy.md", "fast": False,
+     "pattern": Q("| 28, {} | N^-1.09"), "command": "mesh_convergence_film_q2",
+     "extract": {"regex": r"^\s*27\s+(\d+)\s"}, "tolerance": ("exact",)},
 
     # docs/geometry.md, the composite ply on an aluminium sheet.
     {"id": "geometry.composite_ply.dofs", "doc": "docs/geometry.md", "fast": True,
