@@ -28,9 +28,12 @@
 // Asserted:
 // - the runs are accepted, one tip at x = a;
 // - G within 1 % of G_beam at E_s / E_f = 10, 100 and 1000 (a = 10 h; the
-//   tip 10 h from the free edge and from the held side): the error of the
-//   adaptive Q2 runs (160 cells along Sigma, 6 cycles) is below 0.1 %
-//   (measured 0.01 %), the 1 % is the margin for the cycles' scatter;
+//   tip 10 h from the free edge and from the held side): the adaptive Q2
+//   runs (160 cells along Sigma, 6 cycles) agree with it to 0.03 % at most
+//   (measured); the 1 % is the margin. The start mesh matters: from 40
+//   cells (two across the film) G was 15 % high at E_s / E_f = 10 and
+//   0.7 % at 1000 after 10 cycles, with dG below 2e-6 (the cycles refine
+//   at the tip and leave the bending substrate coarse);
 // - G / G_ss grows with E_s and lies within 1 % of 1 at E_s / E_f = 1000;
 // - on the stiff substrate a debond of one film thickness (a = h) already
 //   releases G_ss within 1 %: the film relaxes within about h of the tip.
