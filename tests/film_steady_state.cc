@@ -32,7 +32,7 @@
 //   runs (160 cells along Sigma, 6 cycles) agree with it to 0.03 % at most
 //   (measured); the 1 % is the margin. The start mesh matters: from 40
 //   cells (two across the film) G was 15 % high at E_s / E_f = 10 and
-//   0.7 % at 1000 after 10 cycles, with dG below 2e-6 (the cycles refine
+//   1.1 % at 1000 after 10 cycles, with dG below 2e-6 (the cycles refine
 //   at the tip and leave the bending substrate coarse);
 // - G / G_ss grows with E_s and lies within 1 % of 1 at E_s / E_f = 1000;
 // - on the stiff substrate a debond of one film thickness (a = h) already
