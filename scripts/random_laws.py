@@ -289,7 +289,7 @@ def inadmissible(rng):
         s[sec + "Law"] = name
         if name == "isotropic":
             value = rng.choice(["1e-5, 2e-5", "1e-5, 1e-5, 1e-5", "hot", "1e-5; 2e-5", "nan",
-                                "inf", "-inf", "1e400", "1e-5,"])
+                                "inf", "-inf", "1e400", "1e-5,,"])
         else:
             value = rng.choice(["1e-5, 2e-5", "1e-5, 2e-5, 3e-5, 4e-5", "1e-5,, 2e-5",
                                 "a, b, c", "nan, 0, 0", "1e-5, inf, 0", "1e-5; 2e-5; 3e-5",
