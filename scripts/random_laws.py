@@ -21,6 +21,22 @@ Admissible draws (every one must be accepted by bilayer):
     reference_shear(entries) a shear modulus of the law (for load scales)
     volume_terms(rng, const) an expression pair / triple in x, y scaled by
                              the constant CONST (loads scale with it)
+    thermal_expansion(rng, law)
+                             a Thermal expansion of the law: one number alpha
+                             in [0.5, 3] 1e-5/K, or (orthotropic) alpha_1 in
+                             [-0.2, 3], alpha_2, alpha_3 in [0.5, 4] 1e-5/K,
+                             or (anisotropic) alpha_11, alpha_22 in [0.5, 3],
+                             alpha_12 in [-1, 1] 1e-5/K
+    thermal(rng, s, layers, const)
+                             thermal entries on top of the settings S (their
+                             Law entries drawn): per layer a Thermal expansion
+                             (70 %), per side sometimes one of its own (always
+                             where the layer's three numbers do not fit the
+                             side's isotropic law, sometimes 0); a Loads/
+                             Temperature change CONST (constant) or CONST (1 +
+                             a x + b y) (linear), or none (15 %); returns
+                             (tags, dT text or None, value of CONST in
+                             [10, 60] K with either sign)
 
 Inadmissible draws, each with the entry its refusal must name:
     inadmissible(rng) -> (settings {"Section/Entry": value}, names [str],
@@ -140,6 +156,49 @@ def volume_terms(rng, const, n):
     return "; ".join(comps)
 
 
+def thermal_expansion(rng, law_name):
+    """A random Thermal expansion text of the law LAW_NAME [1/K]."""
+    if law_name == "isotropic" or rng.random() < 0.3:
+        return "%.3g" % (rng.uniform(0.5, 3) * 1e-5)
+    if law_name == "orthotropic":
+        a = [rng.uniform(-0.2, 3), rng.uniform(0.5, 4), rng.uniform(0.5, 4)]
+    else:
+        a = [rng.uniform(0.5, 3), rng.uniform(0.5, 3), rng.uniform(-1, 1)]
+    return ", ".join("%.3g" % (v * 1e-5) for v in a)
+
+
+def thermal(rng, s, layers=(1, 2), const="dT0"):
+    """Thermal expansions and a temperature change on top of the settings S
+    (in place). Returns (tags, the Temperature change text or None, the
+    value of CONST)."""
+    tags = []
+    for k in layers:
+        sec = "Materials/Layer %d/" % k
+        layer_law = s.get(sec + "Law", "isotropic")
+        three = False
+        if rng.random() < 0.7:
+            text = thermal_expansion(rng, layer_law)
+            s[sec + "Thermal expansion"] = text
+            three = "," in text
+            tags.append("a%d" % k)
+        for side in SIDES:
+            law_here = s.get(sec + side + "/Law", layer_law)
+            # The layer's three numbers do not fit an isotropic side.
+            must = three and law_here == "isotropic"
+            if must or rng.random() < 0.15:
+                s[sec + side + "/Thermal expansion"] = (
+                    thermal_expansion(rng, law_here) if must or rng.random() < 0.8 else "0")
+                tags.append("a%d%s" % (k, side[-1]))
+    value = rng.choice([-1, 1]) * rng.uniform(10, 60)
+    kind = rng.random()
+    if kind < 0.15:
+        return tags, None, value
+    if kind < 0.55:
+        return tags + ["dT"], const, value
+    return tags + ["dT(x,y)"], "%s*(1 %+.2f*x %+.2f*y)" % (
+        const, rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5)), value
+
+
 # --------------------------------------------------------------------------
 # Inadmissible values: each (settings, names, what) with NAMES the strings
 # one of which the refusal line must contain (the entry it names).
@@ -154,7 +213,8 @@ def inadmissible(rng):
                        "stiffness-list", "stiffness-nan", "ortho-G", "ortho-E", "ortho-nu12",
                        "ortho-det", "ortho-nu12-stress", "ortho-angle", "iso-incompressible",
                        "iso-nu", "body-nonfinite", "eigen-nonfinite", "body-list",
-                       "eigen-list", "law-name", "plane-state"])
+                       "eigen-list", "law-name", "plane-state", "thermal-list",
+                       "temperature-nonfinite"])
     s, names = {}, []
     if kind.startswith("stiffness"):
         s[sec + "Law"] = "anisotropic"
@@ -221,6 +281,32 @@ def inadmissible(rng):
             comps = ["0"] * rng.choice([m for m in (1, 2, 3, 4) if m != n])
         s["Loads/Layer %d/%s" % (k, entry)] = "; ".join(comps)
         names = [entry]
+    elif kind == "thermal-list":
+        # Malformed alpha lists: a count that does not fit the law, no
+        # number, not finite (refused when read, even without a
+        # temperature change).
+        name = rng.choice(LAWS)
+        s[sec + "Law"] = name
+        if name == "isotropic":
+            value = rng.choice(["1e-5, 2e-5", "1e-5, 1e-5, 1e-5", "hot", "1e-5; 2e-5", "nan",
+                                "inf", "-inf", "1e400", "1e-5,,"])
+        else:
+            value = rng.choice(["1e-5, 2e-5", "1e-5, 2e-5, 3e-5, 4e-5", "1e-5,, 2e-5",
+                                "a, b, c", "nan, 0, 0", "1e-5, inf, 0", "1e-5; 2e-5; 3e-5",
+                                "1e-5, 2e-5, 1e999"])
+        s[sec + "Thermal expansion"] = value
+        if rng.random() < 0.5:
+            s["Loads/Temperature change"] = "%.3g" % rng.uniform(-50, 50)
+        names = ["Thermal expansion"]
+    elif kind == "temperature-nonfinite":
+        # Refused whether or not a material expands (all coefficients 0
+        # by default).
+        s["Loads/Temperature change"] = rng.choice(
+            ["0/0", "log(x-100)", "1/(x-x)", "sqrt(-1-x*x)", "exp(1e5)", "1e308*1e308",
+             "nan", "inf", "log(x-10) + y", "20*(1 + 0/0*y)"])
+        if rng.random() < 0.5:
+            s["Materials/Layer %d/Thermal expansion" % rng.choice([1, 2])] = "1.2e-5"
+        names = ["Temperature change"]
     elif kind == "law-name":
         s[sec + "Law"] = rng.choice(["Orthotropic", "transversely isotropic", "aniso", "1", "nan"])
         names = ["Law"]
@@ -229,4 +315,4 @@ def inadmissible(rng):
                                                              "plane-stress", "3d"])
         names = ["Plane state"]
     return s, names, kind + (" (" + side.rstrip("/") + ")" if side and kind.startswith(
-        ("stiffness", "ortho", "iso", "law")) else "")
+        ("stiffness", "ortho", "iso", "law", "thermal-list")) else "")

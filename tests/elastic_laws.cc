@@ -33,6 +33,20 @@
 // - load_constants(): E, nu, mu, lambda of the 3-D material for isotropic
 //   plane stress (no lambda at nu = 0.5), none for orthotropic and
 //   anisotropic laws.
+// - plane_eigenstrain() of a thermal strain alpha dT (alpha = 1.2e-5,
+//   dT = 85): isotropic plane strain gives eps*_eff = (1 + nu) alpha dT I
+//   and the sigma_zz offset -E alpha dT, plane stress alpha dT I and 0
+//   (closed forms, 1e-12); thermal_strain() of the material feeds it.
+//   Orthotropic at 37 degrees (alpha_1, alpha_2, alpha_3 = 0.4e-5, 2.5e-5,
+//   3.1e-5): in plane strain the 3-D stress K (eps - eps_th) of the strain
+//   (e, eps_zz = 0) with the thermal strain diag(alpha) dT in the material
+//   axes, K the inverted 6x6 compliance, equals (law.stress(e - eps*_eff),
+//   Z : (e - eps*_eff) + offset) for e = 0 and the test strains (1e-12);
+//   independently, the offset is the s_zz that makes eps_zz = S_33 s_zz +
+//   alpha_3 dT vanish, -alpha_3 dT / S_33, and eps*_eff the in-plane strain
+//   S_p3 s_zz + eps_th,p turned to x-y. Plane stress: eps*_eff the in-plane
+//   thermal strain turned to x-y, offset 0. Anisotropic: the given
+//   in-plane tensor per kelvin, offset 0.
 
 #include <deal.II/base/numbers.h>
 #include <deal.II/lac/full_matrix.h>
@@ -521,6 +535,184 @@ namespace
               objective);
       }
   }
+
+  /// Thermal strains: dT [K].
+  const double dT = 85;
+
+
+  /// plane_eigenstrain() of isotropic laws against the closed forms.
+  void
+  thermal_isotropic()
+  {
+    const double alpha = 1.2e-5;
+    for (const auto &[E, nu] : {std::pair{200., 0.28}, std::pair{70., 0.33}})
+      for (const PlaneState state :
+           {PlaneState::plane_strain, PlaneState::plane_stress})
+        {
+          const bool    strain = state == PlaneState::plane_strain;
+          LayerMaterial m(E, nu);
+          m.plane_state          = state;
+          m.thermal_expansion[0] = alpha;
+          const auto    law      = make_elastic_law(m);
+          Eigenstrain3D eps3;
+          eps3.in_plane            = alpha * dT * unit_symmetric_tensor<2>();
+          eps3.zz                  = alpha * dT;
+          const PlaneEigenstrain p = law->plane_eigenstrain(eps3);
+          const Strain           expected =
+            (strain ? 1 + nu : 1.) * alpha * dT * unit_symmetric_tensor<2>();
+          const double offset = strain ? -E * alpha * dT : 0.;
+          // thermal_strain() per kelvin, times dT, gives the same.
+          const Eigenstrain3D per_kelvin = thermal_strain(m);
+          const bool          material =
+            close(dT * per_kelvin.in_plane, eps3.in_plane, 1e-15) &&
+            close(dT * per_kelvin.zz, eps3.zz, 1e-15);
+          std::cout << "Thermal strain alpha dT = 1.2e-5 * 85, isotropic E = "
+                    << E << ", nu = " << nu
+                    << (strain ? ", plane strain\n" : ", plane stress\n");
+          check(strain ? "eps*_eff = (1 + nu) alpha dT I (1e-12)" :
+                         "eps*_eff = alpha dT I (1e-12)",
+                close(p.in_plane, expected, 1e-12));
+          check(strain ? "sigma_zz offset = -E alpha dT (1e-12)" :
+                         "sigma_zz offset = 0",
+                strain ? close(p.sigma_zz_offset, offset, 1e-12) :
+                         p.sigma_zz_offset == 0);
+          check("thermal_strain() = alpha I, eps_zz = alpha (per kelvin)",
+                material);
+        }
+  }
+
+
+  /**
+   * plane_eigenstrain() of an orthotropic law at 37 degrees against the
+   * 3-D thermoelastic stress computed here.
+   */
+  void
+  thermal_orthotropic()
+  {
+    OrthotropicConstants o;
+    o.E_1 = 140, o.E_2 = 10, o.E_3 = 12;
+    o.nu_12 = 0.3, o.nu_13 = 0.28, o.nu_23 = 0.45, o.G_12 = 5;
+    const double             angle = 37;
+    const double             a[3]  = {0.4e-5, 2.5e-5, 3.1e-5};
+    const FullMatrix<double> Q     = rotation3(angle);
+    // The thermal strain diag(alpha) dT in the material axes, and in x-y.
+    FullMatrix<double> th_material(3, 3);
+    for (unsigned int i = 0; i < 3; ++i)
+      th_material(i, i) = a[i] * dT;
+    const FullMatrix<double> th_xy = turn(th_material, Q, false);
+    std::cout << "Thermal strain of the orthotropic layer at 37 degrees, "
+                 "alpha_1, alpha_2, alpha_3 = 0.4e-5, 2.5e-5, 3.1e-5, dT = "
+                 "85\n";
+    for (const PlaneState state :
+         {PlaneState::plane_strain, PlaneState::plane_stress})
+      {
+        const bool    strain     = state == PlaneState::plane_strain;
+        LayerMaterial m          = orthotropic(o, state, angle);
+        m.thermal_expansion      = {{a[0], a[1], a[2]}};
+        const auto          law  = make_elastic_law(m);
+        const Eigenstrain3D per  = thermal_strain(m);
+        Eigenstrain3D       eps3 = per;
+        eps3.in_plane *= dT;
+        eps3.zz *= dT;
+        const PlaneEigenstrain p     = law->plane_eigenstrain(eps3);
+        const double           scale = o.E_2 * a[1] * dT;
+        // thermal_strain(): R diag(alpha_1, alpha_2) R^T, alpha_3 along z.
+        Strain th_plane;
+        th_plane[0][0] = th_xy(0, 0), th_plane[1][1] = th_xy(1, 1),
+        th_plane[0][1]      = th_xy(0, 1);
+        const bool material = close(eps3.in_plane, th_plane, 1e-14) &&
+                              close(eps3.zz, a[2] * dT, 1e-14);
+        std::cout << (strain ? " plane strain\n" : " plane stress\n");
+        check("thermal_strain() = R diag(alpha_1, alpha_2) R^T, alpha_3 "
+              "along z",
+              material);
+        if (strain)
+          {
+            // The s_zz alone that keeps eps_zz = 0: S_33 s + alpha_3 dT = 0
+            // (a rotation about z leaves S_33 and s_zz as they are).
+            const FullMatrix<double> S = compliance(o);
+            const double             s = -a[2] * dT / S(2, 2);
+            Vector<double>           sigma(6), eps(6);
+            sigma(2) = s;
+            S.vmult(eps, sigma);
+            FullMatrix<double> total = tensor(eps, 2.);
+            total.add(1., th_material);
+            const FullMatrix<double> total_xy = turn(total, Q, false);
+            Strain                   eff;
+            eff[0][0] = total_xy(0, 0), eff[1][1] = total_xy(1, 1),
+            eff[0][1] = total_xy(0, 1);
+            check("eps*_eff = S_p3 s_zz + eps_th,p turned to x-y, s_zz = "
+                  "-alpha_3 dT / S_33 (1e-12)",
+                  close(p.in_plane, eff, 1e-12) &&
+                    std::abs(total(2, 2)) <= 1e-12 * a[2] * dT);
+            check("sigma_zz offset = -alpha_3 dT / S_33 (1e-12)",
+                  close(p.sigma_zz_offset, s, 1e-12));
+            // The 3-D stress K (eps - eps_th) of (e, eps_zz = 0).
+            FullMatrix<double> K = S;
+            K.gauss_jordan();
+            bool                stress = true, zz = true;
+            const Strain        zero;
+            std::vector<Strain> es = strains();
+            es.insert(es.begin(), zero);
+            for (const Strain &e : es)
+              {
+                FullMatrix<double> mech = turn(embed(e, 0), Q, true);
+                mech.add(-1., th_material);
+                const Vector<double> eps_m = voigt(mech, 2.);
+                Vector<double>       sigma3(6);
+                K.vmult(sigma3, eps_m);
+                const FullMatrix<double> s3 =
+                  turn(tensor(sigma3, 1.), Q, false);
+                Strain in_plane;
+                in_plane[0][0] = s3(0, 0), in_plane[1][1] = s3(1, 1),
+                in_plane[0][1]  = s3(0, 1);
+                const Strain ls = law->stress(e - p.in_plane);
+                const double lzz =
+                  law->out_of_plane_stress(e - p.in_plane) + p.sigma_zz_offset;
+                stress = stress && (ls - in_plane).norm() <=
+                                     1e-12 * std::max(in_plane.norm(), scale);
+                zz = zz && std::abs(lzz - s3(2, 2)) <=
+                             1e-12 * std::max(std::abs(s3(2, 2)), scale);
+              }
+            check("stress C (e - eps*_eff) = the 3-D K (eps - eps_th), "
+                  "eps_zz = 0, for e = 0 and the test strains (1e-12)",
+                  stress);
+            check("sigma_zz Z : (e - eps*_eff) + offset = the 3-D s_zz "
+                  "(1e-12)",
+                  zz);
+          }
+        else
+          {
+            check("eps*_eff = the in-plane thermal strain in x-y (1e-12)",
+                  close(p.in_plane, th_plane, 1e-12));
+            check("sigma_zz offset = 0", p.sigma_zz_offset == 0);
+          }
+      }
+  }
+
+
+  /// Anisotropic: the given in-plane tensor per kelvin, no offset.
+  void
+  thermal_anisotropic()
+  {
+    LayerMaterial m;
+    m.law                   = MaterialLaw::anisotropic;
+    m.stiffness             = {{200, 60, 10, 150, -8, 45}};
+    m.thermal_expansion     = {{1.1e-5, 2.3e-5, -0.4e-5}};
+    const auto          law = make_elastic_law(m);
+    const Eigenstrain3D per = thermal_strain(m);
+    Strain              given;
+    given[0][0] = 1.1e-5 * dT, given[1][1] = 2.3e-5 * dT,
+    given[0][1]        = -0.4e-5 * dT;
+    Eigenstrain3D eps3 = per;
+    eps3.in_plane *= dT;
+    const PlaneEigenstrain p = law->plane_eigenstrain(eps3);
+    std::cout << "Thermal strain of an anisotropic layer (alpha_11, alpha_22, "
+                 "alpha_12 = 1.1e-5, 2.3e-5, -0.4e-5), dT = 85\n";
+    check("eps*_eff = the given tensor times dT, eps_zz = 0 (1e-14)",
+          close(p.in_plane, given, 1e-14) && per.zz == 0);
+    check("sigma_zz offset = 0", p.sigma_zz_offset == 0);
+  }
 } // namespace
 
 
@@ -532,4 +724,7 @@ main()
   anisotropic_voigt();
   isotropic_plane_stress();
   orthotropic_against_3d();
+  thermal_isotropic();
+  thermal_orthotropic();
+  thermal_anisotropic();
 }

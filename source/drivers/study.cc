@@ -4,11 +4,14 @@
 #include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <bilayer/core/progress.h>
 #include <bilayer/core/tasks.h>
 #include <bilayer/drivers/study.h>
+#include <bilayer/parameters/expressions.h>
+#include <bilayer/parameters/thermal_volume_load.h>
 #include <bilayer/postprocess/estimator.h>
 #include <bilayer/solvers/outer_solver.h>
 
@@ -41,6 +44,49 @@ namespace bilayer
                               plus.get_boundary_points().second[d]);
         }
       return lower.distance(upper);
+    }
+
+
+    /**
+     * Loads/Temperature change at the vertices and at the Gauss points of
+     * the assembly of the subproblem @p sub (its material @p material),
+     * each checked finite (ThermalVolumeLoad::temperature_change(): "Loads/
+     * Temperature change is not finite at (x, y) = (...)"). Done for every
+     * subproblem wherever dT is not "0": a material that does not expand
+     * builds no thermal load and never evaluates dT, yet a dT that is not
+     * finite must be refused there as where a material expands (whose
+     * assembly evaluates dT at these Gauss points and whose stress output
+     * at the vertices), on the rectangle and on Gmsh scenes alike.
+     */
+    void
+    check_temperature_change(const ElasticSubproblem &sub,
+                             const LoadParameters    &loads,
+                             const LayerMaterial     &material,
+                             const double             length)
+    {
+      const ThermalVolumeLoad dT(
+        nullptr,
+        expressions::function(loads.temperature_change,
+                              1,
+                              "dT",
+                              loads.constant_values,
+                              "Loads/Temperature change"),
+        material,
+        length);
+      FEValues<2> fe_values(
+        sub.mapping(),
+        sub.fe(),
+        sub.fe().reference_cell().get_gauss_type_quadrature<2>(sub.fe().degree +
+                                                               1),
+        update_quadrature_points);
+      for (const auto &cell : sub.dof_handler().active_cell_iterators())
+        {
+          fe_values.reinit(cell);
+          for (const Point<2> &x : fe_values.get_quadrature_points())
+            dT.temperature_change(x);
+          for (const unsigned int v : cell->vertex_indices())
+            dT.temperature_change(cell->vertex(v));
+        }
     }
   } // namespace
 
@@ -335,6 +381,14 @@ namespace bilayer
             }
         }
     setups.join_all();
+    if (!expressions::is_zero(scene.loads.temperature_change))
+      for (const Layer layer : {Layer::first, Layer::second})
+        if (scene.materials.has_layer(layer))
+          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+            check_temperature_change(*subproblems[Layout::index(layer, sd)],
+                                     scene.loads,
+                                     scene.materials.material(layer, sd),
+                                     domain_diameter(domain));
   }
 
 

@@ -185,6 +185,13 @@ run "side thermal expansion of two numbers" "Materials/Layer 1/Omega+/Thermal ex
 run "temperature change of two components" "Loads/Temperature change must have one component, no ';' (dT), got '1; 2'" "Loads/Temperature change=1; 2"
 run "temperature change does not parse" "Loads/Temperature change: cannot evaluate 'c*'" "Loads/Temperature change=c*"
 run "temperature change NaN" "Loads/Temperature change is not finite at (x, y) = (" "Loads/Temperature change=log(x-10)" --set "Materials/Layer 1/Thermal expansion=1e-5"
+# ... also where no material expands (every coefficient 0: the thermal load
+# of each subproblem is built, its eigenstrain 0, and dT checked where it
+# would be evaluated), and on the side that does not expand.
+run "temperature change 0/0, no expansion" "Loads/Temperature change is not finite at (x, y) = (" "Loads/Temperature change=0/0"
+run "temperature change log(x-100), no expansion" "Loads/Temperature change is not finite at (x, y) = (" "Loads/Temperature change=log(x-100)"
+run "temperature change infinite, no expansion" "Loads/Temperature change is not finite at (x, y) = (" "Loads/Temperature change=20*(1 + y/(x-x))" --set "Materials/Number of layers=1"
+run "temperature change NaN below Sigma, Omega+ expands" "Loads/Temperature change is not finite at (x, y) = (" "Loads/Temperature change=log(y)" --set "Materials/Layer 1/Omega+/Thermal expansion=1e-5"
 run "temperature change using E2 of an orthotropic layer" "Loads/Temperature change: '1e-3*E2' uses E2, a constant of isotropic layers only (E2, nu2, mu2, lambda2), but Materials/Layer 2/Law = orthotropic" "Materials/Layer 2/Law=orthotropic" --set "Loads/Temperature change=1e-3*E2"
 run "missing mesh file" "Mesh/Mesh files: cannot open" "Mesh/Mesh files=nothere_{side}.msh"
 run "mesh file is a directory" "Mesh/Mesh files: cannot open 'mesh_dir_minus': not a regular file" "Mesh/Mesh files=mesh_dir_{side}"
@@ -454,6 +461,13 @@ before=$(snapshot)
 check "scene program (SystemCall)" "program.geo:" program.prm --set "Output/Output directory=fresh/out"
 [[ ! -e ran ]] || fail "scene program (SystemCall)" "the command ran"
 check "curve in Sigma and crack" "'Sigma' and 'crack'" both.prm --set "Output/Output directory=fresh/out"
+# A temperature change of x, y on a Gmsh scene: refused as on the rectangle,
+# with or without an expanding layer.
+for alpha in 0 1e-5; do
+  check "Gmsh scene, temperature change not finite (alpha $alpha)" "Loads/Temperature change is not finite at (x, y) = (" \
+    "$scenes/two_cracks.prm" --set "Output/Output directory=fresh/out" --set "Loads/Temperature change=sqrt(x-1000)" \
+    --set "Materials/Layer 1/Thermal expansion=$alpha"
+done
 check "forged output marker" "'forged'" "$prm" --set "Output/Output directory=forged"
 DEAL_II_NUM_THREADS=abc check "DEAL_II_NUM_THREADS=abc" "DEAL_II_NUM_THREADS must be a whole number" \
   "$prm" --set "Output/Output directory=fresh/out"
