@@ -11,6 +11,7 @@
 #include <bilayer/core/tasks.h>
 #include <bilayer/drivers/study.h>
 #include <bilayer/parameters/expressions.h>
+#include <bilayer/parameters/parameter_entries.h>
 #include <bilayer/parameters/thermal_volume_load.h>
 #include <bilayer/postprocess/estimator.h>
 #include <bilayer/solvers/outer_solver.h>
@@ -381,14 +382,27 @@ namespace bilayer
             }
         }
     setups.join_all();
+    // (Collective: every process knows, the first reports in one line.)
+    std::string problem;
     if (!expressions::is_zero(scene.loads.temperature_change))
-      for (const Layer layer : {Layer::first, Layer::second})
-        if (scene.materials.has_layer(layer))
-          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
-            check_temperature_change(*subproblems[Layout::index(layer, sd)],
-                                     scene.loads,
-                                     scene.materials.material(layer, sd),
-                                     domain_diameter(domain));
+      try
+        {
+          for (const Layer layer : {Layer::first, Layer::second})
+            for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+              if (scene.materials.has_layer(layer) &&
+                  subproblems[Layout::index(layer, sd)])
+                check_temperature_change(*subproblems[Layout::index(layer, sd)],
+                                         scene.loads,
+                                         scene.materials.material(layer, sd),
+                                         domain_diameter(domain));
+        }
+      catch (const ExceptionBase &e)
+        {
+          problem = one_line_message(e);
+        }
+    problem = distribution.first_error(problem);
+    if (!problem.empty())
+      throw CollectiveError(problem);
   }
 
 
