@@ -20,9 +20,9 @@
 // Measured (docs/fracture.md) well below that; asserted also: 1e-3 relative.
 //
 // (a) Body forces alone: two layers (Example 1's materials), clamped left
-//     and right, layer 1 f = (0, c y (1.5 + x)), layer 2 f = (c y / 2, c y
-//     (1.5 - x) / 2), c = 1e-3 E1: the crack opens; the term ((grad f)
-//     theta) . w and (f . w) div theta enter G.
+//     and right, layer 1 f = (0, c y exp(4 (x - 1/2))), layer 2 f = (c y / 2, c
+//     y (1.5 - x) / 2), c = 1e-3 E1: the crack opens; the term ((grad f) theta)
+//     . w and (f . w) div theta enter G.
 // (b) An eigenstrain alone: one layer, all sides clamped (zero
 //     displacement), eps11 = eps22 = -c (2 + x), c = 1e-3: a non-uniform
 //     shrinkage that the clamps resist, which opens the crack; grad eps* =
