@@ -457,8 +457,11 @@ namespace bilayer
     Timer               solve_timer;
     const unsigned long shared_before  = distribution.shared_values();
     const double        seconds_before = distribution.shared_seconds();
-    record.result = create_outer_solver(scene.solver, scene.output, pcout)
-                      ->solve(subproblem_views(), coupling, mu, w);
+    if (scene.contact.friction == Friction::coulomb)
+      solve_coulomb(record);
+    else
+      record.result = create_outer_solver(scene.solver, scene.output, pcout)
+                        ->solve(subproblem_views(), coupling, mu, w);
     record.theta         = record.result.theta;
     record.solve_seconds = solve_timer.wall_time();
     if (scene.solver.dual_spectrum_steps > 0)
@@ -476,6 +479,73 @@ namespace bilayer
     record.processes      = distribution.n_processes();
     record.shared_values  = distribution.shared_values() - shared_before;
     record.shared_seconds = distribution.shared_seconds() - seconds_before;
+  }
+
+
+  void
+  Study::solve_coulomb(CycleRecord &record)
+  {
+    // Coulomb friction as a fixed point over Tresca problems: the bound of
+    // each crack node is F mu_c of the last solve (of the start multipliers
+    // first: zero, or a warm start), until the bounds change by at most
+    // Solver/Tolerance relative to the largest one.
+    const double           F              = scene.contact.friction_coefficient;
+    const MultiplierSpace &space          = coupling.space();
+    const auto             coulomb_bounds = [&]() {
+      std::vector<double> bounds(space.n_nodes(Layout::across_sigma), 0.);
+      for (unsigned int a = 0; a < bounds.size(); ++a)
+        if (space.friction_node(a))
+          bounds[a] = F * std::max(space.contact_multiplier(mu, a), 0.);
+      return bounds;
+    };
+    const std::unique_ptr<OuterSolver> solver =
+      create_outer_solver(scene.solver, scene.output, pcout);
+    std::vector<double> bounds = coulomb_bounds();
+    SolverResult       &total  = record.result;
+    for (unsigned int k = 1; k <= scene.contact.friction_iterations; ++k)
+      {
+        coupling.set_friction_bounds(bounds);
+        space.project(mu);
+        const SolverResult r =
+          solver->solve(subproblem_views(), coupling, mu, w);
+        const SolverResult sum = total;
+        total                  = r;
+        total.iterations += sum.iterations;
+        total.subdomain_solves += sum.subdomain_solves;
+        total.preconditioner_solves += sum.preconditioner_solves;
+        total.linear_iterations += sum.linear_iterations;
+        total.setup_seconds += sum.setup_seconds;
+        total.iteration_seconds += sum.iteration_seconds;
+        record.friction_iterations       = k;
+        const std::vector<double> next   = coulomb_bounds();
+        double                    change = 0, largest = 0;
+        for (unsigned int a = 0; a < next.size(); ++a)
+          {
+            change  = std::max(change, std::abs(next[a] - bounds[a]));
+            largest = std::max(largest, next[a]);
+          }
+        record.friction_bound_change = largest > 0 ? change / largest : change;
+        pcout << "  Coulomb fixed point " << k << ": bounds F mu_c changed by "
+              << record.friction_bound_change << " of the largest bound ("
+              << r.iterations << " " << r.solver << " iterations)" << std::endl;
+        if (!r.converged)
+          {
+            total.message =
+              "Coulomb fixed point " + std::to_string(k) + ": " + r.message;
+            return;
+          }
+        if (record.friction_bound_change <= scene.solver.tolerance)
+          return;
+        bounds = next;
+      }
+    total.converged = false;
+    total.message   = "the friction bounds F mu_c of Coulomb friction still "
+                      "changed by " +
+                    std::to_string(record.friction_bound_change) +
+                    " of the largest after " +
+                    std::to_string(scene.contact.friction_iterations) +
+                    " fixed-point iterations (Contact/Friction iterations); "
+                    "a smaller Contact/Friction coefficient converges faster";
   }
 
 

@@ -161,6 +161,9 @@ namespace bilayer
                                    r.min_contact_multiplier >= 0);
         record.checks.emplace_back("complementarity <= " + t.str(),
                                    r.complementarity <= tol);
+        if (scene.contact.frictional())
+          record.checks.emplace_back("friction complementarity <= " + t.str(),
+                                     r.friction_complementarity <= tol);
       }
     record.checks.emplace_back("relative KKT residual <= " + t.str(),
                                r.kkt.value() <= tol);
@@ -175,7 +178,8 @@ namespace bilayer
       std::isfinite(r.relative_jump_without_multiplier) &&
       std::isfinite(r.min_contact_multiplier) &&
       std::isfinite(r.complementarity) && std::isfinite(r.kkt.value()) &&
-      std::isfinite(record.eta);
+      std::isfinite(r.friction_complementarity) &&
+      std::isfinite(r.friction_dissipation) && std::isfinite(record.eta);
     record.checks.emplace_back("energy and residuals finite", finite);
     // With a given support radius the last cycle must report G at every
     // tip where it is defined (the check appears only where it fails:

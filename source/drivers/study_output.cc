@@ -201,6 +201,8 @@ namespace bilayer
               pcout << " ± ? (error estimate " << g.error_estimate << "; ";
             if (g.tip.curved())
               pcout << "contact term " << g.contact << "; ";
+            if (scene.contact.frictional())
+              pcout << "friction term " << g.friction << "; ";
             pcout << std::defaultfloat << std::setprecision(3)
                   << "support radius " << g.tip.support_radius << ")"
                   << std::scientific << std::setprecision(4) << "\n";

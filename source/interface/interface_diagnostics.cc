@@ -72,6 +72,45 @@ namespace bilayer
   }
 
 
+  namespace
+  {
+    /// The friction parts of @p report (InterfaceReport) at the multipliers
+    /// @p mu with jumps @p g.
+    void
+    add_friction_report(const Interface           &interface,
+                        const BlockVector<double> &g,
+                        const BlockVector<double> &mu,
+                        InterfaceReport           &report)
+    {
+      const MultiplierSpace &space = interface.space();
+      constexpr unsigned int mu_1  = Layout::across_sigma;
+      double                 sum_g = 0, gap = 0;
+      for (unsigned int a = 0; a < space.n_nodes(mu_1); ++a)
+        {
+          const unsigned int t = Layout::entry(a, Layout::tangential);
+          const unsigned int i =
+            mu.get_block_indices().local_to_global(mu_1, t);
+          if (!space.set().friction(i))
+            continue;
+          const double d     = space.node_weight(a, mu_1);
+          const double bound = space.set().friction_bound(i);
+          const double m = mu(i), jump = g(i);
+          sum_g += d * bound;
+          gap += d * (bound * std::abs(jump) - m * jump);
+          report.friction_dissipation += d * m * jump;
+          report.max_slip = std::max(report.max_slip, std::abs(jump));
+          if (std::abs(m) >= bound)
+            ++report.slip_nodes;
+          else
+            ++report.stick_nodes;
+        }
+      const double scale = report.displacement_scale;
+      report.friction_complementarity =
+        sum_g > 0 && scale > 0 ? gap / (sum_g * scale) : 0.;
+    }
+  } // namespace
+
+
   KKTResidual
   kkt_residual(const Interface           &interface,
                const Solutions           &w,
@@ -89,8 +128,8 @@ namespace bilayer
     for (unsigned int i = 0; i < mu.size(); ++i)
       if (set.held_at_bound(i, mu(i), g(i)))
         free_g(i) = 0;
-    kkt.primal = scale > 0 ? space.discrete_violation(free_g) / scale :
-                             space.discrete_violation(free_g);
+    kkt.primal = scale > 0 ? space.discrete_violation(free_g, mu) / scale :
+                             space.discrete_violation(free_g, mu);
     const double mu_scale = mu.linfty_norm();
     if (mu_scale > 0)
       for (unsigned int i = 0; i < mu.size(); ++i)
@@ -138,7 +177,7 @@ namespace bilayer
     interface.jumps(w, g);
     const double scale        = displacement_scale(interface, w);
     report.displacement_scale = scale;
-    const double violation    = space.discrete_violation(g);
+    const double violation    = space.discrete_violation(g, mu);
     report.relative_discrete_violation =
       scale > 0 ? violation / scale : violation;
 
@@ -185,6 +224,7 @@ namespace bilayer
         }
     report.complementarity =
       sum_mu > 0 && scale > 0 ? sum_mu_jump / (sum_mu * scale) : 0.;
+    add_friction_report(interface, g, mu, report);
     report.max_multiplier_over_bound =
       mu.linfty_norm() / contact.multiplier_bound;
     report.kkt = kkt_residual(interface, w, g, mu);
@@ -349,6 +389,19 @@ namespace bilayer
         for (const unsigned int s : Layout::subproblems)
           n.trace[s] = Tensor<1, 2>({t[s](x), t[s](y)});
         n.normal_traction = n.on_crack ? n.mu_c : n.mu_g[Layout::normal];
+        n.frictional      = interface.contact_parameters().frictional();
+        if (n.on_crack)
+          {
+            const unsigned int i =
+              mu.get_block_indices().local_to_global(Layout::across_sigma, x);
+            const double m     = mu(i);
+            n.friction_bound   = space.set().friction_bound(i);
+            n.tangential_force = space.set().friction(i) ? -m : 0.;
+            n.friction_state = !space.set().friction(i) ? FrictionState::free :
+                               std::abs(m) >= n.friction_bound ?
+                                                          FrictionState::slip :
+                                                          FrictionState::stick;
+          }
         // The smallest opening against the faces that meet at the node.
         const auto   open    = face_openings(space, t[u_minus], t[u_plus], a);
         const double opening = std::min(open[0], open[1]);
@@ -389,7 +442,10 @@ namespace bilayer
            "mu_minus_x,mu_minus_y,mu_plus_x,mu_plus_y,gap_minus_x,"
            "gap_minus_y,gap_plus_x,gap_plus_y,u_minus_x,u_minus_y,u_plus_x,"
            "u_plus_y,v_minus_x,v_minus_y,v_plus_x,v_plus_y,s,y,normal_x,"
-           "normal_y,contact_pressure,normal_traction,state\n";
+           "normal_y,contact_pressure,normal_traction,state";
+    const bool frictional = !nodes.empty() && nodes.front().frictional;
+    out << (frictional ? ",tangential_force,friction_bound,friction_state\n" :
+                         "\n");
     out << std::setprecision(12);
     for (const InterfaceNode &n : nodes)
       {
@@ -407,7 +463,11 @@ namespace bilayer
         // (+ 0. turns a negative zero into a positive one.)
         out << ',' << n.s << ',' << n.point[1] << ',' << n.normal[0] + 0. << ','
             << n.normal[1] + 0. << ',' << n.contact_pressure << ','
-            << n.normal_traction << ',' << static_cast<int>(n.state) << '\n';
+            << n.normal_traction << ',' << static_cast<int>(n.state);
+        if (frictional)
+          out << ',' << n.tangential_force + 0. << ',' << n.friction_bound
+              << ',' << static_cast<int>(n.friction_state);
+        out << '\n';
       }
   }
 } // namespace bilayer

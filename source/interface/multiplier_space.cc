@@ -249,8 +249,9 @@ namespace bilayer
                              const ContactParameters &contact)
   {
     // The multiplier set (docs/problem.md §3), per component.
-    const double                         p     = contact.multiplier_bound;
-    const CrackSet                      &crack = curve.crack();
+    const double    p     = contact.multiplier_bound;
+    const CrackSet &crack = curve.crack();
+    multiplier_bound      = p;
     std::vector<types::global_dof_index> sizes;
     for (const auto &mesh : meshes)
       sizes.push_back(Layout::n_components * mesh.node_x.size());
@@ -277,6 +278,15 @@ namespace bilayer
                 set_.set_contact(b, n, p);
               else
                 set_.set_none(b, n);
+              if (contact.friction == Friction::tresca)
+                {
+                  const Point<2>    point   = curve.point(x);
+                  const double      g       = contact.tresca_bound(point, x);
+                  const std::string refusal = friction_bound_refusal(g, point);
+                  AssertThrow(refusal.empty(), ExcMessage(refusal));
+                  if (g > 0)
+                    set_.set_friction(b, t, std::min(g, p));
+                }
               // A corner of Sigma: one contact constraint per piece, along
               // its normal (the mean normal would let the node slide
               // through the other face).
@@ -363,12 +373,33 @@ namespace bilayer
 
 
   double
-  MultiplierSpace::discrete_violation(const BlockVector<double> &g) const
+  MultiplierSpace::discrete_violation(const BlockVector<double> &g,
+                                      const BlockVector<double> &mu) const
   {
     double violation = 0;
     for (unsigned int i = 0; i < g.size(); ++i)
-      violation = std::max(violation, set_.violation(i, g(i)));
+      violation = std::max(violation, set_.violation(i, g(i), mu(i)));
     return violation;
+  }
+
+
+  void
+  MultiplierSpace::set_friction_bounds(const std::vector<double> &bounds)
+  {
+    constexpr unsigned int b = Layout::across_sigma;
+    AssertThrow(bounds.size() == n_nodes(b),
+                ExcMessage("MultiplierSpace::set_friction_bounds: one bound "
+                           "per node of mu_1 is needed"));
+    for (unsigned int a = 0; a < n_nodes(b); ++a)
+      if (friction_node(a) && set_.free(b, Layout::entry(a, Layout::normal)))
+        {
+          const unsigned int t = Layout::entry(a, Layout::tangential);
+          const double       g = std::min(bounds[a], multiplier_bound);
+          if (g > 0)
+            set_.set_friction(b, t, g);
+          else
+            set_.set_none(b, t);
+        }
   }
 
 
@@ -384,6 +415,23 @@ namespace bilayer
     values.resize(meshes[b].degree + 1);
     for (unsigned int i = 0; i <= meshes[b].degree; ++i)
       values[i] = meshes[b].fe->shape_value(i, Point<1>(t));
+    return e;
+  }
+
+
+  unsigned int
+  MultiplierSpace::shape_values(const unsigned int   b,
+                                const double         x,
+                                std::vector<double> &values,
+                                std::vector<double> &derivatives) const
+  {
+    const unsigned int e  = shape_values(b, x, values);
+    const auto        &bp = meshes[b].breakpoints;
+    const double       h  = bp[e + 1] - bp[e];
+    const double       t  = (x - bp[e]) / h;
+    derivatives.resize(values.size());
+    for (unsigned int i = 0; i < values.size(); ++i)
+      derivatives[i] = meshes[b].fe->shape_grad(i, Point<1>(t))[0] / h;
     return e;
   }
 

@@ -191,6 +191,27 @@ namespace bilayer
         record_field("complementarity",
                      [](const R &r) { return r.report.kkt.complementarity; })
           .in("kkt"),
+        record_field("iterations",
+                     [](const R &r) { return r.friction_iterations; })
+          .in("friction"),
+        record_field("bound_change",
+                     [](const R &r) { return r.friction_bound_change; })
+          .in("friction"),
+        record_field("complementarity",
+                     [](const R &r) { return r.report.friction_complementarity; })
+          .in("friction"),
+        record_field("dissipation",
+                     [](const R &r) { return r.report.friction_dissipation; })
+          .in("friction"),
+        record_field("max_slip",
+                     [](const R &r) { return r.report.max_slip; })
+          .in("friction"),
+        record_field("stick_nodes",
+                     [](const R &r) { return r.report.stick_nodes; })
+          .in("friction"),
+        record_field("slip_nodes",
+                     [](const R &r) { return r.report.slip_nodes; })
+          .in("friction"),
       };
       // clang-format on
     }
@@ -464,6 +485,7 @@ namespace bilayer
                 << "], \"support_radius\": " << json(g.tip.support_radius)
                 << ", \"G\": " << json(g.G)
                 << ", \"G_contact\": " << json(g.contact)
+                << ", \"G_friction\": " << json(g.friction)
                 << ", \"G_error\": " << json(g.error)
                 << ", \"G_error_estimate\": " << json(g.error_estimate)
                 << ", \"G_half_support\": " << json(g.G_half_support) << "}";

@@ -458,7 +458,7 @@ namespace bilayer
     // Scalars, then vectors given in the node's frame (tangent, normal).
     using Scalar = std::function<double(const InterfaceNode &)>;
     using Field  = std::function<Tensor<1, 2>(const InterfaceNode &)>;
-    const std::vector<std::pair<std::string, Scalar>> scalars = {
+    std::vector<std::pair<std::string, Scalar>> scalars = {
       {"contact_pressure", [](const auto &n) { return n.contact_pressure; }},
       {"normal_traction", [](const auto &n) { return n.normal_traction; }},
       {"mu_c", [](const auto &n) { return n.mu_c; }},
@@ -467,6 +467,16 @@ namespace bilayer
       {"state", [](const auto &n) { return double(n.state); }},
       {"crack_tip", [](const auto &n) { return n.crack_tip ? 1. : 0.; }},
       {"s", [](const auto &n) { return n.s; }}};
+    if (!nodes.empty() && nodes.front().frictional)
+      {
+        scalars.emplace_back("tangential_force",
+                             [](const auto &n) { return n.tangential_force; });
+        scalars.emplace_back("friction_bound",
+                             [](const auto &n) { return n.friction_bound; });
+        scalars.emplace_back("friction_state", [](const auto &n) {
+          return double(n.friction_state);
+        });
+      }
     const std::vector<std::pair<std::string, Field>> vectors = {
       {"mu_g", [](const auto &n) { return n.mu_g; }},
       {"mu_minus", [](const auto &n) { return n.mu_minus; }},

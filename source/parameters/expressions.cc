@@ -172,6 +172,29 @@ namespace bilayer
     }
 
 
+    std::unique_ptr<FunctionParser<3>>
+    curve_function(const std::string                   &expression,
+                   const std::map<std::string, double> &constants,
+                   const std::string                   &entry)
+    {
+      AssertThrow(expression.size() <= max_length,
+                  ExcMessage(entry + ": longer than " +
+                             std::to_string(max_length) + " characters"));
+      AssertThrow(expression.find(';') == std::string::npos,
+                  ExcMessage(entry + " must have one component, no ';', got '" +
+                             expression + "'"));
+      auto       result    = std::make_unique<FunctionParser<3>>(1);
+      const bool evaluated = quietly([&]() {
+        result->initialize("x,y,s", expression, constants);
+        result->value(Point<3>(0.123, 0.456, 0.789));
+      });
+      AssertThrow(evaluated,
+                  ExcMessage(entry + ": cannot evaluate '" + expression +
+                             "' as a function of x, y and s"));
+      return result;
+    }
+
+
     bool
     is_zero(const std::string &expression)
     {

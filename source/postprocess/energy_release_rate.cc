@@ -311,6 +311,79 @@ namespace bilayer
                 }
         }
     }
+
+    /**
+     * The friction term of each tip, into its friction (docs/fracture.md
+     * §6): int mu_t theta_s d/ds (u- - u+).tau ds + on curved pieces
+     * int sign psi kappa mu_t [u].nu ds (the companion of the contact
+     * term), the jumps in the node frames, over
+     * the crack segments of the mesh of mu_1 that the support of theta
+     * reaches (Gauss quadrature; mu_t interpolated from the friction
+     * components, 0 at the tips and corners; the jumps from the nodes).
+     */
+    void
+    add_friction_terms(const Interface                &interface,
+                       const Solutions                &w,
+                       const BlockVector<double>      &mu,
+                       const std::vector<CrackTip>    &tips,
+                       const std::vector<ThetaField>  &fields,
+                       std::vector<EnergyReleaseRate> &result)
+    {
+      if (!interface.contact_parameters().frictional())
+        return;
+      const MultiplierSpace &space = interface.space();
+      const InterfaceCurve  &curve = interface.curve();
+      constexpr unsigned int mu_1  = Layout::across_sigma;
+      Vector<double>         tm, tp;
+      interface.coupling().trace_at_nodes(Layout::u_minus,
+                                          w[Layout::u_minus],
+                                          tm);
+      interface.coupling().trace_at_nodes(Layout::u_plus,
+                                          w[Layout::u_plus],
+                                          tp);
+      const auto mu_t = [&](const unsigned int a) {
+        const unsigned int i = mu.get_block_indices().local_to_global(
+          mu_1, Layout::entry(a, Layout::tangential));
+        return space.set().friction(i) ? mu(i) : 0.;
+      };
+      const auto         &bp = space.breakpoints(mu_1);
+      const QGauss<1>     gauss(space.degree() + 2);
+      std::vector<double> shape, derivative;
+      for (unsigned int t = 0; t < tips.size(); ++t)
+        if (tips[t].defined())
+          for (unsigned int e = 0; e + 1 < bp.size(); ++e)
+            {
+              const double h   = bp[e + 1] - bp[e];
+              const double mid = 0.5 * (bp[e] + bp[e + 1]);
+              if (!curve.crack().contains(mid) ||
+                  !fields[t].reaches(curve.point(mid), h))
+                continue;
+              for (unsigned int q = 0; q < gauss.size(); ++q)
+                {
+                  const double s_q = bp[e] + gauss.point(q)[0] * h;
+                  space.shape_values(mu_1, s_q, shape, derivative);
+                  double m = 0, d_jump_t = 0, jump_n = 0;
+                  for (unsigned int i = 0; i < shape.size(); ++i)
+                    {
+                      const unsigned int a = space.node(e, i);
+                      const unsigned int x = Layout::entry(a, 0),
+                                         y = Layout::entry(a, 1);
+                      m += shape[i] * mu_t(a);
+                      d_jump_t += derivative[i] * (tm(x) - tp(x));
+                      jump_n += shape[i] * (tp(y) - tm(y));
+                    }
+                  const Point<2> x = curve.point(s_q);
+                  const double   psi =
+                    fields[t].cutoff((x - tips[t].point).norm());
+                  double density = m * tips[t].sign * psi * d_jump_t;
+                  if (tips[t].curved())
+                    density += tips[t].sign * psi *
+                               fields[t].curvature(x, curve.normal(s_q)) * m *
+                               jump_n;
+                  result[t].friction += density * gauss.weight(q) * h;
+                }
+            }
+    }
   } // namespace
 
 
@@ -335,10 +408,12 @@ namespace bilayer
     add_domain_integrals(subproblems, w, tips, fields, result);
     // The contact term on a curved crack.
     add_contact_terms(interface, w, mu, tips, fields, result);
+    // The work of the friction force on the crack faces.
+    add_friction_terms(interface, w, mu, tips, fields, result);
 
     for (EnergyReleaseRate &r : result)
       if (r.tip.defined())
-        r.G += r.contact;
+        r.G += r.contact + r.friction;
       else
         r.G = std::numeric_limits<double>::quiet_NaN();
     return result;

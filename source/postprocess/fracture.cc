@@ -126,8 +126,10 @@ namespace bilayer
              << tip_position(g.tip, along_x) << ", growing along ("
              << g.tip.direction[0] + 0. << ", " << g.tip.direction[1] + 0.
              << "): energy release rate G = " << g.G
-             << " [stress x length] (contact term " << g.contact
-             << "), error bar dG = ";
+             << " [stress x length] (contact term " << g.contact;
+        if (g.friction != 0)
+          line << ", friction term " << g.friction;
+        line << "), error bar dG = ";
         if (std::isfinite(g.error))
           line << std::setprecision(2) << g.error << std::setprecision(10)
                << " (estimate from the " << g.error_estimate << ")";

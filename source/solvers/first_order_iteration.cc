@@ -62,10 +62,11 @@ namespace bilayer
   double
   relative_violation(const Interface           &interface,
                      const Solutions           &w,
-                     const BlockVector<double> &g)
+                     const BlockVector<double> &g,
+                     const BlockVector<double> &mu)
   {
     const double scale     = displacement_scale(interface, w);
-    const double violation = interface.space().discrete_violation(g);
+    const double violation = interface.space().discrete_violation(g, mu);
     return scale > 0 ? violation / scale : violation;
   }
 
@@ -86,7 +87,7 @@ namespace bilayer
       {
         const double norm   = interface.space().weighted_norm(mu);
         const double change = norm > 0 ? last_increment / norm : last_increment;
-        return std::max(change, relative_violation(interface, w, g));
+        return std::max(change, relative_violation(interface, w, g, mu));
       }
     // Energy norms of whole solutions: each owner evaluates its own.
     Vector<double>              difference;
@@ -117,6 +118,7 @@ namespace bilayer
                  const Interface           &interface,
                  const Solutions           &w,
                  const BlockVector<double> &g,
+                 const BlockVector<double> &mu,
                  IterationClock            &clock,
                  const double               tolerance)
   {
@@ -125,9 +127,9 @@ namespace bilayer
       pcout << "    iteration " << std::setw(6) << k << "  stopping value "
             << std::scientific << std::setprecision(3) << value
             << "  multiplier change " << last_increment
-            << "  relative violation " << relative_violation(interface, w, g)
-            << std::defaultfloat << "  (" << clock.report(k, value, tolerance)
-            << ")" << std::endl;
+            << "  relative violation "
+            << relative_violation(interface, w, g, mu) << std::defaultfloat
+            << "  (" << clock.report(k, value, tolerance) << ")" << std::endl;
   }
 
 
@@ -360,6 +362,7 @@ namespace bilayer
                    interface,
                    w,
                    g,
+                   mu,
                    clock,
                    parameters.tolerance);
     return value;

@@ -330,6 +330,7 @@ namespace bilayer
                        interface,
                        w,
                        g,
+                       mu,
                        clock,
                        parameters.tolerance);
       }

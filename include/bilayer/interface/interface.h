@@ -56,6 +56,15 @@ namespace bilayer
       return space_;
     }
 
+    /// The friction bounds of the crack nodes of mu_1 (one per node):
+    /// MultiplierSpace::set_friction_bounds(). Coulomb friction's fixed
+    /// point changes them between solves.
+    void
+    set_friction_bounds(const std::vector<double> &bounds)
+    {
+      space_.set_friction_bounds(bounds);
+    }
+
     const TraceCoupling &
     coupling() const
     {

@@ -72,6 +72,21 @@ namespace bilayer
     double complementarity = 0;
     /// Largest |multiplier| / p [-].
     double max_multiplier_over_bound = 0;
+    /**
+     * Friction on the crack faces (0 without): the complementarity of the
+     * friction law, sum D (g |jump_t| - mu_t jump_t) / (sum D g *
+     * displacement_scale) over the friction components (>= 0, 0 exactly
+     * where the faces slip against the force and stick elsewhere) [-].
+     */
+    double friction_complementarity = 0;
+    /// The frictional dissipation int s_tau [u].tau ds = sum D mu_t jump_t
+    /// (>= 0) [energy per unit thickness].
+    double friction_dissipation = 0;
+    /// Largest |[u].tau| at the crack nodes with friction [length].
+    double max_slip = 0;
+    /// Crack nodes with friction that stick (|mu_t| < g) and slip
+    /// (|mu_t| = g).
+    unsigned int stick_nodes = 0, slip_nodes = 0;
     /// The relative KKT residual [-].
     KKTResidual kkt;
   };
@@ -133,6 +148,19 @@ namespace bilayer
     glued = 2
   };
 
+  /// The tangential state of a node of the mesh of mu_1 under friction.
+  enum class FrictionState
+  {
+    /// A crack node without a friction bound (frictionless there).
+    free = 0,
+    /// A crack node whose tangential force is below its bound: [u].tau = 0.
+    stick = 1,
+    /// A crack node whose tangential force is at its bound.
+    slip = 2,
+    /// A node of the glued part.
+    glued = 3
+  };
+
   /**
    * What is reported at one node of the mesh of mu_1 (the multiplier
    * across Sigma). Vectors are in the node's frame: component 0 along the
@@ -173,6 +201,14 @@ namespace bilayer
      * the rest of the glued part.
      */
     double contact_pressure;
+    /// Whether the scene has friction on the crack faces (the CSV then has
+    /// the three columns below).
+    bool frictional = false;
+    /// The tangential force s_tau = -mu_t that Omega+ exerts on Omega- at a
+    /// crack node with friction (0 elsewhere) [stress], its bound g and the
+    /// tangential state.
+    double        tangential_force = 0, friction_bound = 0;
+    FrictionState friction_state = FrictionState::glued;
   };
 
   /**
@@ -189,7 +225,9 @@ namespace bilayer
   /**
    * One row per node of mu_1: x, jumps, multipliers, gaps, traces (frame
    * components), s, y, the normal, the contact pressure, the normal traction
-   * and the state (0 open, 1 closed, 2 glued) of interface_nodes(). Each
+   * and the state (0 open, 1 closed, 2 glued) of interface_nodes(); with
+   * friction also the tangential force, its bound and the friction state
+   * (0 free, 1 stick, 2 slip, 3 glued). Each
    * of @p notes goes before the header as a line starting with "# ".
    */
   void

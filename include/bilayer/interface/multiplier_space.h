@@ -65,9 +65,10 @@ namespace bilayer
    * subproblems are not both present (no layer 2) has no nodes.
    *
    * <h3>Sets</h3>
-   * mu_c nu at the nodes of mu_1 inside the crack (only the normal
-   * component, 0 <= mu_c <= p; the tangential one is fixed to 0: no
-   * friction), -p <= . <= p elsewhere. At a corner of Sigma inside the
+   * mu_c nu at the nodes of mu_1 inside the crack (the normal component,
+   * 0 <= mu_c <= p; the tangential one is fixed to 0 without friction and
+   * lies in [-g, g] with the friction bound g, set_friction_bounds()),
+   * -p <= . <= p elsewhere. At a corner of Sigma inside the
    * crack both components are contact components in [0, p], along the
    * normals of the two pieces that meet there (node_frame()). The crack tips
    * belong to Sigma \ gamma_c (glued); the mouth of an edge crack (an end of
@@ -174,11 +175,30 @@ namespace bilayer
     scale_by_weights(dealii::BlockVector<double> &x,
                      const bool                   inverse = false) const;
 
-    /// Largest violation of the discrete constraints by the jumps g
-    /// (MultiplierSet::violation(): |g| of a gluing component, max(g, 0) of
-    /// a contact component).
+    /// Largest violation of the discrete constraints by the jumps g at the
+    /// multipliers mu (MultiplierSet::violation(): |g| of a gluing
+    /// component, max(g, 0) of a contact component, |g| of a friction
+    /// component that sticks).
     double
-    discrete_violation(const dealii::BlockVector<double> &g) const;
+    discrete_violation(const dealii::BlockVector<double> &g,
+                       const dealii::BlockVector<double> &mu) const;
+    /**
+     * Set the friction bound of the tangential component of each crack node
+     * a of mu_1 (not a corner) to min(@p bounds[a], p): a component with a
+     * bound > 0 is a friction component, one with bound 0 carries no
+     * multiplier. @p bounds has one entry per node of mu_1 (those off the
+     * crack are not read). The multipliers of changed components are not
+     * touched: project them.
+     */
+    void
+    set_friction_bounds(const std::vector<double> &bounds);
+    /// Whether node @p a of mu_1 has a tangential component that friction
+    /// may act on (a crack node that is not a corner).
+    bool
+    friction_node(const unsigned int a) const
+    {
+      return crack_nodes[a] && !corner_nodes[a];
+    }
 
     /// Nodes of block @p b.
     unsigned int
@@ -359,6 +379,14 @@ namespace bilayer
                  const double         x,
                  std::vector<double> &values) const;
 
+    /// As shape_values(), with the derivatives d/ds of the shape functions
+    /// (s the coordinate along Sigma) in @p derivatives.
+    unsigned int
+    shape_values(const unsigned int   b,
+                 const double         x,
+                 std::vector<double> &values,
+                 std::vector<double> &derivatives) const;
+
     /// The node of local shape function i of segment e of a mesh with
     /// elements of degree @p degree (vertices first, as FE_Q<1> numbers
     /// them).
@@ -453,7 +481,9 @@ namespace bilayer
     PerBlock<Mesh> meshes;
     /// Per node of mu_1.
     std::vector<bool> crack_nodes, corner_nodes;
-    MultiplierSet     set_;
+    /// The bound p of the multiplier sets (Contact/Multiplier bound p).
+    double        multiplier_bound = 0;
+    MultiplierSet set_;
   };
 } // namespace bilayer
 

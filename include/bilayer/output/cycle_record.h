@@ -53,6 +53,11 @@ namespace bilayer
     /// (2 |Pi_h - Pi|)^1/2.
     double          eta = 0;
     InterfaceReport report;
+    /// Coulomb friction: the fixed-point iterations (Tresca solves) and the
+    /// last change of the friction bounds relative to the largest bound
+    /// (0 without Coulomb friction).
+    unsigned int friction_iterations   = 0;
+    double       friction_bound_change = 0;
     /// The energy release rate at each crack tip, ordered by s (empty
     /// without a crack or with Fracture/Energy release rate = false).
     std::vector<EnergyReleaseRate> release;

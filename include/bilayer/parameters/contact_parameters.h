@@ -1,7 +1,11 @@
 #ifndef bilayer_contact_parameters_h
 #define bilayer_contact_parameters_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
+
+#include <memory>
+#include <string>
 
 /**
  * The subsection Contact: non-penetration on the crack, the multiplier
@@ -46,6 +50,21 @@ namespace bilayer
     nodal
   };
 
+  /**
+   * The law of the tangential force on the crack faces (docs/problem.md §1,
+   * "Friction on the crack faces"). `none`: frictionless (the paper's
+   * condition (8)); `tresca`: given friction, |s_tau| <= g with the bound
+   * g(x, y, s) of Contact/Friction bound; `coulomb`: |s_tau| <= F s_nu with
+   * the coefficient F of Contact/Friction coefficient, solved as a fixed
+   * point over Tresca problems.
+   */
+  enum class Friction
+  {
+    none,
+    tresca,
+    coulomb
+  };
+
   struct ContactParameters
   {
     bool               non_penetration  = true;
@@ -53,12 +72,46 @@ namespace bilayer
     MultiplierCoupling coupling         = MultiplierCoupling::lumped;
     JumpSampling       sampling         = JumpSampling::weighted;
     MultiplierMesh     mesh             = MultiplierMesh::finer_trace;
+    Friction           friction         = Friction::none;
+    /// Tresca's bound g as written (an expression of x, y and s).
+    std::string friction_bound = "0";
+    /// Coulomb's coefficient F.
+    double friction_coefficient = 0;
+    /// The most fixed-point iterations (Tresca solves) of Coulomb friction.
+    unsigned int friction_iterations = 50;
+
+    /**
+     * Tresca's bound g at the point @p p of Sigma whose coordinate along
+     * Sigma is @p s [stress]; 0 without Tresca friction. Not finite or
+     * negative values are the caller's to refuse (friction_bound_refusal()).
+     */
+    double
+    tresca_bound(const dealii::Point<2> &p, const double s) const;
+
+    /// Whether the crack faces carry a tangential force.
+    bool
+    frictional() const
+    {
+      return friction != Friction::none;
+    }
+
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+  private:
+    /// The parser of friction_bound (Tresca only).
+    std::shared_ptr<const dealii::FunctionParser<3>> bound_function;
   };
+
+  /**
+   * The one-line refusal of a Tresca bound value @p g at the point @p p of
+   * Sigma (empty if g is finite and >= 0).
+   */
+  std::string
+  friction_bound_refusal(const double g, const dealii::Point<2> &p);
 } // namespace bilayer
 
 #endif

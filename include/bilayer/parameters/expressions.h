@@ -68,6 +68,16 @@ namespace bilayer
              const std::map<std::string, double> &constants,
              const std::string                   &entry);
 
+    /**
+     * A one-component function of x, y and s (the coordinate along Sigma)
+     * from @p expression: a FunctionParser<3> whose third coordinate is s,
+     * evaluated once so that errors name the entry @p entry.
+     */
+    std::unique_ptr<dealii::FunctionParser<3>>
+    curve_function(const std::string                   &expression,
+                   const std::map<std::string, double> &constants,
+                   const std::string                   &entry);
+
     /// Whether every ';'-separated component of @p expression is the
     /// number 0 ("0", "0.0", "-0", "0e0", blanks around).
     bool

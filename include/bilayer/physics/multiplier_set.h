@@ -25,10 +25,15 @@ namespace bilayer
    *  - Kind::glued: a gluing constraint [w] = 0 with the multiplier in
    *    [-p, p] (p the bound of the paper's Uzawa method);
    *  - Kind::contact: a non-penetration constraint [u].nu >= 0 with the
-   *    multiplier in [0, p].
-   * A set that couples the components of a node (a Tresca disk, a Coulomb
-   * cone) is a kind of its own here, with its projection and its
-   * classification.
+   *    multiplier in [0, p];
+   *  - Kind::friction: the tangential component on the crack with friction,
+   *    in [-g, g] (g the friction bound of the node, at most p): the faces
+   *    stick ([u].tau = 0) where the multiplier lies inside, and slip
+   *    against it where a jump holds it at a bound. In two dimensions the
+   *    Tresca disk is this interval, so K stays a box.
+   * A set that couples the components of a node (a Coulomb cone with its
+   * normal force as a variable) would be a kind of its own here, with its
+   * projection and its classification.
    */
   class MultiplierSet
   {
@@ -37,7 +42,8 @@ namespace bilayer
     {
       none,
       glued,
-      contact
+      contact,
+      friction
     };
 
     /// Blocks of @p sizes components, every one of kind none.
@@ -65,6 +71,18 @@ namespace bilayer
       lower.block(b)(i)   = 0;
       upper.block(b)(i)   = p;
       kinds[global(b, i)] = Kind::contact;
+    }
+
+    /**
+     * Component @p i of block @p b: a tangential crack component with the
+     * friction bound @p g (> 0; a zero bound is no multiplier, set_none()).
+     */
+    void
+    set_friction(const unsigned int b, const unsigned int i, const double g)
+    {
+      lower.block(b)(i)   = -g;
+      upper.block(b)(i)   = g;
+      kinds[global(b, i)] = Kind::friction;
     }
 
     /// Component @p i of block @p b: no multiplier.
@@ -118,6 +136,14 @@ namespace bilayer
       return kind(i) == Kind::contact;
     }
 
+    /// Whether component @p i is a tangential crack component with
+    /// friction.
+    bool
+    friction(const unsigned int i) const
+    {
+      return kind(i) == Kind::friction;
+    }
+
     /// Whether component @p i of block @p b is a contact constraint.
     bool
     contact(const unsigned int b, const unsigned int i) const
@@ -163,11 +189,14 @@ namespace bilayer
 
     /**
      * The violation of the constraint of component @p i by the jump
-     * @p g_i: |g| of a gluing constraint, max(g, 0) of a contact
-     * constraint ([u].nu >= 0 with g = -[u].nu), 0 without multiplier.
+     * @p g_i at the multiplier @p mu_i: |g| of a gluing constraint,
+     * max(g, 0) of a contact constraint ([u].nu >= 0 with g = -[u].nu),
+     * for a friction component |g| where it sticks (inside its box, or at a
+     * bound with a jump that pushes inward) and 0 where it slips (held at a
+     * bound), 0 without multiplier.
      */
     double
-    violation(const unsigned int i, const double g_i) const
+    violation(const unsigned int i, const double g_i, const double mu_i) const
     {
       switch (kinds[i])
         {
@@ -175,9 +204,21 @@ namespace bilayer
             return std::abs(g_i);
           case Kind::contact:
             return std::max(g_i, 0.);
+          case Kind::friction:
+            return held_at_bound(i, mu_i, g_i) ? 0. : std::abs(g_i);
           default:
             return 0.;
         }
+    }
+
+    /**
+     * The friction bound g of component @p i (the upper end of its box; 0
+     * for a component that is not a friction component).
+     */
+    double
+    friction_bound(const unsigned int i) const
+    {
+      return friction(i) ? upper(i) : 0.;
     }
 
     /**
@@ -228,7 +269,7 @@ namespace bilayer
     }
 
     /// The box of each component: [0, 0] none, [-p, p] glued, [0, p]
-    /// contact (p > 0).
+    /// contact (p > 0), [-g, g] friction (0 < g <= p).
     dealii::BlockVector<double> lower, upper;
     /// What each component constrains: set with its box, never inferred
     /// from it.

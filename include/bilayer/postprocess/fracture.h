@@ -160,10 +160,18 @@ namespace bilayer
   struct EnergyReleaseRate
   {
     CrackTip tip;
-    /// The domain integral over both layers and subdomains plus contact.
+    /// The domain integral over both layers and subdomains plus the contact
+    /// and friction terms.
     double G = 0;
     /// The contact term on a curved crack (0 on a straight one).
     double contact = 0;
+    /**
+     * The friction term (docs/fracture.md §6), part of G: the work of the
+     * tangential force on the crack faces as the tip advances, int mu_t
+     * theta_s d/ds (u- - u+).tau ds over the crack in the support of theta
+     * (0 without friction; <= 0 for a constant Tresca bound).
+     */
+    double friction = 0;
     /// Why G is not reported at this tip on this mesh (then NaN): the
     /// support of theta holds too few cells (support_cells()); empty if G
     /// is valid.

@@ -71,13 +71,15 @@ namespace bilayer
                  const dealii::BlockVector<double> &g,
                  dealii::BlockVector<double>       &next);
 
-  /// The largest violation of the jumps @p g relative to the displacement
+  /// The largest violation of the jumps @p g at the multipliers @p mu
+  /// relative to the displacement
   /// scale of @p w (absolute where the scale is zero). Needs the traces of
   /// all solutions.
   double
   relative_violation(const Interface                   &interface,
                      const Solutions                   &w,
-                     const dealii::BlockVector<double> &g);
+                     const dealii::BlockVector<double> &g,
+                     const dealii::BlockVector<double> &mu);
 
   /**
    * The value of Solver/Stopping rule at step k >= 1 of a first-order
@@ -113,6 +115,7 @@ namespace bilayer
                  const Interface                   &interface,
                  const Solutions                   &w,
                  const dealii::BlockVector<double> &g,
+                 const dealii::BlockVector<double> &mu,
                  IterationClock                    &clock,
                  const double                       tolerance);
 
