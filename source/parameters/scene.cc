@@ -144,6 +144,27 @@ namespace bilayer
   } // namespace
 
 
+  namespace
+  {
+    /// Why the friction entry @p path is not read (empty if it is): the
+    /// bound only with Tresca, the coefficient and the iterations only with
+    /// Coulomb friction.
+    std::string
+    unused_friction_entry(const std::string                        &path,
+                          const std::map<std::string, std::string> &values)
+    {
+      const auto        it  = values.find("Contact/Friction");
+      const std::string law = it == values.end() ? "none" : it->second;
+      if ((path == "Contact/Friction bound" && law != "tresca") ||
+          ((path == "Contact/Friction coefficient" ||
+            path == "Contact/Friction iterations") &&
+           law != "coulomb"))
+        return "not used (Contact/Friction = " + law + ")";
+      return "";
+    }
+  } // namespace
+
+
   std::string
   applicable_entries(const std::string &short_prm, const Scene &scene)
   {
@@ -177,6 +198,8 @@ namespace bilayer
                       why = "not used (Materials/Number of layers = 1)";
                     else if (!path.empty())
                       why = unused_law_entry(path, values);
+                    if (why.empty() && !path.empty())
+                      why = unused_friction_entry(path, values);
                     if (why.empty())
                       result += line + "\n";
                     else

@@ -137,7 +137,7 @@ namespace bilayer
     std::string lower;
     for (const char c : name)
       lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (const char *word : {"friction",
+    for (const char *word : {"adhesion",
                              "thermal",
                              "temperature",
                              "expansion",

@@ -73,7 +73,7 @@ printf 'subsection Mesh\n  set Cels along Sigma = 8\nend\n' > unknown_entry.prm
 printf 'subsection Meshes\n  set Cells along Sigma = 8\nend\n' > unknown_subsection.prm
 printf 'subsection Mesh\n  set Cells along Sigma = 8\n' > unterminated.prm
 printf 'subsection Solver\n  set Method = Active-Set\nend\n' > misspelled_value.prm
-printf 'subsection Contact\n  set Friction coefficient = 0.3\nend\n' > friction.prm
+printf 'subsection Contact\n  set Adhesion energy = 0.3\nend\n' > unmodelled.prm
 printf 'include self.prm\n' > self.prm
 printf 'include b.prm\n' > a.prm
 printf 'include a.prm\n' > b.prm
@@ -90,7 +90,7 @@ check "misspelled choice in --set" "--set Solver/Method=uzawaa: The string <uzaw
 # Entries about physics bilayer does not model are no misspellings: the
 # README's table of what it models, not the nearest entry.
 check "entry of physics not modelled" "--set Fracture/Critical energy release rate=1: no entry 'Fracture/Critical energy release rate' is declared; what bilayer models and what not: the README's table" "$prm" --set "Fracture/Critical energy release rate=1"
-check "entry of physics not modelled in a file" "No entry with name <Friction coefficient> was declared in the current subsection; what bilayer models and what not" friction.prm
+check "entry of physics not modelled in a file" "No entry with name <Adhesion energy> was declared in the current subsection; what bilayer models and what not" unmodelled.prm
 check "plausible misspelling in --set" "no entry 'Mesh/Polynomial degree layer 1' is declared; did you mean 'Mesh/Polynomial degree of layer 1'?" "$prm" --set "Mesh/Polynomial degree layer 1=2"
 check "choice far from every allowed one" "pattern <[Selection uzawa|accelerated|active set ]>" "$prm" --set "Solver/Method=newton"
 check "missing parameter file" "cannot open parameter file 'no-such-file.prm': no such file" no-such-file.prm
