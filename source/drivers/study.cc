@@ -457,7 +457,8 @@ namespace bilayer
     Timer               solve_timer;
     const unsigned long shared_before  = distribution.shared_values();
     const double        seconds_before = distribution.shared_seconds();
-    if (scene.contact.friction == Friction::coulomb)
+    if (scene.contact.friction == Friction::coulomb &&
+        scene.contact.coulomb_method == CoulombMethod::fixed_point)
       solve_coulomb(record);
     else
       record.result = create_outer_solver(scene.solver, scene.output, pcout)

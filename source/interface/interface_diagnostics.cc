@@ -90,10 +90,11 @@ namespace bilayer
           const unsigned int t = Layout::entry(a, Layout::tangential);
           const unsigned int i =
             mu.get_block_indices().local_to_global(mu_1, t);
-          if (!space.set().friction(i))
-            continue;
-          const double d     = space.node_weight(a, mu_1);
+          // (A Coulomb cone at an open node has the bound 0: free.)
           const double bound = space.set().friction_bound(i);
+          if (bound == 0)
+            continue;
+          const double d = space.node_weight(a, mu_1);
           const double m = mu(i), jump = g(i);
           sum_g += d * bound;
           gap += d * (bound * std::abs(jump) - m * jump);
@@ -397,10 +398,10 @@ namespace bilayer
             const double m     = mu(i);
             n.friction_bound   = space.set().friction_bound(i);
             n.tangential_force = space.set().friction(i) ? -m : 0.;
-            n.friction_state = !space.set().friction(i) ? FrictionState::free :
-                               std::abs(m) >= n.friction_bound ?
-                                                          FrictionState::slip :
-                                                          FrictionState::stick;
+            n.friction_state   = n.friction_bound == 0 ? FrictionState::free :
+                                 std::abs(m) >= n.friction_bound ?
+                                                         FrictionState::slip :
+                                                         FrictionState::stick;
           }
         // The smallest opening against the faces that meet at the node.
         const auto   open    = face_openings(space, t[u_minus], t[u_plus], a);

@@ -298,6 +298,10 @@ namespace bilayer
                   if (contact.non_penetration)
                     set_.set_contact(b, t, p);
                 }
+              else if (contact.friction == Friction::coulomb &&
+                       contact.coulomb_method == CoulombMethod::direct &&
+                       contact.friction_coefficient > 0)
+                set_.set_cone(b, t, n, contact.friction_coefficient, p);
             }
         }
   }

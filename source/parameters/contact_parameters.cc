@@ -83,6 +83,15 @@ namespace bilayer
       "The most fixed-point iterations of Coulomb friction (each a Tresca "
       "solve with the bound F s_nu of the previous one), 1 to 100000; the "
       "run fails if the bounds have not settled to Solver/Tolerance by then.");
+    prm.declare_entry(
+      "Coulomb method",
+      "fixed point",
+      Patterns::Selection("fixed point|direct"),
+      "How Coulomb friction is solved: fixed point (a sequence of Tresca "
+      "problems with the bound F s_nu of the previous one, each by "
+      "Solver/Method; every solver) or direct (the Coulomb cone in the "
+      "projection of Solver/Method = uzawa or accelerated, the bound "
+      "following s_nu in every iteration); read with Friction = coulomb.");
     prm.leave_subsection();
   }
 
@@ -111,6 +120,9 @@ namespace bilayer
     friction_bound        = prm.get("Friction bound");
     friction_coefficient  = get_double(prm, "Contact", "Friction coefficient");
     friction_iterations   = prm.get_integer("Friction iterations");
+    coulomb_method        = prm.get("Coulomb method") == "direct" ?
+                              CoulombMethod::direct :
+                              CoulombMethod::fixed_point;
     AssertThrow(!frictional() || non_penetration,
                 ExcMessage("Contact/Friction = " + law +
                            " needs Contact/Non-penetration on the crack = "

@@ -157,7 +157,8 @@ namespace bilayer
       const std::string law = it == values.end() ? "none" : it->second;
       if ((path == "Contact/Friction bound" && law != "tresca") ||
           ((path == "Contact/Friction coefficient" ||
-            path == "Contact/Friction iterations") &&
+            path == "Contact/Friction iterations" ||
+            path == "Contact/Coulomb method") &&
            law != "coulomb"))
         return "not used (Contact/Friction = " + law + ")";
       return "";

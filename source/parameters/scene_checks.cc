@@ -25,6 +25,13 @@ namespace bilayer
                            "dual operator: Contact/Jump sampling = weighted, "
                            "or Contact/Multiplier coupling = lumped (where "
                            "both samplings agree)"));
+    AssertThrow(solver.method != SolverMethod::active_set ||
+                  contact.friction != Friction::coulomb ||
+                  contact.coulomb_method == CoulombMethod::fixed_point,
+                ExcMessage("Contact/Coulomb method = direct needs "
+                           "Solver/Method = uzawa or accelerated (the "
+                           "active set solves Coulomb friction by the fixed "
+                           "point over Tresca problems)"));
     for (const Layer layer : {Layer::first, Layer::second})
       AssertThrow(mesh.shape == ElementShape::quadrilateral ||
                     mesh.degree(layer) <= 2,

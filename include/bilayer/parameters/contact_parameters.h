@@ -65,6 +65,19 @@ namespace bilayer
     coulomb
   };
 
+  /**
+   * How Coulomb friction is solved. `fixed point`: a sequence of Tresca
+   * problems with the bound F mu_c of the previous one, each by the outer
+   * solver (every solver); `direct`: the Coulomb cone in the projection of
+   * a first-order solver (uzawa, accelerated), the bound following mu_c in
+   * every iteration.
+   */
+  enum class CoulombMethod
+  {
+    fixed_point,
+    direct
+  };
+
   struct ContactParameters
   {
     bool               non_penetration  = true;
@@ -78,7 +91,8 @@ namespace bilayer
     /// Coulomb's coefficient F.
     double friction_coefficient = 0;
     /// The most fixed-point iterations (Tresca solves) of Coulomb friction.
-    unsigned int friction_iterations = 50;
+    unsigned int  friction_iterations = 50;
+    CoulombMethod coulomb_method      = CoulombMethod::fixed_point;
 
     /**
      * Tresca's bound g at the point @p p of Sigma whose coordinate along

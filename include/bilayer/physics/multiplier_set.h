@@ -53,6 +53,7 @@ namespace bilayer
       lower.reinit(sizes);
       upper.reinit(sizes);
       kinds.assign(lower.size(), Kind::none);
+      cones.clear();
     }
 
     /// Component @p i of block @p b: a gluing constraint, bound @p p.
@@ -83,6 +84,25 @@ namespace bilayer
       lower.block(b)(i)   = -g;
       upper.block(b)(i)   = g;
       kinds[global(b, i)] = Kind::friction;
+    }
+
+    /**
+     * Component @p i of block @p b: a tangential crack component in the
+     * Coulomb cone of its node, |mu_t| <= min(F max(mu_n, 0), p) with
+     * @p F the friction coefficient and mu_n the component @p n of the
+     * same block (the node's contact component). Its box follows mu_n:
+     * project() sets it from the projected mu_n, and held(), violation()
+     * and friction_bound() read the box of the last projection.
+     */
+    void
+    set_cone(const unsigned int b,
+             const unsigned int i,
+             const unsigned int n,
+             const double       F,
+             const double       p)
+    {
+      set_friction(b, i, 0.);
+      cones.push_back({global(b, i), global(b, n), F, p});
     }
 
     /// Component @p i of block @p b: no multiplier.
@@ -157,6 +177,23 @@ namespace bilayer
     {
       for (unsigned int i = 0; i < mu.size(); ++i)
         mu(i) = std::min(std::max(mu(i), lower(i)), upper(i));
+      // Coulomb cones: the tangential component onto the bound of the
+      // projected normal one (in two dimensions the cone's sequential
+      // projection, normal first).
+      for (const Cone &c : cones)
+        {
+          const double g      = std::min(c.F * std::max(mu(c.normal), 0.), c.p);
+          lower(c.tangential) = -g;
+          upper(c.tangential) = g;
+          mu(c.tangential)    = std::min(std::max(mu(c.tangential), -g), g);
+        }
+    }
+
+    /// Whether some components lie in Coulomb cones (set_cone()).
+    bool
+    has_cones() const
+    {
+      return !cones.empty();
     }
 
     /**
@@ -270,7 +307,17 @@ namespace bilayer
 
     /// The box of each component: [0, 0] none, [-p, p] glued, [0, p]
     /// contact (p > 0), [-g, g] friction (0 < g <= p).
-    dealii::BlockVector<double> lower, upper;
+    /// (Mutable: the boxes of the Coulomb cones follow their normal
+    /// components in project().)
+    mutable dealii::BlockVector<double> lower, upper;
+    /// A Coulomb cone: the global indices of the tangential and normal
+    /// components of a node, the friction coefficient and the bound p.
+    struct Cone
+    {
+      unsigned int tangential, normal;
+      double       F, p;
+    };
+    std::vector<Cone> cones;
     /// What each component constrains: set with its box, never inferred
     /// from it.
     std::vector<Kind> kinds;
