@@ -539,11 +539,15 @@ namespace bilayer
           return;
         bounds = next;
       }
+    // In scientific notation: a change near Solver/Tolerance reads 0 in
+    // std::to_string's fixed six decimals.
+    std::ostringstream change;
+    change << std::setprecision(3) << std::scientific
+           << record.friction_bound_change;
     total.converged = false;
     total.message   = "the friction bounds F mu_c of Coulomb friction still "
                       "changed by " +
-                    std::to_string(record.friction_bound_change) +
-                    " of the largest after " +
+                    change.str() + " of the largest after " +
                     std::to_string(scene.contact.friction_iterations) +
                     " fixed-point iterations (Contact/Friction iterations); "
                     "a smaller Contact/Friction coefficient converges faster";

@@ -319,7 +319,8 @@ namespace bilayer
      * term), the jumps in the node frames, over
      * the crack segments of the mesh of mu_1 that the support of theta
      * reaches (Gauss quadrature; mu_t interpolated from the friction
-     * components, 0 at the tips and corners; the jumps from the nodes).
+     * components, at a tip the mean of the crack nodes of its segment, 0 at
+     * corners; the jumps from the nodes).
      */
     void
     add_friction_terms(const Interface                &interface,
@@ -348,7 +349,7 @@ namespace bilayer
       };
       const auto         &bp = space.breakpoints(mu_1);
       const QGauss<1>     gauss(space.degree() + 2);
-      std::vector<double> shape, derivative;
+      std::vector<double> shape, derivative, nodal_mu_t;
       for (unsigned int t = 0; t < tips.size(); ++t)
         if (tips[t].defined())
           for (unsigned int e = 0; e + 1 < bp.size(); ++e)
@@ -358,6 +359,30 @@ namespace bilayer
               if (!curve.crack().contains(mid) ||
                   !fields[t].reaches(curve.point(mid), h))
                 continue;
+              // mu_t at the nodes of the segment. At a node off the crack
+              // (a tip: glued, its multiplier the gluing one) the faces
+              // still carry the force of the crack nodes next to it: there
+              // mu_t is the mean of the segment's friction nodes, not 0,
+              // which would miss the work of that force against the slip
+              // d/ds (u- - u+).tau ~ r^(-1/2) of the last segment (an
+              // error of order sqrt(h) at the tip).
+              const unsigned int n_nodes     = space.degree(mu_1) + 1;
+              double             crack_sum   = 0;
+              unsigned int       crack_count = 0;
+              nodal_mu_t.resize(n_nodes);
+              for (unsigned int i = 0; i < n_nodes; ++i)
+                {
+                  const unsigned int a = space.node(e, i);
+                  nodal_mu_t[i]        = mu_t(a);
+                  if (space.friction_node(a))
+                    {
+                      crack_sum += nodal_mu_t[i];
+                      ++crack_count;
+                    }
+                }
+              for (unsigned int i = 0; i < n_nodes; ++i)
+                if (!space.on_crack(space.node(e, i)) && crack_count > 0)
+                  nodal_mu_t[i] = crack_sum / crack_count;
               for (unsigned int q = 0; q < gauss.size(); ++q)
                 {
                   const double s_q = bp[e] + gauss.point(q)[0] * h;
@@ -368,7 +393,7 @@ namespace bilayer
                       const unsigned int a = space.node(e, i);
                       const unsigned int x = Layout::entry(a, 0),
                                          y = Layout::entry(a, 1);
-                      m += shape[i] * mu_t(a);
+                      m += shape[i] * nodal_mu_t[i];
                       d_jump_t += derivative[i] * (tm(x) - tp(x));
                       jump_n += shape[i] * (tp(y) - tm(y));
                     }
