@@ -489,7 +489,7 @@ namespace bilayer
     // Coulomb friction as a fixed point over Tresca problems: the bound of
     // each crack node is F mu_c of the last solve (of the start multipliers
     // first: zero, or a warm start), until the bounds change by at most
-    // Solver/Tolerance relative to the largest one.
+    // max(Solver/Tolerance, 1e-12) relative to the largest one.
     const double           F              = scene.contact.friction_coefficient;
     const MultiplierSpace &space          = coupling.space();
     const auto             coulomb_bounds = [&]() {
@@ -503,6 +503,9 @@ namespace bilayer
       create_outer_solver(scene.solver, scene.output, pcout);
     std::vector<double> bounds = coulomb_bounds();
     SolverResult       &total  = record.result;
+    // The bounds come from Tresca solves accurate to their own round-off:
+    // changes below a few thousand machine epsilons are noise, not progress.
+    const double target = std::max(scene.solver.tolerance, 1e-12);
     for (unsigned int k = 1; k <= scene.contact.friction_iterations; ++k)
       {
         coupling.set_friction_bounds(bounds);
@@ -535,7 +538,7 @@ namespace bilayer
               "Coulomb fixed point " + std::to_string(k) + ": " + r.message;
             return;
           }
-        if (record.friction_bound_change <= scene.solver.tolerance)
+        if (record.friction_bound_change <= target)
           return;
         bounds = next;
       }
@@ -549,8 +552,12 @@ namespace bilayer
                       "changed by " +
                     change.str() + " of the largest after " +
                     std::to_string(scene.contact.friction_iterations) +
-                    " fixed-point iterations (Contact/Friction iterations); "
-                    "a smaller Contact/Friction coefficient converges faster";
+                    " fixed-point iterations (Contact/Friction iterations); " +
+                    (record.friction_bound_change < 1e-8 ?
+                       "the changes are near the accuracy of the Tresca "
+                       "solves: a larger Solver/Tolerance ends it" :
+                       "a smaller Contact/Friction coefficient converges "
+                       "faster");
   }
 
 
