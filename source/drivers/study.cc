@@ -429,7 +429,22 @@ namespace bilayer
   Study::set_up_interface(CycleRecord                      &record,
                           const MultiplierSpace::Functions *previous)
   {
-    coupling.setup(subproblem_views(), domain.interface_curve());
+    // The multiplier set reads the friction bound at the crack nodes and
+    // refuses a bound that is negative or not finite there; every process
+    // builds the same set, so every process knows, and the first reports
+    // in one line (collective, no MPI_Abort).
+    std::string problem;
+    try
+      {
+        coupling.setup(subproblem_views(), domain.interface_curve());
+      }
+    catch (const ExceptionBase &e)
+      {
+        problem = one_line_message(e);
+      }
+    problem = distribution.first_error(problem);
+    if (!problem.empty())
+      throw CollectiveError(problem);
     coupling.space().initialize(mu);
     if (previous != nullptr)
       coupling.space().interpolate(*previous, mu);

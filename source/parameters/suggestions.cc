@@ -119,7 +119,10 @@ namespace bilayer
                const bool              subsection)
   {
     // What bilayer does not model (README, "What bilayer models - and
-    // what not"): a name about it is no misspelling of a real entry.
+    // what not"): a name about it is no misspelling of a real entry. (The
+    // physics it models, friction, thermal loads, body forces and
+    // eigenstrains, has entries: a name near one of them is a
+    // misspelling.)
     const std::string not_modelled =
       "; what bilayer models and what not: the README's table 'What "
       "bilayer models - and what not'; every entry: bilayer "
@@ -138,18 +141,13 @@ namespace bilayer
     for (const char c : name)
       lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     for (const char *word : {"adhesion",
-                             "thermal",
-                             "temperature",
-                             "expansion",
                              "toughness",
                              "critical",
-                             "body force",
                              "gravity",
                              "density",
                              "cohesive",
                              "growth",
                              "debond",
-                             "eigenstrain",
                              "plasticity",
                              "time step",
                              "load step"})

@@ -10,7 +10,9 @@
 # symbolic links), concurrent runs into one directory, parameter files that
 # are no regular file or include themselves, names and sizes of text that
 # broke the expression parser, scenes too large for the memory, numbers
-# outside the range of double, and command-line mistakes. Then the runs
+# outside the range of double, friction entries (a Tresca bound negative or
+# not finite on the crack, also under mpirun), and command-line mistakes.
+# Then the runs
 # that do not refuse: a failed run keeps the directory and puts its results
 # in DIR.failed, a failed write keeps it too, a passing run replaces it and
 # removes DIR.failed.
@@ -73,7 +75,7 @@ printf 'subsection Mesh\n  set Cels along Sigma = 8\nend\n' > unknown_entry.prm
 printf 'subsection Meshes\n  set Cells along Sigma = 8\nend\n' > unknown_subsection.prm
 printf 'subsection Mesh\n  set Cells along Sigma = 8\n' > unterminated.prm
 printf 'subsection Solver\n  set Method = Active-Set\nend\n' > misspelled_value.prm
-printf 'subsection Contact\n  set Adhesion energy = 0.3\nend\n' > unmodelled.prm
+printf 'subsection Contact\n  set Cohesive strength = 0.3\nend\n' > cohesive.prm
 printf 'include self.prm\n' > self.prm
 printf 'include b.prm\n' > a.prm
 printf 'include a.prm\n' > b.prm
@@ -90,7 +92,10 @@ check "misspelled choice in --set" "--set Solver/Method=uzawaa: The string <uzaw
 # Entries about physics bilayer does not model are no misspellings: the
 # README's table of what it models, not the nearest entry.
 check "entry of physics not modelled" "--set Fracture/Critical energy release rate=1: no entry 'Fracture/Critical energy release rate' is declared; what bilayer models and what not: the README's table" "$prm" --set "Fracture/Critical energy release rate=1"
-check "entry of physics not modelled in a file" "No entry with name <Adhesion energy> was declared in the current subsection; what bilayer models and what not" unmodelled.prm
+check "entry of physics not modelled in a file" "No entry with name <Cohesive strength> was declared in the current subsection; what bilayer models and what not" cohesive.prm
+# Physics that bilayer models (friction) has entries: a name near one of
+# them is a misspelling.
+check "misspelled friction entry" "no entry 'Contact/Friction coeficient' is declared; did you mean 'Contact/Friction coefficient'?" "$prm" --set "Contact/Friction coeficient=0.3"
 check "plausible misspelling in --set" "no entry 'Mesh/Polynomial degree layer 1' is declared; did you mean 'Mesh/Polynomial degree of layer 1'?" "$prm" --set "Mesh/Polynomial degree layer 1=2"
 check "choice far from every allowed one" "pattern <[Selection uzawa|accelerated|active set ]>" "$prm" --set "Solver/Method=newton"
 check "missing parameter file" "cannot open parameter file 'no-such-file.prm': no such file" no-such-file.prm
@@ -192,6 +197,25 @@ run "temperature change 0/0, no expansion" "Loads/Temperature change is not fini
 run "temperature change log(x-100), no expansion" "Loads/Temperature change is not finite at (x, y) = (" "Loads/Temperature change=log(x-100)"
 run "temperature change infinite, no expansion" "Loads/Temperature change is not finite at (x, y) = (" "Loads/Temperature change=20*(1 + y/(x-x))" --set "Materials/Number of layers=1"
 run "temperature change NaN below Sigma, Omega+ expands" "Loads/Temperature change is not finite at (x, y) = (" "Loads/Temperature change=log(y)" --set "Materials/Layer 1/Omega+/Thermal expansion=1e-5"
+# Friction on the crack faces: a Tresca bound g(x, y, s) >= 0 and finite at
+# every crack node (here g = x: negative at the first crack node of the
+# 16-cell mesh, x = -0.375; refused when the multiplier set is built), one
+# component, an expression of x, y and s; a coefficient F >= 0; 1 to 100000
+# fixed-point iterations; friction only between faces that cannot
+# penetrate.
+run "Tresca bound negative on the crack" "Contact/Friction bound must be finite and >= 0 on the crack, got -0.375 at (x, y) = (-0.375, 0)" "Contact/Friction=tresca" --set "Contact/Friction bound=x"
+run "Tresca bound negative near the right tip" "Contact/Friction bound must be finite and >= 0 on the crack, got -0.0125 at (x, y) = (0.375, 0)" "Contact/Friction=tresca" --set "Contact/Friction bound=0.1*(0.25 - s)" --set "Mesh/Cells along Sigma=16"
+run "Tresca bound not finite" "Contact/Friction bound must be finite and >= 0 on the crack, got" "Contact/Friction=tresca" --set "Contact/Friction bound=log(x-10)"
+run "Tresca bound infinite at s = 0" "Contact/Friction bound must be finite and >= 0 on the crack, got inf at (x, y) = (0, 0)" "Contact/Friction=tresca" --set "Contact/Friction bound=1/abs(s)"
+run "Tresca bound of two components" "Contact/Friction bound must have one component, no ';', got '0.01; 0.02'" "Contact/Friction=tresca" --set "Contact/Friction bound=0.01; 0.02"
+run "Tresca bound does not parse" "Contact/Friction bound: cannot evaluate '0.01*(' as a function of x, y and s" "Contact/Friction=tresca" --set "Contact/Friction bound=0.01*("
+run "Tresca bound uses a load constant" "Contact/Friction bound: cannot evaluate 'c*x' as a function of x, y and s" "Contact/Friction=tresca" --set "Contact/Friction bound=c*x"
+run "Coulomb coefficient negative" "--set Contact/Friction coefficient=-0.3: The string <-0.3> does not match the given pattern" "Contact/Friction=coulomb" --set "Contact/Friction coefficient=-0.3"
+run "Coulomb coefficient NaN" "--set Contact/Friction coefficient=nan: The string <nan> does not match the given pattern" "Contact/Friction=coulomb" --set "Contact/Friction coefficient=nan"
+run "Friction iterations 0" "--set Contact/Friction iterations=0: The string <0> does not match the given pattern <[Integer range 1...100000 (inclusive)]>" "Contact/Friction=coulomb" --set "Contact/Friction iterations=0"
+run "unknown friction law" "--set Contact/Friction=Coulomb: The string <Coulomb> does not match the given pattern <[Selection none|tresca|coulomb ]>" "Contact/Friction=Coulomb"
+run "Tresca friction without non-penetration" "Contact/Friction = tresca needs Contact/Non-penetration on the crack = true" "Contact/Friction=tresca" --set "Contact/Friction bound=0.01" --set "Contact/Non-penetration on the crack=false"
+run "Coulomb friction without non-penetration" "Contact/Friction = coulomb needs Contact/Non-penetration on the crack = true" "Contact/Friction=coulomb" --set "Contact/Friction coefficient=0.3" --set "Contact/Non-penetration on the crack=false"
 run "temperature change using E2 of an orthotropic layer" "Loads/Temperature change: '1e-3*E2' uses E2, a constant of isotropic layers only (E2, nu2, mu2, lambda2), but Materials/Layer 2/Law = orthotropic" "Materials/Layer 2/Law=orthotropic" --set "Loads/Temperature change=1e-3*E2"
 run "missing mesh file" "Mesh/Mesh files: cannot open" "Mesh/Mesh files=nothere_{side}.msh"
 run "mesh file is a directory" "Mesh/Mesh files: cannot open 'mesh_dir_minus': not a regular file" "Mesh/Mesh files=mesh_dir_{side}"
@@ -506,6 +530,28 @@ else
 fi
 [[ $(cat keep/data.txt keep/sub/data.txt) == $'precious\nprecious' && $(find keep | wc -l) -eq 4 ]] \
   && echo "foreign directory untouched: yes" || fail "foreign directory untouched" "changed"
+
+# Under mpirun -np 2: a Tresca bound that is negative on the crack is found
+# by every process as it builds the (replicated) multiplier set; the first
+# reports it in one line, none aborts, nothing is written.
+if command -v mpirun > /dev/null; then
+  mpirun -np 2 "$bilayer" "$prm" --set "Output/Output directory=fresh/out" \
+    --set "Contact/Friction=tresca" --set "Contact/Friction bound=x" > stdout 2> stderr
+  rc=$?
+  why=""
+  [[ $rc -eq 1 ]] || why="exit status $rc"
+  [[ $(grep -c '^bilayer' stderr) -eq 1 ]] || why="$why; $(grep -c '^bilayer' stderr) lines of bilayer"
+  grep -qF "bilayer: error: Contact/Friction bound must be finite and >= 0 on the crack, got -0.375 at (x, y) = (-0.375, 0)" stderr \
+    || why="$why; $(head -1 stderr)"
+  ! grep -qiE "MPI_ABORT|terminate called|stacktrace" stderr || why="$why; aborted"
+  [[ ! -e fresh && -z $(find . \( -name '*.partial' -o -name '*.lock' \) ! -path ./empty.lock) ]] \
+    || why="$why; wrote"
+  if [[ -z $why ]]; then
+    echo "Tresca bound negative on the crack under mpirun -np 2: yes"
+  else
+    fail "Tresca bound negative on the crack under mpirun -np 2" "$why"
+  fi
+fi
 
 echo "failures: $failures"
 [[ $failures -eq 0 ]]

@@ -5,7 +5,8 @@
 # an orthotropic ply on an isotropic sheet) runs with its own settings:
 # exit 0, and on the interface CSV of its last cycle the crack is partly
 # open (nodes with [u].nu > 0) and partly closed (nodes in contact, mu_c > 0
-# and |[u].nu| below 1e-6 of the largest opening).
+# and |[u].nu| below 1e-6 of the largest opening); the friction scene
+# partial_closure_friction.prm runs too (below).
 # Usage: shipped_scenes.sh BILAYER PARAMETER_FILES
 set -u
 bilayer=$1 files=$2
@@ -50,6 +51,45 @@ closed = [r for r in crack if float(r["mu_c"]) > 0 and abs(float(r["jump_normal"
 print("composite_ply: %d crack nodes, %d open, %d closed (%s), largest opening %.6g"
       % (len(crack), len(opened), len(closed), path.split("/")[-1], scale))
 sys.exit(0 if opened and closed and len(opened) + len(closed) <= len(crack) else 1)
+PY
+fi
+# Example 1 with shear and Coulomb friction (partial_closure_friction.prm,
+# F = 0.5) runs with its own settings: on its last cycle every crack node
+# in contact slips (friction_state 2) with the tangential force at its
+# Coulomb bound, |s_tau| = F mu_c (1e-6), and in the direction of the slip
+# (s_tau [u].tau >= 0: friction dissipates); and friction lowers G at the
+# closed tip below that of the same scene without friction.
+for law in coulomb none; do
+  "$bilayer" "$files/partial_closure_friction.prm" --set "Output/Output directory=$work/friction-$law" \
+    --set "Output/Write VTU=false" --set "Contact/Friction=$law" > friction.log 2>&1
+  rc=$?
+  if [[ $rc -ne 0 ]]; then
+    echo "partial_closure_friction.prm (Friction = $law): exit $rc: $(tail -1 friction.log)"
+    fail=1
+  fi
+done
+if [[ -f $work/friction-coulomb/summary.json && -f $work/friction-none/summary.json ]]; then
+  python3 - "$work" <<'PY' || fail=1
+import csv, glob, json, sys
+work = sys.argv[1]
+F = 0.5
+path = sorted(glob.glob(work + "/friction-coulomb/interface-*.csv"))[-1]
+rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))
+closed = [r for r in rows if r["on_crack"] == "1" and r["state"] == "1"]
+slip = [r for r in closed if r["friction_state"] == "2"]
+scale = max(float(r["mu_c"]) for r in closed)
+at_bound = all(abs(abs(float(r["tangential_force"])) - F * float(r["mu_c"])) <= 1e-6 * scale
+               for r in closed)
+dissipating = all(float(r["tangential_force"]) * float(r["jump_tangential"]) >= 0 for r in closed)
+G = [json.load(open(work + "/friction-%s/summary.json" % law))["cycles"][-1]["crack_tips"]
+     for law in ("coulomb", "none")]
+g_closed = [max(t, key=lambda t: t["x"])["G"] for t in G]
+ok = closed and len(slip) == len(closed) and at_bound and dissipating and 0 <= g_closed[0] < g_closed[1]
+print("partial_closure_friction: %d crack nodes in contact, %d slip, at the bound F mu_c: %s, "
+      "along the slip: %s; G at the closed tip below the frictionless one: %s"
+      % (len(closed), len(slip), "yes" if at_bound else "no", "yes" if dissipating else "no",
+         "yes" if 0 <= g_closed[0] < g_closed[1] else "no"))
+sys.exit(0 if ok else 1)
 PY
 fi
 [[ $fail -eq 0 ]] && echo "shipped scenes: yes" || echo "shipped scenes: NO"
