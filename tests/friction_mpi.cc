@@ -15,7 +15,9 @@
 // With 6 processes u- and u+ are shared by two processes each (another
 // direct solver, other sums: rounding differs), and everything must agree
 // to 1e-8 instead; the counts may differ by a step where rounding flips an
-// active-set decision.
+// active-set decision. Measured with 6 processes: energy 8e-16, G 1.2e-12,
+// friction term 1.8e-13 (of G), multipliers 4e-15, slip 8e-14; the
+// iteration counts and the fixed-point steps were the serial ones.
 //
 // Scenes (Example 1 with the shear traction (s c, -c x) on the top and
 // (-s c, c x) on the bottom of layer 1, docs/problem.md §5):
