@@ -255,4 +255,27 @@ main()
                       << s[0].stick << "/" << s[0].slip_nodes
                       << ", contraction " << contraction << std::endl;
         }
+
+  // Finer meshes (the sheared scene of scripts/friction_newton): the Newton
+  // steps with Tresca friction stay within twice the frictionless ones.
+  for (const unsigned int n : {64u, 128u})
+    {
+      const std::string cells =
+        "subsection Mesh\n set Cells along Sigma = " + std::to_string(n) +
+        "\nend\n";
+      const Solution with =
+        solve(cells + loads("0.5", "1e-3*mu1") +
+                "subsection Contact\n set Friction = tresca\n"
+                " set Friction bound = 1.5e-3\nend\n",
+              "active set");
+      const Solution without =
+        solve(cells + loads("0.5", "1e-3*mu1"), "active set");
+      std::cout << "tresca g=1.5e-3, " << n
+                << " cells along Sigma, active set: converged: "
+                << yes(with.converged && without.converged)
+                << "; stick and slip nodes: "
+                << yes(with.stick > 0 && with.slip_nodes > 0)
+                << "; Newton steps at most twice the frictionless: "
+                << yes(with.iterations <= 2 * without.iterations) << std::endl;
+    }
 }
