@@ -67,6 +67,7 @@
 #include <utility>
 #include <vector>
 
+#include "friction_scenes.h"
 #include "verdict.h"
 
 using namespace bilayer;
@@ -95,22 +96,13 @@ namespace
            const std::string &refinement = "adaptive")
   {
     std::ostringstream s;
-    s << std::setprecision(17) << "subsection Geometry\n"
-      << " set Crack interval on Sigma = " << -a << ", " << a
-      << "\n set Clamped sides = left, right, bottom, top\nend\n"
+    s << friction_scenes::uniform_state_griffith(a, E, nu, sigma, tau)
       << "subsection Mesh\n set Cells along Sigma = " << cells << "\n"
       << " set Fit crack tips = true\n"
       << " set Polynomial degree of layer 1 = 2\n"
       << " set Refinement = " << refinement
       << "\n set Refinement fraction = 0.8\n"
       << " set Number of cycles = " << cycles << "\nend\n"
-      << "subsection Materials\n set Number of layers = 1\n"
-      << " subsection Layer 1\n  set Young's modulus = " << E
-      << "\n  set Poisson's ratio = " << nu << "\n end\nend\n"
-      << "subsection Loads\n set Constants = exx = "
-      << nu * (1 + nu) * sigma / E << "; eyy = " << -(1 - nu * nu) * sigma / E
-      << "; exy = " << (1 + nu) * tau / E << "\n subsection Layer 1\n"
-      << "  set Prescribed displacement = exx*x + 2*exy*y; eyy*y\n end\nend\n"
       << "subsection Contact\n set Non-penetration on the crack = true\n"
       << friction << "end\n"
       << "subsection Solver\n set Method = active set\n"

@@ -50,6 +50,7 @@
 #include <string>
 #include <vector>
 
+#include "friction_scenes.h"
 #include "verdict.h"
 
 using namespace bilayer;
@@ -79,9 +80,7 @@ namespace
          << "subsection Geometry\n set Crack interval on Sigma = -0.5, " << end
          << "\nend\n"
          << "subsection Mesh\n set Cells along Sigma = " << cells << "\nend\n"
-         << "subsection Loads\n subsection Layer 1\n"
-         << "  set Traction on top side = 0.5*c; -c*x\n"
-         << "  set Traction on bottom side = -0.5*c; c*x\n end\nend\n"
+         << friction_scenes::shear_loads("0.5", "1e-3*mu1")
          << "subsection Contact\n"
          << contact << "end\n"
          << "subsection Solver\n set Method = active set\n"
@@ -295,20 +294,11 @@ namespace
   {
     const double       E = 1, nu = 0.3, a = 0.05, sigma = 1e-3, tau = 1e-3;
     std::ostringstream s;
-    s << std::setprecision(17) << "subsection Geometry\n"
-      << " set Crack interval on Sigma = " << -a << ", " << a
-      << "\n set Clamped sides = left, right, bottom, top\nend\n"
+    s << friction_scenes::uniform_state_griffith(a, E, nu, sigma, tau)
       << "subsection Mesh\n set Cells along Sigma = 40\n"
       << " set Fit crack tips = true\n"
       << " set Polynomial degree of layer 1 = 2\n"
       << " set Number of cycles = 2\nend\n"
-      << "subsection Materials\n set Number of layers = 1\n"
-      << " subsection Layer 1\n  set Young's modulus = " << E
-      << "\n  set Poisson's ratio = " << nu << "\n end\nend\n"
-      << "subsection Loads\n set Constants = exx = "
-      << nu * (1 + nu) * sigma / E << "; eyy = " << -(1 - nu * nu) * sigma / E
-      << "; exy = " << (1 + nu) * tau / E << "\n subsection Layer 1\n"
-      << "  set Prescribed displacement = exx*x + 2*exy*y; eyy*y\n end\nend\n"
       << "subsection Contact\n set Non-penetration on the crack = true\n"
       << " set Friction = tresca\n set Friction bound = " << 1e3 * tau
       << "\nend\n"

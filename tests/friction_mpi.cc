@@ -42,6 +42,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "friction_scenes.h"
 #include "reference.h"
 
 using namespace dealii;
@@ -152,15 +153,6 @@ namespace
                 << ", fixed point " << a.friction_iterations << "/"
                 << b.friction_iterations << std::endl;
   }
-
-  std::string
-  loads(const std::string &shear, const std::string &constant)
-  {
-    return "subsection Loads\n set Constants = c = " + constant +
-           "\n subsection Layer 1\n  set Traction on top side = " + shear +
-           "*c; -c*x\n  set Traction on bottom side = -" + shear +
-           "*c; c*x\n end\nend\n";
-  }
 } // namespace
 
 
@@ -172,7 +164,8 @@ main(int argc, char **argv)
     "subsection Mesh\n set Cells along Sigma = 16\nend\n"
     "subsection Output\n set Write VTU = false\n"
     " set Write interface CSV = false\n set Terminal output = checks\nend\n";
-  const std::string tresca = common + loads("0.5", "1e-3*mu1") +
+  const std::string tresca = common +
+                             friction_scenes::shear_loads("0.5", "1e-3*mu1") +
                              "subsection Contact\n set Friction = tresca\n"
                              " set Friction bound = 1e-3\nend\n";
   compare("tresca_active_set",
@@ -185,7 +178,7 @@ main(int argc, char **argv)
   // c = 1e-3 mu1 of Omega- of layer 1 (78.125) as a number: mu1 differs
   // between the sides.
   compare("coulomb_bimaterial",
-          common + loads("1", "0.078125") +
+          common + friction_scenes::shear_loads("1", "0.078125") +
             "subsection Materials\n subsection Layer 1\n"
             "  subsection Omega+\n   set Young's modulus = 80\n"
             "   set Poisson's ratio = 0.2\n  end\n end\nend\n"

@@ -51,6 +51,7 @@
 #include <string>
 #include <vector>
 
+#include "friction_scenes.h"
 #include "reference.h"
 
 using namespace dealii;
@@ -154,15 +155,6 @@ namespace
       << "\n set Polynomial degree of layer 2 = " << degree << "\nend\n";
     return s.str();
   }
-
-  std::string
-  loads(const std::string &shear, const std::string &constant)
-  {
-    return "subsection Loads\n set Constants = c = " + constant +
-           "\n subsection Layer 1\n  set Traction on top side = " + shear +
-           "*c; -c*x\n  set Traction on bottom side = -" + shear +
-           "*c; c*x\n end\nend\n";
-  }
 } // namespace
 
 
@@ -171,11 +163,11 @@ main()
 {
   // mu1 = 200 / (2 (1 + 0.28)) = 78.125 on Omega- of layer 1 (c = 1e-3 mu1
   // written as a number: mu1 differs between the sides of the bimaterial).
-  const std::string tresca = loads("0.5", "1e-3*mu1") +
+  const std::string tresca = friction_scenes::shear_loads("0.5", "1e-3*mu1") +
                              "subsection Contact\n set Friction = tresca\n"
                              " set Friction bound = 1e-3\nend\n";
   const std::string bimaterial =
-    loads("1", "0.078125") +
+    friction_scenes::shear_loads("1", "0.078125") +
     "subsection Materials\n subsection Layer 1\n  subsection Omega+\n"
     "   set Young's modulus = 80\n   set Poisson's ratio = 0.2\n"
     "  end\n end\nend\n";
@@ -232,7 +224,8 @@ main()
               // the frictionless scene (docs/performance.md, "Friction:
               // Newton steps and the Coulomb fixed point").
               const Solution frictionless =
-                solve(mesh(degree, matching) + loads("0.5", "1e-3*mu1"),
+                solve(mesh(degree, matching) +
+                        friction_scenes::shear_loads("0.5", "1e-3*mu1"),
                       "active set");
               std::cout << "; stick and slip nodes: "
                         << yes(s[0].stick > 0 && s[0].slip_nodes > 0)
@@ -264,12 +257,13 @@ main()
         "subsection Mesh\n set Cells along Sigma = " + std::to_string(n) +
         "\nend\n";
       const Solution with =
-        solve(cells + loads("0.5", "1e-3*mu1") +
+        solve(cells + friction_scenes::shear_loads("0.5", "1e-3*mu1") +
                 "subsection Contact\n set Friction = tresca\n"
                 " set Friction bound = 1.5e-3\nend\n",
               "active set");
       const Solution without =
-        solve(cells + loads("0.5", "1e-3*mu1"), "active set");
+        solve(cells + friction_scenes::shear_loads("0.5", "1e-3*mu1"),
+              "active set");
       std::cout << "tresca g=1.5e-3, " << n
                 << " cells along Sigma, active set: converged: "
                 << yes(with.converged && without.converged)
