@@ -87,20 +87,18 @@ namespace bilayer
       double                 sum_g = 0, gap = 0;
       for (unsigned int a = 0; a < space.n_nodes(mu_1); ++a)
         {
-          const unsigned int t = Layout::entry(a, Layout::tangential);
-          const unsigned int i =
-            mu.get_block_indices().local_to_global(mu_1, t);
           // (A Coulomb cone at an open node has the bound 0: free.)
-          const double bound = space.set().friction_bound(i);
+          const double bound = space.friction_bound(a);
           if (bound == 0)
             continue;
-          const double d = space.node_weight(a, mu_1);
-          const double m = mu(i), jump = g(i);
+          const unsigned int t = Layout::entry(a, Layout::tangential);
+          const double       d = space.node_weight(a, mu_1);
+          const double       m = mu.block(mu_1)(t), jump = g.block(mu_1)(t);
           sum_g += d * bound;
           gap += d * (bound * std::abs(jump) - m * jump);
           report.friction_dissipation += d * m * jump;
           report.max_slip = std::max(report.max_slip, std::abs(jump));
-          if (std::abs(m) >= bound)
+          if (friction_state(bound, m) == FrictionState::slip)
             ++report.slip_nodes;
           else
             ++report.stick_nodes;
@@ -393,15 +391,10 @@ namespace bilayer
         n.frictional      = interface.contact_parameters().frictional();
         if (n.on_crack)
           {
-            const unsigned int i =
-              mu.get_block_indices().local_to_global(Layout::across_sigma, x);
-            const double m     = mu(i);
-            n.friction_bound   = space.set().friction_bound(i);
-            n.tangential_force = space.set().friction(i) ? -m : 0.;
-            n.friction_state   = n.friction_bound == 0 ? FrictionState::free :
-                                 std::abs(m) >= n.friction_bound ?
-                                                         FrictionState::slip :
-                                                         FrictionState::stick;
+            const double m     = mu.block(Layout::across_sigma)(x);
+            n.friction_bound   = space.friction_bound(a);
+            n.tangential_force = n.friction_bound > 0 ? -m : 0.;
+            n.friction_state   = friction_state(n.friction_bound, m);
           }
         // The smallest opening against the faces that meet at the node.
         const auto   open    = face_openings(space, t[u_minus], t[u_plus], a);

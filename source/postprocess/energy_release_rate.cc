@@ -343,9 +343,9 @@ namespace bilayer
                                           w[Layout::u_plus],
                                           tp);
       const auto mu_t = [&](const unsigned int a) {
-        const unsigned int i = mu.get_block_indices().local_to_global(
-          mu_1, Layout::entry(a, Layout::tangential));
-        return space.set().friction(i) ? mu(i) : 0.;
+        return space.friction_bound(a) > 0 ?
+                 mu.block(mu_1)(Layout::entry(a, Layout::tangential)) :
+                 0.;
       };
       const auto         &bp = space.breakpoints(mu_1);
       const QGauss<1>     gauss(space.degree() + 2);

@@ -9,6 +9,7 @@
 #include <bilayer/interface/trace_coupling.h>
 
 #include <algorithm>
+#include <cmath>
 #include <ostream>
 #include <vector>
 
@@ -160,6 +161,16 @@ namespace bilayer
     /// A node of the glued part.
     glued = 3
   };
+
+  /// The state of a crack node whose tangential multiplier is @p mu_t and
+  /// friction bound @p bound: free without a bound, slip at it, else stick.
+  inline FrictionState
+  friction_state(const double bound, const double mu_t)
+  {
+    return bound == 0              ? FrictionState::free :
+           std::abs(mu_t) >= bound ? FrictionState::slip :
+                                     FrictionState::stick;
+  }
 
   /**
    * What is reported at one node of the mesh of mu_1 (the multiplier

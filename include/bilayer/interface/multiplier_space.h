@@ -192,6 +192,15 @@ namespace bilayer
      */
     void
     set_friction_bounds(const std::vector<double> &bounds);
+    /// The friction bound g of the tangential component of node @p a of
+    /// mu_1 (0 where no friction acts: off the crack, at corners, where the
+    /// bound is 0).
+    double
+    friction_bound(const unsigned int a) const
+    {
+      return set_.friction_bound(Layout::across_sigma,
+                                 Layout::entry(a, Layout::tangential));
+    }
     /// Whether node @p a of mu_1 has a tangential component that friction
     /// may act on (a crack node that is not a corner).
     bool

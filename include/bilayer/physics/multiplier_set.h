@@ -258,6 +258,13 @@ namespace bilayer
       return friction(i) ? upper(i) : 0.;
     }
 
+    /// The friction bound of component @p i of block @p b.
+    double
+    friction_bound(const unsigned int b, const unsigned int i) const
+    {
+      return friction_bound(global(b, i));
+    }
+
     /**
      * Whether a contact multiplier @p mu_i lies below its bound p, where
      * the sign and complementarity conditions of contact are checked
