@@ -172,6 +172,18 @@ namespace bilayer
      * (0 without friction; <= 0 for a constant Tresca bound).
      */
     double friction = 0;
+    /**
+     * The mode split of G (mode_split(), docs/fracture.md §7): G_I + G_II =
+     * G, the opening (I) and sliding (II) parts; NaN where the split is not
+     * defined at this tip (then mode_split_note says why).
+     */
+    double G_I  = std::numeric_limits<double>::quiet_NaN();
+    double G_II = std::numeric_limits<double>::quiet_NaN();
+    /// The phase angle psi = atan(sqrt(G_II / G_I)) [degrees], in [0, 90]
+    /// (NaN where the split is not defined).
+    double phase_angle = std::numeric_limits<double>::quiet_NaN();
+    /// Empty where the split is defined, else why it is not.
+    std::string mode_split_note;
     /// Why G is not reported at this tip on this mesh (then NaN): the
     /// support of theta holds too few cells (support_cells()); empty if G
     /// is valid.
