@@ -43,6 +43,8 @@ namespace beam_specimens
     double energy = std::nan("");
     /// The interface nodes on the crack (the mouth included).
     std::vector<InterfaceNode> crack;
+    /// [u].tau at the mouth (x = 0).
+    double mouth_sliding = std::nan("");
   };
 
   /// Runs parameter_files/@p file with the crack (0, @p a) on @p cycles
@@ -79,7 +81,11 @@ namespace beam_specimens
                                                   study.solutions(),
                                                   study.multipliers()))
       if (n.on_crack)
-        r.crack.push_back(n);
+        {
+          r.crack.push_back(n);
+          if (n.point[0] == 0)
+            r.mouth_sliding = n.jump_tangential;
+        }
     return r;
   }
 } // namespace beam_specimens
