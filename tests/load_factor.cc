@@ -10,7 +10,9 @@
 //     and G at both tips are lambda^2 times those at 1, and the solutions
 //     and multipliers lambda times those of a separate run at 1, to 1e-10
 //     relative; every subproblem factorised once; lambda set before the
-//     subproblems exist (2.5) is applied to them after their set-up.
+//     subproblems exist (2.5) is applied to them after their set-up; at
+//     0.3 Clapeyron's Pi = -1/2 lambda (F_1, w) with (F_1, w) summed from
+//     load_work() (the work of the unit load; the multipliers do none).
 // (b) One layer, a crack (-0.5, 0.5), a body force, a prescribed
 //     displacement on the clamped sides and tractions (no preload): states
 //     at 1, 0.4, 2.5, the energies and G lambda^2 times those at 1, and
@@ -164,6 +166,20 @@ namespace
              << std::endl;
     check("(a) at 0.3 solutions and multipliers 0.3 times those at 1 (1e-10)",
           w <= 1e-10);
+
+    // Clapeyron at 0.3 (forces only, no work of the contact and gluing
+    // multipliers): Pi = -1/2 (0.3 F_1, w), (F_1, w) = load_work(w).
+    double work = 0;
+    for (const Layer layer : {Layer::first, Layer::second})
+      for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+        work += states.subproblem(layer, sd).load_work(
+          states.solutions()[Layout::index(layer, sd)]);
+    const double clapeyron =
+      relative(states.records().back().energy, -0.5 * 0.3 * work);
+    measured << "(a) lambda = 0.3: Pi against -1/2 lambda load_work: "
+             << clapeyron << std::endl;
+    check("(a) at 0.3 Pi = -1/2 lambda (F_1, w) (load_work, 1e-10)",
+          clapeyron <= 1e-10);
 
     Study later(scene, sink);
     later.set_load_factor(2.5);
