@@ -92,9 +92,10 @@ namespace bilayer
       if (steps[k].unstable)
         {
           UnstableRun run;
-          run.load_factor   = steps[k].load_factor;
-          run.first_step    = steps[k].step;
-          run.from_length   = steps[k].crack_length;
+          run.load_factor = steps[k].load_factor;
+          run.first_step  = steps[k].step;
+          run.from_length =
+            k > 0 ? steps[k - 1].crack_length : steps[k].crack_length;
           unsigned int last = k;
           while (last + 1 < steps.size() && steps[last].unstable &&
                  steps[last + 1].kind == "growth")
