@@ -171,6 +171,15 @@ namespace bilayer
                       "vertex there"));
         followed.push_back(tip);
       }
+    // The toughness, positive and finite at every vertex of Sigma (where a
+    // tip may stand), before the first step.
+    const InterfaceCurve &curve = domain.interface_curve();
+    for (const double s : sigma_vertices)
+      {
+        scene.fracture.toughness_at(curve.point(s), s);
+        if (scene.fracture.mixed_mode_law != MixedModeLaw::mode_independent)
+          scene.fracture.mode_ii_toughness_at(curve.point(s), s);
+      }
     point_subproblems.clear();
     for (const Point<2> &p : scene.output.displacement_points)
       point_subproblems.push_back(point_subproblem(p));

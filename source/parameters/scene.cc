@@ -163,6 +163,44 @@ namespace bilayer
         return "not used (Contact/Friction = " + law + ")";
       return "";
     }
+
+
+    /// Why the growth entry @p path is not read (empty if it is): the
+    /// entries of Fracture/Crack growth without growth, the mode II
+    /// toughness and the exponent with the mode-independent law, Written
+    /// cycles with growth.
+    std::string
+    unused_growth_entry(const std::string                        &path,
+                        const std::map<std::string, std::string> &values)
+    {
+      const auto value = [&](const std::string &key, const std::string &def) {
+        const auto it = values.find(key);
+        return it == values.end() ? def : it->second;
+      };
+      const std::string growth = value("Fracture/Crack growth", "none");
+      const std::set<std::string> growth_entries = {
+        "Fracture/Toughness",
+        "Fracture/Mode II toughness",
+        "Fracture/Mixed-mode law",
+        "Fracture/Mixed-mode exponent",
+        "Fracture/Growth increment",
+        "Fracture/Growing tips",
+        "Fracture/Exact onsets",
+        "Fracture/Maximum growth steps",
+        "Output/Written steps",
+        "Output/Displacement points"};
+      if (growth == "none" && growth_entries.count(path) > 0)
+        return "not used (Fracture/Crack growth = none)";
+      if (growth != "none" && path == "Output/Written cycles")
+        return "not used (Fracture/Crack growth = " + growth +
+               ": Output/Written steps)";
+      const std::string law =
+        value("Fracture/Mixed-mode law", "mode independent");
+      if (law == "mode independent" && (path == "Fracture/Mode II toughness" ||
+                                        path == "Fracture/Mixed-mode exponent"))
+        return "not used (Fracture/Mixed-mode law = mode independent)";
+      return "";
+    }
   } // namespace
 
 
@@ -201,6 +239,8 @@ namespace bilayer
                       why = unused_law_entry(path, values);
                     if (why.empty() && !path.empty())
                       why = unused_friction_entry(path, values);
+                    if (why.empty() && !path.empty())
+                      why = unused_growth_entry(path, values);
                     if (why.empty())
                       result += line + "\n";
                     else

@@ -216,6 +216,32 @@ run "Friction iterations 0" "--set Contact/Friction iterations=0: The string <0>
 run "unknown friction law" "--set Contact/Friction=Coulomb: The string <Coulomb> does not match the given pattern <[Selection none|tresca|coulomb ]>" "Contact/Friction=Coulomb"
 run "Tresca friction without non-penetration" "Contact/Friction = tresca needs Contact/Non-penetration on the crack = true" "Contact/Friction=tresca" --set "Contact/Friction bound=0.01" --set "Contact/Non-penetration on the crack=false"
 run "Coulomb friction without non-penetration" "Contact/Friction = coulomb needs Contact/Non-penetration on the crack = true" "Contact/Friction=coulomb" --set "Contact/Friction coefficient=0.3" --set "Contact/Non-penetration on the crack=false"
+# Crack growth (Fracture/Crack growth): load factors that are no list of
+# numbers >= 0 or no start:step:end, that do not increase, more than one
+# with a sweep or other than 1 without growth; growth with friction, with
+# adaptive refinement, without a crack tip, with a toughness <= 0 at a tip,
+# with a tip number that does not exist; the output entries of growth.
+run "load factor not a number" "Loads/Load factor must be a ','-separated list of numbers >= 0 or start:step:end" "Loads/Load factor=1, x" --set "Fracture/Crack growth=quasi-static"
+run "load factor negative" "Loads/Load factor must be a ','-separated list of numbers >= 0" "Loads/Load factor=-1" --set "Fracture/Crack growth=quasi-static"
+run "load factor range with step 0" "start:step:end with 0 <= start <= end and step > 0" "Loads/Load factor=0:0:2" --set "Fracture/Crack growth=quasi-static"
+run "load factor range of too many steps" "(at most 100000 factors)" "Loads/Load factor=0:1e-9:1" --set "Fracture/Crack growth=quasi-static"
+run "load factors that decrease" "Loads/Load factor must increase with Fracture/Crack growth = quasi-static" "Loads/Load factor=1, 0.5" --set "Fracture/Crack growth=quasi-static"
+run "load factor without growth" "Loads/Load factor must be 1 without Fracture/Crack growth" "Loads/Load factor=2"
+run "sweep with two load factors" "Fracture/Crack growth = sweep needs one Loads/Load factor" "Loads/Load factor=1, 2" --set "Fracture/Crack growth=sweep"
+run "growth with friction" "Fracture/Crack growth needs Contact/Friction = none" "Fracture/Crack growth=quasi-static" --set "Contact/Friction=tresca" --set "Contact/Friction bound=0.01"
+run "growth with adaptive refinement" "Fracture/Crack growth needs Mesh/Refinement = global" "Fracture/Crack growth=sweep" --set "Mesh/Refinement=adaptive"
+run "growth without G" "Fracture/Crack growth needs Fracture/Energy release rate = true" "Fracture/Crack growth=sweep" --set "Fracture/Energy release rate=false"
+run "toughness negative at a tip" "Fracture/Toughness must be finite and > 0 on Sigma, got -1 at (x, y) = (-1, 0)" "Fracture/Crack growth=quasi-static" --set "Fracture/Toughness=x"
+run "mode II toughness zero" "Fracture/Mode II toughness must be finite and > 0 on Sigma, got 0" "Fracture/Crack growth=quasi-static" --set "Fracture/Mixed-mode law=mode independent" --set "Fracture/Mode II toughness=0" --set "Fracture/Mixed-mode law=Benzeggagh-Kenane"
+run "toughness does not parse" "Fracture/Toughness: cannot evaluate '1*(' as a function of x, y and s" "Fracture/Crack growth=quasi-static" --set "Fracture/Toughness=1*("
+run "mixed-mode exponent zero" "Fracture/Mixed-mode exponent must be > 0, got 0" "Fracture/Crack growth=quasi-static" --set "Fracture/Mixed-mode exponent=0"
+run "growing tip that does not exist" "Fracture/Growing tips: tip 3 does not exist, the crack has 2 tip(s)" "Fracture/Crack growth=sweep" --set "Fracture/Growing tips=3"
+run "growing tips not numbers" "Fracture/Growing tips must be all or a ','-separated list of tip numbers >= 1, got first" "Fracture/Crack growth=sweep" --set "Fracture/Growing tips=first"
+run "growth increment 0" "--set Fracture/Growth increment=0: The string <0> does not match the given pattern" "Fracture/Crack growth=sweep" --set "Fracture/Growth increment=0"
+run "growth without a crack" "Fracture/Crack growth needs a crack with a tip inside Omega" "Fracture/Crack growth=sweep" --set "Geometry/Crack interval on Sigma=0, 0"
+run "written steps misspelt" "Output/Written steps must be 'every N' (N >= 1), 'last' or 'none', got 'every'" "Output/Written steps=every"
+run "displacement point of one coordinate" "Output/Displacement points must be 'x1, y1; x2, y2; ...' (finite numbers), got '0.5'" "Output/Displacement points=0.5"
+run "displacement point outside the domain" "Output/Displacement points: (3, 0.5) lies outside the domain" "Fracture/Crack growth=sweep" --set "Output/Displacement points=3, 0.5"
 run "temperature change using E2 of an orthotropic layer" "Loads/Temperature change: '1e-3*E2' uses E2, a constant of isotropic layers only (E2, nu2, mu2, lambda2), but Materials/Layer 2/Law = orthotropic" "Materials/Layer 2/Law=orthotropic" --set "Loads/Temperature change=1e-3*E2"
 run "missing mesh file" "Mesh/Mesh files: cannot open" "Mesh/Mesh files=nothere_{side}.msh"
 run "mesh file is a directory" "Mesh/Mesh files: cannot open 'mesh_dir_minus': not a regular file" "Mesh/Mesh files=mesh_dir_{side}"
