@@ -86,6 +86,18 @@ namespace bilayer
     growth_run       = true;
     const bool sweep = fracture.growth == CrackGrowth::sweep;
 
+    // Subproblems shared by groups of processes (more than four) keep the
+    // load of their set-up: refused before anything is built, by every
+    // process together.
+    bool scaled = false;
+    for (const double lambda : scene.loads.load_factors)
+      scaled = scaled || lambda != 1;
+    if (scaled && distribution.n_processes() > 4)
+      throw CollectiveError(
+        "Loads/Load factor other than 1 needs at most four MPI processes "
+        "(a subproblem shared by a group keeps the load of its set-up), got " +
+        std::to_string(distribution.n_processes()));
+
     // State 0: the meshes of the last cycle, the subproblems factorised
     // once for all steps.
     Timer       total;
@@ -171,15 +183,17 @@ namespace bilayer
                       "vertex there"));
         followed.push_back(tip);
       }
-    // The toughness, positive and finite at every vertex of Sigma (where a
-    // tip may stand), before the first step.
+    // The toughness, positive and finite at every vertex of Sigma where a
+    // tip may stand (off the crack: it never closes), before the first
+    // step.
     const InterfaceCurve &curve = domain.interface_curve();
     for (const double s : sigma_vertices)
-      {
-        scene.fracture.toughness_at(curve.point(s), s);
-        if (scene.fracture.mixed_mode_law != MixedModeLaw::mode_independent)
-          scene.fracture.mode_ii_toughness_at(curve.point(s), s);
-      }
+      if (!curve.crack().contains(s))
+        {
+          scene.fracture.toughness_at(curve.point(s), s);
+          if (scene.fracture.mixed_mode_law != MixedModeLaw::mode_independent)
+            scene.fracture.mode_ii_toughness_at(curve.point(s), s);
+        }
     point_subproblems.clear();
     for (const Point<2> &p : scene.output.displacement_points)
       point_subproblems.push_back(point_subproblem(p));
