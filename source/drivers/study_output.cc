@@ -211,8 +211,8 @@ namespace bilayer
               pcout << "G_I = " << g.G_I << ", G_II = " << g.G_II
                     << std::defaultfloat << std::setprecision(3)
                     << " (phase angle " << g.phase_angle
-                    << " degrees, closure length " << g.mode_split_length
-                    << ")" << std::scientific << std::setprecision(4);
+                    << " degrees, closure length " << g.mode_split_length << ")"
+                    << std::scientific << std::setprecision(4);
             else
               pcout << "not defined";
             if (!g.mode_split_note.empty())

@@ -164,8 +164,8 @@ namespace bilayer
         const double c_I = std::max(c[0], 0.), c_II = std::max(c[1], 0.);
         if (c_I + c_II > 0)
           {
-            g.G_I  = g.G * c_I / (c_I + c_II);
-            g.G_II = g.G * c_II / (c_I + c_II);
+            g.G_I  = g.G * (c_I / (c_I + c_II));
+            g.G_II = g.G * (c_II / (c_I + c_II));
             g.phase_angle =
               g.G_I > 0 ? std::atan(std::sqrt(std::max(g.G_II, 0.) / g.G_I)) *
                             180 / M_PI :
