@@ -166,15 +166,18 @@ namespace bilayer
           {
             g.G_I  = g.G * (c_I / (c_I + c_II));
             g.G_II = g.G * (c_II / (c_I + c_II));
+            // atan(sqrt(G_II / G_I)) from the ratio itself, so that it
+            // holds for a G of either sign (round-off near 0).
             g.phase_angle =
-              g.G_I > 0 ? std::atan(std::sqrt(std::max(g.G_II, 0.) / g.G_I)) *
-                            180 / M_PI :
-                          (g.G_II > 0 ? 90. : not_a_number);
+              std::atan2(std::sqrt(c_II), std::sqrt(c_I)) * 180 / M_PI;
           }
         else if (std::abs(g.G) <= 1e-6 * c[2] / stiffness)
           {
             // Nothing released behind the tip, and G is round-off.
             g.G_I = g.G_II = 0;
+            note << "no crack-closure work and G at round-off: G_I = G_II = "
+                    "0, no phase angle";
+            g.mode_split_note = note.str();
           }
         else
           {

@@ -75,8 +75,9 @@ namespace bilayer
    * Fill G_I, G_II, phase_angle, mode_split_length and mode_split_note of
    * every entry of @p release (G already computed) from the closure
    * integrals: G_I = G c_I / (c_I + c_II), G_II = G c_II / (c_I + c_II),
-   * c_I and c_II clipped at 0, phase angle atan(sqrt(G_II / G_I)) in
-   * degrees. @p length: Fracture/Mode split length (0: automatic,
+   * c_I and c_II clipped at 0, phase angle atan(sqrt(c_II / c_I)) in
+   * degrees (= atan(sqrt(G_II / G_I)) where G > 0, and defined for a G of
+   * either sign). @p length: Fracture/Mode split length (0: automatic,
    * mode_split_cells times @p tip_cell_sizes[t], at most half the free
    * distance). NaN with a note where G is NaN, where the automatic length
    * meets a tip between different materials, where the given length
