@@ -225,12 +225,18 @@ namespace bilayer
 
 
   bool
-  Study::run_states(const std::vector<CrackSet> &cracks)
+  Study::run_states(const std::vector<CrackSet> &cracks,
+                    const std::vector<double>   &load_factors)
   {
     AssertThrow(cycle_records.empty(),
                 ExcMessage("Study::run_states: a study runs one driver"));
+    AssertThrow(load_factors.empty() || load_factors.size() == cracks.size(),
+                ExcMessage("Study::run_states: one load factor per state, "
+                           "or none"));
     for (unsigned int k = 0; k < cracks.size(); ++k)
       {
+        if (!load_factors.empty())
+          set_load_factor(load_factors[k]);
         Timer       total;
         CycleRecord record;
         record.cycle = k;
@@ -359,10 +365,13 @@ namespace bilayer
               const unsigned int i = Layout::index(layer, sd);
               // (The subproblem of the previous cycle, which referred to
               // it, is gone.)
-              volume_loads[i] =
+              auto load =
                 scene.loads.volume_load(layer,
                                         scene.materials.material(layer, sd),
                                         domain_diameter(domain));
+              volume_loads[i] =
+                load ? std::make_unique<ScaledVolumeLoad>(std::move(load)) :
+                       nullptr;
               auto &sub = subproblems[i];
               sub       = std::make_unique<ElasticSubproblem>(
                 layer,
@@ -404,6 +413,9 @@ namespace bilayer
     problem = distribution.first_error(problem);
     if (!problem.empty())
       throw CollectiveError(problem);
+    // The load factor of the study (setup() assembles at 1).
+    if (lambda != 1)
+      set_load_factor(lambda);
   }
 
 

@@ -74,7 +74,8 @@ namespace bilayer
     /**
      * The element matrix and the load of one cell: the tractions on its
      * faces on Gamma_N and, with a VolumeLoad, the volume terms
-     * f . z + sigma(eps*) : eps(z).
+     * f . z + sigma(eps*) : eps(z); with @p split also the proportional
+     * part (tractions, f . z) and the preload (sigma(eps*) : eps(z)) apart.
      */
     class CellSystem
     {
@@ -84,12 +85,14 @@ namespace bilayer
                  const ElasticLaw                       &law,
                  const std::vector<bool>                &clamped,
                  const std::vector<const Function<2> *> &traction,
-                 const VolumeLoad                       *volume)
+                 const VolumeLoad                       *volume,
+                 const bool                              split = false)
         : fe(fe)
         , clamped(clamped)
         , traction(traction)
         , law(law)
         , volume(volume)
+        , split(split)
         , fe_values(
             mapping,
             fe,
@@ -107,6 +110,8 @@ namespace bilayer
         , t(2)
         , cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
         , cell_rhs(fe.n_dofs_per_cell())
+        , cell_unit(fe.n_dofs_per_cell())
+        , cell_preload(fe.n_dofs_per_cell())
         , local_dofs(fe.n_dofs_per_cell())
       {}
 
@@ -117,6 +122,8 @@ namespace bilayer
         const unsigned int n = fe.n_dofs_per_cell();
         cell_matrix          = 0;
         cell_rhs             = 0;
+        cell_unit            = 0;
+        cell_preload         = 0;
         fresh.apply(fe_values);
         fe_values.reinit(cell);
         for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -135,6 +142,13 @@ namespace bilayer
                   cell_rhs(i) +=
                     (fe_values[displacement].value(i, q) * f + s * eps[i]) *
                     JxW;
+                if (split)
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      cell_unit(i) +=
+                        fe_values[displacement].value(i, q) * f * JxW;
+                      cell_preload(i) += s * eps[i] * JxW;
+                    }
               }
           }
         for (unsigned int i = 0; i < n; ++i)
@@ -156,6 +170,10 @@ namespace bilayer
                   for (unsigned int i = 0; i < n; ++i)
                     cell_rhs(i) += fe_face_values[displacement].value(i, q) *
                                    traction_q * fe_face_values.JxW(q);
+                  if (split)
+                    for (unsigned int i = 0; i < n; ++i)
+                      cell_unit(i) += fe_face_values[displacement].value(i, q) *
+                                      traction_q * fe_face_values.JxW(q);
                 }
             }
         cell->get_dof_indices(local_dofs);
@@ -167,6 +185,7 @@ namespace bilayer
       const std::vector<const Function<2> *> &traction;
       const ElasticLaw                       &law;
       const VolumeLoad *const                 volume;
+      const bool                              split;
       FEValues<2>                             fe_values;
       FEFaceValues<2>                         fe_face_values;
       const SimilarityBreaker                 fresh;
@@ -175,8 +194,11 @@ namespace bilayer
       Vector<double>                          t;
 
     public:
-      FullMatrix<double>                   cell_matrix;
-      Vector<double>                       cell_rhs;
+      FullMatrix<double> cell_matrix;
+      Vector<double>     cell_rhs;
+      /// With split: cell_rhs apart into the proportional part (tractions,
+      /// body force) and the preload (the eigenstrain terms).
+      Vector<double>                       cell_unit, cell_preload;
       std::vector<types::global_dof_index> local_dofs;
     };
   } // namespace
@@ -212,6 +234,7 @@ namespace bilayer
         }
     constraints.close();
     homogeneous_constraints.close();
+    start_load_parts(volume);
 
     const IndexSet on_sigma =
       DoFTools::extract_boundary_dofs(dofs,
@@ -236,7 +259,9 @@ namespace bilayer
         system_rhs.reinit(dofs.n_dofs());
         load_vector.reinit(dofs.n_dofs());
       }
-    assemble(clamped, traction, volume);
+    // (The load at load factor 1: a ScaledVolumeLoad's unit load.)
+    assemble(clamped, traction, volume ? &volume->unit_load() : nullptr);
+    keep_load_at_one();
     if (volume != nullptr && volume->has_eigenstrain())
       eigenstrain_energy_ = eigenstrain_energy();
     assembly_seconds = timer.wall_time();
@@ -383,7 +408,9 @@ namespace bilayer
                               const std::vector<const Function<2> *> &traction,
                               const VolumeLoad                       *volume)
   {
-    CellSystem system(*fe_system, mapping(), *law_, clamped, traction, volume);
+    const bool split = shared == nullptr && has_preload_;
+    CellSystem system(
+      *fe_system, mapping(), *law_, clamped, traction, volume, split);
     for (const auto &cell : dofs.active_cell_iterators())
       if (shared == nullptr)
         {
@@ -395,6 +422,19 @@ namespace bilayer
                                                  system_rhs);
           stiffness.add(system.local_dofs, system.cell_matrix);
           load_vector.add(system.local_dofs, system.cell_rhs);
+          if (split)
+            {
+              // The proportional part with the prescribed displacement's
+              // terms, the preload with none.
+              constraints.distribute_local_to_global(system.cell_unit,
+                                                     system.local_dofs,
+                                                     unit_rhs,
+                                                     system.cell_matrix);
+              homogeneous_constraints.distribute_local_to_global(
+                system.cell_preload, system.local_dofs, preload_rhs);
+              unit_load.add(system.local_dofs, system.cell_unit);
+              preload_load.add(system.local_dofs, system.cell_preload);
+            }
         }
       else if (shared->assembles(cell->active_cell_index()))
         {
@@ -564,5 +604,20 @@ namespace bilayer
       (shared ? shared->load_product(w) : ordered_dot(load_vector, w));
     // (Without an eigenstrain exactly the sum above, bit for bit.)
     return eigenstrain_energy_ == 0 ? energy : energy + eigenstrain_energy_;
+  }
+
+
+  double
+  ElasticSubproblem::load_work(const Vector<double> &w) const
+  {
+    if (shared)
+      {
+        AssertThrow(!has_preload_,
+                    ExcMessage("load_work: subproblem " + name() +
+                               " is shared by a group of processes and has "
+                               "a preload; its unit load is not kept"));
+        return shared->load_product(w);
+      }
+    return ordered_dot(unit_load, w);
   }
 } // namespace bilayer

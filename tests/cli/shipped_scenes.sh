@@ -6,7 +6,8 @@
 # exit 0, and on the interface CSV of its last cycle the crack is partly
 # open (nodes with [u].nu > 0) and partly closed (nodes in contact, mu_c > 0
 # and |[u].nu| below 1e-6 of the largest opening); the friction scene
-# partial_closure_friction.prm runs too (below).
+# partial_closure_friction.prm runs too, and so do the fracture specimens
+# dcb.prm and els.prm (below).
 # Usage: shipped_scenes.sh BILAYER PARAMETER_FILES
 set -u
 bilayer=$1 files=$2
@@ -92,5 +93,46 @@ print("partial_closure_friction: %d crack nodes in contact, %d slip, at the boun
 sys.exit(0 if ok else 1)
 PY
 fi
+# The fracture specimens dcb.prm (mode I) and els.prm (mode II) run with
+# their own settings (a/h = 10): exit 0, every cycle accepted, one crack
+# tip (at x = 10; none at the mouth x = 0) whose G on the last cycle lies
+# within 2 % (DCB) and 3 % (ELS) of beam theory with the root rotation
+# chi h, chi = 6^(-1/4) (docs/fracture.md, "Fracture specimens: DCB and
+# ELS"; measured +0.8 % and -1.1 %); the DCB crack open at every crack
+# node.
+for specimen in dcb els; do
+  "$bilayer" "$files/$specimen.prm" --set "Output/Output directory=$work/$specimen" \
+    --set "Output/Write VTU=false" > "$specimen.log" 2>&1
+  rc=$?
+  if [[ $rc -ne 0 ]]; then
+    echo "$specimen.prm: exit $rc: $(tail -1 "$specimen.log")"
+    fail=1
+    continue
+  fi
+  python3 - "$work/$specimen" "$specimen" <<'PY' || fail=1
+import csv, glob, json, sys
+where, specimen = sys.argv[1], sys.argv[2]
+cycles = json.load(open(where + "/summary.json"))["cycles"]
+tips = cycles[-1]["crack_tips"]
+a, h, P, E_prime, chi = 10.0, 1.0, 1e-3, 1 / (1 - 0.3 ** 2), 6 ** -0.25
+if specimen == "dcb":
+    beam, tolerance = 12 * P ** 2 * (a + chi * h) ** 2 / (E_prime * h ** 3), 0.02
+else:
+    beam, tolerance = 9 * P ** 2 * (a + 0.42 * chi * h) ** 2 / (4 * E_prime * h ** 3), 0.03
+accepted = all(c["accepted"] for c in cycles)
+one_tip = len(tips) == 1 and abs(tips[0]["x"] - a) < 1e-12
+G = tips[0]["G"] if one_tip else float("nan")
+close = one_tip and abs(G / beam - 1) < tolerance
+path = sorted(glob.glob(where + "/interface-*.csv"))[-1]
+rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))
+crack = [r for r in rows if r["on_crack"] == "1"]
+open_ = specimen != "dcb" or all(float(r["jump_normal"]) > 0 for r in crack)
+print("%s: every cycle accepted: %s, one tip at x = a: %s, G = %.6g, beam theory %.6g "
+      "(%+.2f %%, within %g %%: %s), the crack open: %s"
+      % (specimen, accepted, one_tip, G, beam, 100 * (G / beam - 1), 100 * tolerance,
+         close, open_))
+sys.exit(0 if accepted and close and open_ else 1)
+PY
+done
 [[ $fail -eq 0 ]] && echo "shipped scenes: yes" || echo "shipped scenes: NO"
 exit $fail

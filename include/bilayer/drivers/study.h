@@ -71,7 +71,44 @@ namespace bilayer
      * converged and passed its checks; stops at the first that does not.
      */
     bool
-    run_states(const std::vector<CrackSet> &cracks);
+    run_states(const std::vector<CrackSet> &cracks,
+               const std::vector<double>   &load_factors = {});
+
+    /**
+     * Scale the proportional loads by @p lambda (any finite number; 1 at
+     * the start): the tractions, the body forces and the prescribed
+     * displacements become lambda times those of the scene, while the
+     * preload (the eigenstrains and the thermal strains of Loads/
+     * Temperature change) stays as given. Applied to every present
+     * subproblem (ElasticSubproblem::set_load_factor(): no new assembly or
+     * factorisation) and to the body forces that the energy release rate
+     * and the error estimator read (ScaledVolumeLoad), at once, and to the
+     * subproblems of every later set-up (new cycles). Call it on every
+     * process, between states (before solve_state()); the next state is
+     * solved at lambda. Refused (lambda != 1) where a subproblem is shared
+     * by a group of processes (more than four processes).
+     */
+    void
+    set_load_factor(const double lambda);
+
+    /// The load factor of set_load_factor() (1 at the start).
+    double
+    load_factor() const
+    {
+      return lambda;
+    }
+
+    /**
+     * Whether the response scales with the load factor, every state at
+     * lambda >= 0 being lambda times the state at 1 (the displacements
+     * and multipliers; energy and G lambda^2 times): no preload (no
+     * eigenstrain entry other than 0, and no temperature change on a
+     * material that expands) and no friction (Contact/Friction on the
+     * crack faces = none); the contact conditions without an initial gap
+     * are positively homogeneous. (For lambda < 0 only without contact.)
+     */
+    bool
+    proportional_loading() const;
 
     const std::vector<CycleRecord> &
     records() const
@@ -221,7 +258,9 @@ namespace bilayer
     /// the thermal strain of its material under Loads/Temperature change),
     /// null where it has none; the subproblem refers to it (so declared
     /// before them).
-    PerSubproblem<std::unique_ptr<VolumeLoad>> volume_loads;
+    PerSubproblem<std::unique_ptr<ScaledVolumeLoad>> volume_loads;
+    /// The load factor (set_load_factor()).
+    double lambda = 1;
 
     /// Progress (Output/Terminal output = full) and the checks, both on the
     /// first process only.

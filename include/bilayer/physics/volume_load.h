@@ -6,6 +6,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <array>
+#include <memory>
 
 namespace bilayer
 {
@@ -93,6 +94,105 @@ namespace bilayer
     /// d eps* / d x_j at @p p for j = 0, 1 (the default as above).
     virtual std::array<dealii::SymmetricTensor<2, 2>, 2>
     eigenstrain_gradient(const dealii::Point<2> &p) const;
+
+    /**
+     * The load at load factor 1 (ScaledVolumeLoad: the load it scales;
+     * otherwise this load itself): the one that ElasticSubproblem::setup()
+     * assembles as the unit proportional load and the preload.
+     */
+    virtual const VolumeLoad &
+    unit_load() const
+    {
+      return *this;
+    }
+  };
+
+
+  /**
+   * A VolumeLoad under a load factor lambda: the body force lambda f (a
+   * proportional load) and the eigenstrain eps* of the load it holds
+   * unscaled (a preload, as the thermal strain): every reader of the body
+   * force (the energy release rate, the error estimator) sees lambda f,
+   * while ElasticSubproblem::setup() assembles unit_load(). With lambda = 1
+   * every value is that of the held load, bit for bit.
+   */
+  class ScaledVolumeLoad : public VolumeLoad
+  {
+  public:
+    explicit ScaledVolumeLoad(std::unique_ptr<VolumeLoad> load)
+      : load(std::move(load))
+    {}
+
+    /// Set lambda (any finite number; 1 after construction).
+    void
+    set_load_factor(const double lambda)
+    {
+      factor = lambda;
+    }
+
+    double
+    load_factor() const
+    {
+      return factor;
+    }
+
+    dealii::Tensor<1, 2>
+    body_force(const dealii::Point<2> &p) const override
+    {
+      return factor * load->body_force(p);
+    }
+
+    dealii::SymmetricTensor<2, 2>
+    eigenstrain(const dealii::Point<2> &p) const override
+    {
+      return load->eigenstrain(p);
+    }
+
+    double
+    eigenstress_zz(const dealii::Point<2> &p) const override
+    {
+      return load->eigenstress_zz(p);
+    }
+
+    bool
+    has_body_force() const override
+    {
+      return load->has_body_force();
+    }
+
+    bool
+    has_eigenstrain() const override
+    {
+      return load->has_eigenstrain();
+    }
+
+    double
+    length_scale() const override
+    {
+      return load->length_scale();
+    }
+
+    dealii::Tensor<2, 2>
+    body_force_gradient(const dealii::Point<2> &p) const override
+    {
+      return factor * load->body_force_gradient(p);
+    }
+
+    std::array<dealii::SymmetricTensor<2, 2>, 2>
+    eigenstrain_gradient(const dealii::Point<2> &p) const override
+    {
+      return load->eigenstrain_gradient(p);
+    }
+
+    const VolumeLoad &
+    unit_load() const override
+    {
+      return load->unit_load();
+    }
+
+  private:
+    std::unique_ptr<VolumeLoad> load;
+    double                      factor = 1;
   };
 } // namespace bilayer
 

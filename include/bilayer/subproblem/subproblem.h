@@ -190,6 +190,53 @@ namespace bilayer
     double
     energy(const dealii::Vector<double> &w) const;
 
+    /**
+     * Scale the proportional load by @p lambda (any finite number; setup()
+     * leaves lambda = 1): the load becomes lambda F_1 + F_pre, with F_1 the
+     * tractions, the body force and the prescribed displacement (the
+     * inhomogeneities of the constraints, and with them their terms in
+     * the right-hand side, scaled by lambda) and F_pre the preload, the
+     * terms sigma(eps*) : eps(z) of an eigenstrain (thermal strain
+     * included). Both parts come from the one assembly of setup(); the
+     * matrix and its factorisation are kept (n_factorisations() does not
+     * change), and solve(), solve_on_sigma() (its solution without
+     * coupling, one more forward/back substitution) and energy() use the
+     * scaled load. lambda = 1 restores the vectors of setup() bit for bit.
+     * The body force that the energy release rate and the estimator read
+     * is the VolumeLoad's (a ScaledVolumeLoad, which Study scales along).
+     * A subproblem shared by a group of processes (distributed(): more
+     * than four processes) refuses lambda != 1. Every process calls it
+     * (the constraints of every subproblem are kept everywhere).
+     */
+    void
+    set_load_factor(const double lambda);
+
+    /// The load factor of set_load_factor() (1 after setup()).
+    double
+    load_factor() const
+    {
+      return load_factor_;
+    }
+
+    /**
+     * (F_1, w) [energy]: the work of the unit proportional load (tractions
+     * and body force at lambda = 1) on @p w, the displacement conjugate to
+     * lambda where the loads are forces (d Pi / d lambda = -(F_1, w) at
+     * equilibrium). For a prescribed displacement it is the force part
+     * only: the work of the reactions on Gamma_D is not in it. Owners
+     * only; refused for a distributed() subproblem with a preload.
+     */
+    double
+    load_work(const dealii::Vector<double> &w) const;
+
+    /// Whether the load has a preload part F_pre (an eigenstrain or a
+    /// thermal strain), which set_load_factor() leaves unscaled.
+    bool
+    has_preload() const
+    {
+      return has_preload_;
+    }
+
     /// The VolumeLoad that setup() was given (null: none).
     const VolumeLoad *
     volume_load() const
@@ -324,6 +371,30 @@ namespace bilayer
       std::vector<std::pair<unsigned int, double>> entries;
     };
     std::vector<ConstrainedSigmaDof> constrained_sigma_dofs;
+
+    /// The load factor, whether there is a preload, and the parts of the
+    /// load (owners only): unit_rhs and unit_load the proportional ones at
+    /// lambda = 1 (condensed with the prescribed displacement, and
+    /// unconstrained), preload_rhs and preload_load the preload's (with a
+    /// preload), rhs_at_one and load_at_one those of setup() (with a
+    /// preload: restored at lambda = 1).
+    double                 load_factor_ = 1;
+    bool                   has_preload_ = false;
+    dealii::Vector<double> unit_rhs, preload_rhs, rhs_at_one;
+    dealii::Vector<double> unit_load, preload_load, load_at_one;
+    /// The non-zero inhomogeneities of the constraints at lambda = 1 (the
+    /// prescribed displacement), on every process.
+    std::vector<std::pair<dealii::types::global_dof_index, double>>
+      inhomogeneities;
+
+    /// In setup(), after the constraints: load factor 1, whether there is
+    /// a preload, the inhomogeneities, and the parts of the load sized
+    /// for assemble().
+    void
+    start_load_parts(const VolumeLoad *volume);
+    /// In setup(), after assemble(): the load at lambda = 1 kept (owners).
+    void
+    keep_load_at_one();
 
     /// The volume terms of setup(), and E* of energy() (owners only).
     const VolumeLoad *volume_             = nullptr;

@@ -1,0 +1,49 @@
+// The load factor of a study: the proportional loads scaled, the preload
+// kept, on the subproblems as they are factorised.
+
+#include <deal.II/base/exceptions.h>
+
+#include <bilayer/drivers/study.h>
+#include <bilayer/parameters/expressions.h>
+
+#include <cmath>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  void
+  Study::set_load_factor(const double new_lambda)
+  {
+    AssertThrow(std::isfinite(new_lambda),
+                ExcMessage("Study::set_load_factor: the load factor must be "
+                           "a finite number"));
+    lambda = new_lambda;
+    for (const auto &load : volume_loads)
+      if (load)
+        load->set_load_factor(lambda);
+    for (const auto &sub : subproblems)
+      if (sub)
+        sub->set_load_factor(lambda);
+  }
+
+
+  bool
+  Study::proportional_loading() const
+  {
+    if (scene.contact.frictional())
+      return false;
+    for (const Layer layer : {Layer::first, Layer::second})
+      if (scene.materials.has_layer(layer))
+        {
+          const unsigned int l = static_cast<unsigned int>(layer);
+          if (!expressions::is_zero(scene.loads.eigenstrain[l]))
+            return false;
+          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+            if (scene.loads.has_thermal_load(
+                  scene.materials.material(layer, sd)))
+              return false;
+        }
+    return true;
+  }
+} // namespace bilayer
