@@ -299,7 +299,9 @@ namespace bilayer
       unsigned int failed_cycle = 0;
       try
         {
-          passed = study.run();
+          passed = scene.fracture.growth == CrackGrowth::none ?
+                     study.run() :
+                     study.run_growth();
           if (!passed)
             {
               failed_cycle = study.records().back().cycle;
@@ -322,8 +324,10 @@ namespace bilayer
       const std::string where = output->commit(passed);
       if (!passed)
         {
-          std::cerr << "bilayer: cycle " << failed_cycle
-                    << " FAILED: " << unanchored(failure)
+          std::cerr << "bilayer: "
+                    << (scene.fracture.growth == CrackGrowth::none ? "cycle " :
+                                                                     "step ")
+                    << failed_cycle << " FAILED: " << unanchored(failure)
                     << " (its results are in " << where << ")" << std::endl;
           return ExitStatus::failed_checks;
         }

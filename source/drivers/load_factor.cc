@@ -18,6 +18,15 @@ namespace bilayer
     AssertThrow(std::isfinite(new_lambda),
                 ExcMessage("Study::set_load_factor: the load factor must be "
                            "a finite number"));
+    // (Refused before anything changes, on every process alike.)
+    for (const unsigned int s : Layout::subproblems)
+      AssertThrow(new_lambda == 1 || subproblems[s] == nullptr ||
+                    distribution.group_size(s) <= 1,
+                  ExcMessage("Study::set_load_factor: subproblem " +
+                             Layout::name(s) +
+                             " is shared by a group of processes (more than "
+                             "four processes): the load factor stays 1; run "
+                             "with at most four processes to scale the load"));
     lambda = new_lambda;
     for (const auto &load : volume_loads)
       if (load)

@@ -21,9 +21,10 @@ namespace bilayer
     const bool uniform = scene.mesh.refinement != Refinement::adaptive;
     // Cycles after this one, each halving the cells under uniform
     // refinement.
-    const unsigned int n_later = scene.mesh.n_cycles > record.cycle + 1 ?
-                                   scene.mesh.n_cycles - record.cycle - 1 :
-                                   0;
+    const unsigned int n_later =
+      !growth_run && scene.mesh.n_cycles > record.cycle + 1 ?
+        scene.mesh.n_cycles - record.cycle - 1 :
+        0;
     unresolved_tips.assign(tips.size(), "");
     tip_cell_sizes.assign(tips.size(), 0.);
     for (unsigned int t = 0; t < tips.size(); ++t)
@@ -96,8 +97,9 @@ namespace bilayer
         // hold the support. (The automatic radius: G is not reported at
         // this tip on this cycle, the run goes on; G is a by-product of
         // every scene with a crack, coarse meshes included.)
-        AssertThrow(!(scene.fracture.support_radius > 0 && record.cycle == 0 &&
-                      uniform && !last_resolved),
+        AssertThrow(!(scene.fracture.support_radius > 0 &&
+                      (record.cycle == 0 || growth_run) && uniform &&
+                      !last_resolved),
                     ExcMessage(m.str()));
         unresolved_tips[t] = m.str();
       }

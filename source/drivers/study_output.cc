@@ -83,9 +83,17 @@ namespace bilayer
           std::filesystem::create_directories(dir);
       });
     distribution.barrier();
-    const bool fields = scene.output.writes_fields(record.cycle,
-                                                   scene.mesh.n_cycles,
-                                                   record.accepted());
+    // A growth step is written where Output/Written steps asks (and where
+    // it fails its checks: the run ends there).
+    const bool step_written = !growth_run ||
+                              scene.output.writes_step(record.cycle) ||
+                              !record.accepted();
+    const bool fields =
+      step_written &&
+      (growth_run ? scene.output.write_vtu || scene.output.write_hdf5 :
+                    scene.output.writes_fields(record.cycle,
+                                               scene.mesh.n_cycles,
+                                               record.accepted()));
     if (fields)
       writing([&]() {
         write_solution(
@@ -99,7 +107,7 @@ namespace bilayer
     cycle_records.push_back(record);
     add_to_table(table, cycle_records);
     if (distribution.is_root())
-      writing([&]() { write_records(record.cycle, fields); });
+      writing([&]() { write_records(record.cycle, fields, step_written); });
     std::string error = distribution.first_error(writing.message);
     // The files just written are there (checked again at the next cycle
     // and before the results are published); a write that failed because
@@ -120,26 +128,66 @@ namespace bilayer
 
 
   void
-  Study::write_records(const unsigned int cycle, const bool fields)
+  Study::write_step_fields(const unsigned int step)
   {
-    const std::string &dir           = scene.output.directory;
-    const bool         interface_vtu = fields && scene.output.write_vtu;
-    if (scene.output.write_interface || interface_vtu)
+    const std::string &dir = scene.output.directory;
+    std::string        failure;
+    try
       {
-        const std::vector<InterfaceNode> nodes =
-          interface_nodes(coupling, w, mu, scene.solver.acceptance_tolerance);
-        if (scene.output.write_interface)
-          write_atomically(dir + "/interface-" + two_digits(cycle) + ".csv",
-                           [&](std::ostream &o) {
-                             write_interface_csv(
-                               o,
-                               nodes,
-                               release_notes(cycle_records.back().release,
-                                             scene.geometry.gmsh_file.empty()));
-                           });
-        if (interface_vtu)
-          write_interface_vtu(dir, cycle, nodes, outputs);
+        if (scene.output.write_vtu || scene.output.write_hdf5)
+          write_solution(
+            dir, step, subproblem_views(), w, scene.output, outputs);
+        if (distribution.is_root())
+          write_interface_files(step, scene.output.write_vtu, true);
       }
+    catch (const ExceptionBase &e)
+      {
+        failure = one_line_message(e);
+      }
+    catch (const std::exception &e)
+      {
+        failure = e.what();
+      }
+    const std::string error = distribution.first_error(failure);
+    if (!error.empty())
+      throw CollectiveError("writing the results of step " +
+                            std::to_string(step) + " failed: " + error);
+  }
+
+
+  void
+  Study::write_interface_files(const unsigned int cycle,
+                               const bool         interface_vtu,
+                               const bool         interface_csv)
+  {
+    const std::string &dir = scene.output.directory;
+    const bool         csv = interface_csv && scene.output.write_interface;
+    if (!csv && !interface_vtu)
+      return;
+    const std::vector<InterfaceNode> nodes =
+      interface_nodes(coupling, w, mu, scene.solver.acceptance_tolerance);
+    if (csv)
+      write_atomically(
+        dir + "/interface-" + two_digits(cycle) + ".csv", [&](std::ostream &o) {
+          write_interface_csv(o,
+                              nodes,
+                              release_notes(cycle_records.back().release,
+                                            scene.geometry.gmsh_file.empty()));
+        });
+    if (interface_vtu)
+      write_interface_vtu(dir, cycle, nodes, outputs);
+  }
+
+
+  void
+  Study::write_records(const unsigned int cycle,
+                       const bool         fields,
+                       const bool         interface_csv)
+  {
+    write_interface_files(cycle,
+                          fields && scene.output.write_vtu,
+                          interface_csv);
+    const std::string &dir = scene.output.directory;
     write_atomically(dir + "/summary.json", [&](std::ostream &o) {
       write_summary_json(o, scene.name, cycle_records);
     });

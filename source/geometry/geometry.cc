@@ -375,4 +375,36 @@ namespace bilayer
     keys.insert(plus.begin(), plus.end());
     return keys.size();
   }
+
+
+  std::vector<double>
+  Geometry::sigma_vertex_parameters() const
+  {
+    // The parameters of the vertices on Sigma of each mesh, sorted; then
+    // those of both (within the curve's tolerance).
+    std::array<std::vector<double>, 2> on_sigma;
+    for (const Subdomain d : {Subdomain::minus, Subdomain::plus})
+      {
+        auto &list = on_sigma[static_cast<unsigned int>(d)];
+        for (const auto &cell : triangulation(d).active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() &&
+                face->boundary_id() == BoundaryIds::sigma)
+              for (const unsigned int v : face->vertex_indices())
+                list.push_back(curve.parameter(face->vertex(v)));
+        std::sort(list.begin(), list.end());
+      }
+    const double        tol = curve.tolerance();
+    std::vector<double> both;
+    unsigned int        j = 0;
+    for (const double s : on_sigma[0])
+      {
+        while (j < on_sigma[1].size() && on_sigma[1][j] < s - tol)
+          ++j;
+        if (j < on_sigma[1].size() && std::abs(on_sigma[1][j] - s) <= tol &&
+            (both.empty() || s > both.back() + tol))
+          both.push_back(s);
+      }
+    return both;
+  }
 } // namespace bilayer

@@ -14,31 +14,43 @@ namespace bilayer
 {
   using namespace dealii;
 
+  std::string
+  json_number(const double value)
+  {
+    if (!std::isfinite(value))
+      return "null";
+    std::ostringstream s;
+    s << std::setprecision(17) << value;
+    return s.str();
+  }
+
+
+  std::string
+  json_text(const std::string &text)
+  {
+    std::string quoted = "\"";
+    for (const char c : text)
+      {
+        if (c == '"' || c == '\\')
+          quoted += '\\';
+        quoted += c;
+      }
+    return quoted + "\"";
+  }
+
+
   namespace
   {
-    /// A JSON number (null for NaN and infinities), with the 17
-    /// significant digits that identify the double.
     std::string
     json(const double value)
     {
-      if (!std::isfinite(value))
-        return "null";
-      std::ostringstream s;
-      s << std::setprecision(17) << value;
-      return s.str();
+      return json_number(value);
     }
 
     std::string
     json(const std::string &text)
     {
-      std::string quoted = "\"";
-      for (const char c : text)
-        {
-          if (c == '"' || c == '\\')
-            quoted += '\\';
-          quoted += c;
-        }
-      return quoted + "\"";
+      return json_text(text);
     }
 
     /// A value as JSON.
@@ -438,7 +450,8 @@ namespace bilayer
   void
   write_summary_json(std::ostream                   &out,
                      const std::string              &scene,
-                     const std::vector<CycleRecord> &records)
+                     const std::vector<CycleRecord> &records,
+                     const std::string              &growth)
   {
     out << "{\n  \"scene\": " << json(scene) << ",\n  \"build\": {"
         << "\"bilayer\": " << json(version())
@@ -497,7 +510,10 @@ namespace bilayer
           }
         out << "]}";
       }
-    out << "\n  ]\n}\n";
+    out << "\n  ]";
+    if (!growth.empty())
+      out << ",\n  \"growth\": " << growth;
+    out << "\n}\n";
   }
 
 

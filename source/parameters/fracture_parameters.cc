@@ -1,10 +1,12 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <bilayer/parameters/expressions.h>
 #include <bilayer/parameters/fracture_parameters.h>
 #include <bilayer/parameters/parameter_entries.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace bilayer
 {
@@ -60,6 +62,73 @@ namespace bilayer
       "depends on the length: a given Delta reports it at that reference "
       "length. A given Delta must not exceed the distance to the nearest "
       "obstacle of the tip (else NaN there).");
+    prm.declare_entry(
+      "Crack growth",
+      "none",
+      Patterns::Selection("none|sweep|quasi-static"),
+      "none: the mesh cycles of the study. quasi-static: Griffith growth "
+      "along Sigma on the meshes of the last cycle (Mesh/Refinement = global) "
+      "under the load factors of Loads/Load factor: at each load the tips "
+      "whose criterion (Mixed-mode law) reaches 1 advance by Growth "
+      "increment vertices of Sigma, irreversibly, and the state is solved "
+      "again, until every criterion is below 1; growth at a fixed load "
+      "beyond the first step is reported as unstable. sweep: the tips "
+      "advance step by step at the (single) load factor whatever their "
+      "criterion, until they stop: G, its mode split and the critical load "
+      "of every crack length. The subproblems are factorised once; each "
+      "step rebuilds only the interface (docs/fracture.md, section 8).");
+    prm.declare_entry("Toughness",
+                      "1",
+                      Patterns::Anything(),
+                      "G_c [energy / area]: the critical energy release "
+                      "rate, a number or an expression of x, y and s (the "
+                      "parameter along Sigma), > 0 on Sigma; the mode I "
+                      "toughness G_Ic of the mode-dependent laws.");
+    prm.declare_entry("Mode II toughness",
+                      "",
+                      Patterns::Anything(),
+                      "G_IIc [energy / area] of Mixed-mode law = power law "
+                      "or Benzeggagh-Kenane: a number or an expression of x, "
+                      "y and s, > 0 on Sigma; empty: equal to Toughness.");
+    prm.declare_entry(
+      "Mixed-mode law",
+      "mode independent",
+      Patterns::Selection("mode independent|power law|Benzeggagh-Kenane"),
+      "When a tip grows: mode independent G >= G_c; power law (G_I / "
+      "G_Ic)^a + (G_II / G_IIc)^a >= 1; Benzeggagh-Kenane G >= G_Ic + "
+      "(G_IIc - G_Ic) (G_II / G)^eta; a and eta = Mixed-mode exponent. The "
+      "mode-dependent laws need the mode split at the tip.");
+    prm.declare_entry("Mixed-mode exponent",
+                      "1",
+                      Patterns::Double(0),
+                      "The exponent a of the power law or eta of the "
+                      "Benzeggagh-Kenane law [-], > 0.");
+    prm.declare_entry("Growth increment",
+                      "1",
+                      Patterns::Integer(1, 1000000),
+                      "The vertices of Sigma (of both meshes) a growing tip "
+                      "advances per growth step, 1 to 1000000 [-].");
+    prm.declare_entry("Growing tips",
+                      "all",
+                      Patterns::Anything(),
+                      "all, or a ','-separated list of the numbers 1, 2, ... "
+                      "of the tips that may grow (the crack's tips at the "
+                      "start, ordered by s); the others stay.");
+    prm.declare_entry(
+      "Exact onsets",
+      "true",
+      Patterns::Bool(),
+      "true: under proportional loading (no temperature change or "
+      "eigenstrain, frictionless faces) G(lambda) = lambda^2 G(1), and the "
+      "critical load of each crack is inserted as a load step between the "
+      "load factors, so that growth starts at its exact onset; false, or a "
+      "preload: the load factors alone (the onsets are bracketed by them).");
+    prm.declare_entry("Maximum growth steps",
+                      "1000",
+                      Patterns::Integer(1, 1000000),
+                      "The most states (load and growth steps) of a "
+                      "growing crack, 1 to 1000000; the run fails when the "
+                      "crack still grows after that many.");
     prm.leave_subsection();
   }
 
@@ -79,6 +148,92 @@ namespace bilayer
                 ExcMessage("Fracture/Mode split length must be >= 0 (0: "
                            "automatic), got " +
                            prm.get("Mode split length")));
+    const std::string mode = prm.get("Crack growth");
+    growth                 = mode == "sweep"        ? CrackGrowth::sweep :
+                             mode == "quasi-static" ? CrackGrowth::quasi_static :
+                                                      CrackGrowth::none;
+    toughness              = prm.get("Toughness");
+    mode_ii_toughness      = prm.get("Mode II toughness");
+    const std::string law  = prm.get("Mixed-mode law");
+    mixed_mode_law         = law == "power law" ? MixedModeLaw::power_law :
+                             law == "Benzeggagh-Kenane" ?
+                                                  MixedModeLaw::benzeggagh_kenane :
+                                                  MixedModeLaw::mode_independent;
+    mixed_mode_exponent    = get_double(prm, "Fracture", "Mixed-mode exponent");
+    AssertThrow(std::isfinite(mixed_mode_exponent) && mixed_mode_exponent > 0,
+                ExcMessage("Fracture/Mixed-mode exponent must be > 0, got " +
+                           prm.get("Mixed-mode exponent")));
+    growth_increment     = prm.get_integer("Growth increment");
+    exact_onsets         = prm.get_bool("Exact onsets");
+    maximum_growth_steps = prm.get_integer("Maximum growth steps");
+    growing_tips.clear();
+    const std::string tips = Utilities::trim(prm.get("Growing tips"));
+    if (tips != "all")
+      for (const std::string &item : Utilities::split_string_list(tips, ','))
+        {
+          const std::string t = Utilities::trim(item);
+          const bool number = !t.empty() && t.find_first_not_of("0123456789") ==
+                                              std::string::npos;
+          AssertThrow(number && t.size() < 9 && std::stoul(t) >= 1,
+                      ExcMessage("Fracture/Growing tips must be all or a "
+                                 "','-separated list of tip numbers >= 1, "
+                                 "got " +
+                                 tips));
+          growing_tips.push_back(std::stoul(t));
+        }
+    toughness_function.reset();
+    mode_ii_function.reset();
+    if (growth != CrackGrowth::none)
+      {
+        toughness_function =
+          expressions::curve_function(toughness, {}, "Fracture/Toughness");
+        if (!Utilities::trim(mode_ii_toughness).empty())
+          mode_ii_function =
+            expressions::curve_function(mode_ii_toughness,
+                                        {},
+                                        "Fracture/Mode II toughness");
+      }
     prm.leave_subsection();
+  }
+
+
+  namespace
+  {
+    double
+    positive_toughness(const FunctionParser<3> &f,
+                       const Point<2>          &p,
+                       const double             s,
+                       const std::string       &entry)
+    {
+      const double g = f.value(Point<3>(p[0], p[1], s));
+      if (!(std::isfinite(g) && g > 0))
+        {
+          std::ostringstream msg;
+          msg << "Fracture/" << entry
+              << " must be finite and > 0 on Sigma, got " << g
+              << " at (x, y) = (" << p[0] << ", " << p[1] << ")";
+          AssertThrow(false, ExcMessage(msg.str()));
+        }
+      return g;
+    }
+  } // namespace
+
+
+  double
+  FractureParameters::toughness_at(const Point<2> &p, const double s) const
+  {
+    AssertThrow(toughness_function,
+                ExcMessage("Fracture/Toughness is read with Crack growth"));
+    return positive_toughness(*toughness_function, p, s, "Toughness");
+  }
+
+
+  double
+  FractureParameters::mode_ii_toughness_at(const Point<2> &p,
+                                           const double    s) const
+  {
+    if (!mode_ii_function)
+      return toughness_at(p, s);
+    return positive_toughness(*mode_ii_function, p, s, "Mode II toughness");
   }
 } // namespace bilayer

@@ -98,6 +98,54 @@ namespace bilayer
   }
 
 
+  std::vector<double>
+  parse_load_factors(const std::string &text)
+  {
+    const std::string refusal =
+      "Loads/Load factor must be a ','-separated list of numbers >= 0 or "
+      "start:step:end with 0 <= start <= end and step > 0 (at most 100000 "
+      "factors), got '" +
+      text + "'";
+    const auto number = [&](const std::string &item) {
+      const std::string t = Utilities::trim(item);
+      double            value;
+      std::size_t       end = 0;
+      try
+        {
+          value = std::stod(t, &end);
+        }
+      catch (const std::exception &)
+        {
+          end = 0;
+        }
+      AssertThrow(!t.empty() && end == t.size() && std::isfinite(value) &&
+                    value >= 0,
+                  ExcMessage(refusal));
+      return value;
+    };
+    std::vector<double> factors;
+    if (text.find(':') != std::string::npos)
+      {
+        const auto parts = Utilities::split_string_list(text, ':');
+        AssertThrow(parts.size() == 3, ExcMessage(refusal));
+        const double start = number(parts[0]), step = number(parts[1]),
+                     end = number(parts[2]);
+        AssertThrow(step > 0 && end >= start && (end - start) / step < 100000,
+                    ExcMessage(refusal));
+        const unsigned int n =
+          static_cast<unsigned int>(std::floor((end - start) / step + 1e-9));
+        for (unsigned int k = 0; k <= n; ++k)
+          factors.push_back(start + k * step);
+      }
+    else
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        factors.push_back(number(item));
+    AssertThrow(!factors.empty() && factors.size() <= 100000,
+                ExcMessage(refusal));
+    return factors;
+  }
+
+
   void
   LoadParameters::declare_parameters(ParameterHandler    &prm,
                                      const BoundaryParts &parts)
@@ -123,6 +171,16 @@ namespace bilayer
       "eigenstrain, in plane strain with eps_zz = 0 (isotropic: (1 + nu) "
       "alpha dT in the plane, sigma_zz = nu (sigma_xx + sigma_yy) - E alpha "
       "dT), in plane stress alpha dT. '0': none.");
+    prm.declare_entry(
+      "Load factor",
+      "1",
+      Patterns::Anything(),
+      "The load factors lambda [-] of Fracture/Crack growth: a ','-separated "
+      "list of numbers >= 0 (increasing with quasi-static growth; one with "
+      "sweep), or start:step:end (step > 0). lambda multiplies the "
+      "tractions, body forces and prescribed displacements; the temperature "
+      "change and the eigenstrains stay as given (a preload). Without crack "
+      "growth only 1.");
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
@@ -197,7 +255,8 @@ namespace bilayer
     };
 
     prm.enter_subsection("Loads");
-    constants = prm.get("Constants");
+    load_factors = parse_load_factors(prm.get("Load factor"));
+    constants    = prm.get("Constants");
     AssertThrow(constants.size() <= expressions::max_length,
                 ExcMessage("Loads/Constants: longer than " +
                            std::to_string(expressions::max_length) +

@@ -4,6 +4,8 @@
 #include <bilayer/parameters/output_parameters.h>
 #include <bilayer/parameters/parameter_entries.h>
 
+#include <cmath>
+
 namespace bilayer
 {
   using namespace dealii;
@@ -67,6 +69,21 @@ namespace bilayer
                       "full: progress, per-cycle report, table and timings; "
                       "checks: only the pass/fail lines of the acceptance "
                       "checks (for regression tests).");
+    prm.declare_entry(
+      "Written steps",
+      "every 1",
+      Patterns::Anything(),
+      "The steps of Fracture/Crack growth whose solution fields (Write VTU, "
+      "Write HDF5) and interface CSV are written: every N (steps 0, N, 2N, "
+      "..., and the last), last (the last step only) or none; growth.csv, "
+      "the table and summary.json hold every step.");
+    prm.declare_entry(
+      "Displacement points",
+      "",
+      Patterns::Anything(),
+      "Points 'x1, y1; x2, y2; ...' [length] off Sigma where growth.csv "
+      "reports the displacement of layer 1 at every step of Fracture/Crack "
+      "growth (a load-displacement curve); empty: none.");
     prm.leave_subsection();
   }
 
@@ -93,6 +110,62 @@ namespace bilayer
     progress_interval        = prm.get_integer("Progress interval");
     terminal = prm.get("Terminal output") == "checks" ? TerminalOutput::checks :
                                                         TerminalOutput::full;
+    parse_growth_outputs(prm.get("Written steps"),
+                         prm.get("Displacement points"));
     prm.leave_subsection();
+  }
+
+
+  void
+  OutputParameters::parse_growth_outputs(const std::string &steps,
+                                         const std::string &points)
+  {
+    const std::string s = Utilities::trim(steps);
+    written_steps_last  = s != "none";
+    written_steps_every = 0;
+    if (s.rfind("every", 0) == 0)
+      {
+        const std::string n = Utilities::trim(s.substr(5));
+        AssertThrow(!n.empty() && n.size() < 9 &&
+                      n.find_first_not_of("0123456789") == std::string::npos &&
+                      std::stoul(n) >= 1,
+                    ExcMessage("Output/Written steps must be 'every N' (N >= "
+                               "1), 'last' or 'none', got '" +
+                               steps + "'"));
+        written_steps_every = std::stoul(n);
+      }
+    else
+      AssertThrow(s == "last" || s == "none",
+                  ExcMessage("Output/Written steps must be 'every N' (N >= "
+                             "1), 'last' or 'none', got '" +
+                             steps + "'"));
+    displacement_points.clear();
+    for (const std::string &item : Utilities::split_string_list(points, ';'))
+      {
+        if (Utilities::trim(item).empty())
+          continue;
+        const auto xy   = Utilities::split_string_list(item, ',');
+        bool       ok   = xy.size() == 2;
+        double     c[2] = {0, 0};
+        for (unsigned int d = 0; ok && d < 2; ++d)
+          {
+            const std::string t   = Utilities::trim(xy[d]);
+            std::size_t       end = 0;
+            try
+              {
+                c[d] = std::stod(t, &end);
+              }
+            catch (const std::exception &)
+              {
+                end = 0;
+              }
+            ok = !t.empty() && end == t.size() && std::isfinite(c[d]);
+          }
+        AssertThrow(ok,
+                    ExcMessage("Output/Displacement points must be 'x1, y1; "
+                               "x2, y2; ...' (finite numbers), got '" +
+                               points + "'"));
+        displacement_points.emplace_back(c[0], c[1]);
+      }
   }
 } // namespace bilayer

@@ -63,5 +63,41 @@ namespace bilayer
             parts.traction_entry(i) + " must be '0; 0': " +
             (parts.gmsh ? parts.names[i] : "the " + parts.names[i] + " side") +
             " is clamped (Geometry/Clamped sides)"));
+    check_growth_relations(scene);
+  }
+
+
+  void
+  check_growth_relations(const Scene &scene)
+  {
+    const auto &fracture = scene.fracture;
+    const auto &factors  = scene.loads.load_factors;
+    const bool  growth   = fracture.growth != CrackGrowth::none;
+    AssertThrow(growth || (factors.size() == 1 && factors[0] == 1),
+                ExcMessage("Loads/Load factor must be 1 without "
+                           "Fracture/Crack growth (it sets the loads of the "
+                           "growth steps)"));
+    if (!growth)
+      return;
+    AssertThrow(fracture.energy_release_rate,
+                ExcMessage("Fracture/Crack growth needs Fracture/Energy "
+                           "release rate = true"));
+    AssertThrow(!scene.contact.frictional(),
+                ExcMessage("Fracture/Crack growth needs Contact/Friction = "
+                           "none: with friction the growth depends on the "
+                           "path of the slip, which is not tracked"));
+    AssertThrow(scene.mesh.refinement == Refinement::global,
+                ExcMessage("Fracture/Crack growth needs Mesh/Refinement = "
+                           "global: the tips move along Sigma on the meshes "
+                           "of the last cycle"));
+    AssertThrow(fracture.growth != CrackGrowth::sweep || factors.size() == 1,
+                ExcMessage("Fracture/Crack growth = sweep needs one Loads/Load "
+                           "factor (the load of every crack length)"));
+    for (unsigned int k = 1; k < factors.size(); ++k)
+      AssertThrow(factors[k] > factors[k - 1],
+                  ExcMessage("Loads/Load factor must increase with "
+                             "Fracture/Crack growth = quasi-static, got " +
+                             std::to_string(factors[k - 1]) + " then " +
+                             std::to_string(factors[k])));
   }
 } // namespace bilayer

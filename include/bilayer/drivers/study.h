@@ -10,6 +10,7 @@
 #include <bilayer/geometry/geometry.h>
 #include <bilayer/interface/interface.h>
 #include <bilayer/output/cycle_record.h>
+#include <bilayer/output/growth_record.h>
 #include <bilayer/output/output.h>
 #include <bilayer/parameters/parameters.h>
 #include <bilayer/postprocess/fracture.h>
@@ -110,6 +111,29 @@ namespace bilayer
     bool
     proportional_loading() const;
 
+    /**
+     * The growth driver (Fracture/Crack growth = quasi-static or sweep,
+     * docs/fracture.md section 8): on the meshes of the last cycle, with
+     * the subproblems factorised once, the load factors of Loads/Load
+     * factor (and, under proportional loading with Fracture/Exact onsets,
+     * the critical load of each crack between them); at each load the tips
+     * whose criterion reaches 1 (all free tips of a sweep) advance by
+     * Fracture/Growth increment vertices of Sigma and the state is solved
+     * again. Each step is a record (numbered 0, 1, ...) and a GrowthStep;
+     * growth.csv and summary.json are written after every step. True if
+     * every step converged and passed its checks; stops at the first that
+     * does not.
+     */
+    bool
+    run_growth();
+
+    /// The steps of run_growth() so far.
+    const std::vector<GrowthStep> &
+    growth() const
+    {
+      return growth_steps;
+    }
+
     const std::vector<CycleRecord> &
     records() const
     {
@@ -173,6 +197,71 @@ namespace bilayer
 
   private:
     std::function<void()> directory_check;
+
+    // The growth driver (growth.cc, growth_output.cc).
+
+    /// A tip followed through the growth: its number (the initial tips
+    /// ordered by s, from 1), where it is, the direction of growth, whether
+    /// it still exists and why it can advance no further (empty: it can).
+    struct FollowedTip
+    {
+      unsigned int number = 0;
+      double       s = 0, sign = 1;
+      bool         present = true;
+      std::string  stopped;
+    };
+    bool                      growth_run = false, onsets_exact = false;
+    std::vector<GrowthStep>   growth_steps;
+    std::vector<FollowedTip>  followed;
+    std::vector<double>       sigma_vertices;
+    std::vector<unsigned int> point_subproblems;
+    std::string               growth_stop;
+
+    /// The followed tips, Sigma's vertices and the points' subproblems.
+    void
+    start_growth();
+    bool
+    tip_may_grow(const unsigned int number) const;
+    bool
+    growth_stopped() const;
+    /// One step at the load factor @p lambda on the present crack.
+    bool
+    solve_growth_step(CycleRecord         &record,
+                      const double         lambda,
+                      const std::string   &kind,
+                      const dealii::Timer &total);
+    GrowthStep
+    growth_step(const CycleRecord &record,
+                const double       lambda,
+                const std::string &kind);
+    /// Growth at the load @p lambda until every criterion is below 1.
+    bool
+    grow_at_load(const double lambda, const dealii::Timer &total);
+    /// Advance the followed tips @p growing; false if none moved.
+    bool
+    advance_tips(const std::vector<unsigned int> &growing);
+    std::string
+    support_refusal(const CrackSet &crack) const;
+    void
+    measure_loading(GrowthStep &step) const;
+    unsigned int
+    point_subproblem(const dealii::Point<2> &p) const;
+    std::string
+    growth_mode() const;
+    void
+    write_growth();
+    void
+    print_growth_step(const GrowthStep &step) const;
+    bool
+    finish_growth(const bool passed);
+    /// The solution fields and interface files of step @p step (the
+    /// present solution).
+    void
+    write_step_fields(const unsigned int step);
+    void
+    write_interface_files(const unsigned int cycle,
+                          const bool         interface_vtu,
+                          const bool         interface_csv);
     // The steps of run_cycle(), in this order.
 
     /// The meshes of the cycle (created or refined) and their sizes.
@@ -241,7 +330,9 @@ namespace bilayer
     /// interface-NN.vtu), and summary.json, table.txt, table.tex and
     /// table.csv of all cycles so far (first process).
     void
-    write_records(const unsigned int cycle, const bool fields);
+    write_records(const unsigned int cycle,
+                  const bool         fields,
+                  const bool         interface_csv);
     void
     print_report(const CycleRecord &record) const;
 

@@ -131,6 +131,11 @@ namespace bilayer
     void
     set_crack(const CrackSet &crack);
 
+    /// The parameters s of the vertices of Sigma that both meshes have,
+    /// increasing: where a crack tip may stand (Fracture/Crack growth).
+    std::vector<double>
+    sigma_vertex_parameters() const;
+
     /// P of Table 1: vertices on Sigma.
     unsigned int
     n_sigma_vertices() const;

@@ -191,11 +191,21 @@ namespace bilayer
   }
 
   /// summary.json: {"scene": ..., "build": {"bilayer": version, "git_commit",
-  /// "deal_ii", "blas"} (build_info.h), "cycles": [one object per record]}.
+  /// "deal_ii", "blas"} (build_info.h), "cycles": [one object per record]},
+  /// and "growth": @p growth (a JSON value) where not empty.
   void
   write_summary_json(std::ostream                   &out,
                      const std::string              &scene,
-                     const std::vector<CycleRecord> &records);
+                     const std::vector<CycleRecord> &records,
+                     const std::string              &growth = "");
+
+  /// A JSON number: 17 significant digits, null for NaN and infinities.
+  std::string
+  json_number(const double value);
+
+  /// A JSON string of @p text (quotes and backslashes escaped).
+  std::string
+  json_text(const std::string &text);
 
   /// table.csv: where the crack tips are ('#' lines, tip_notes(); none
   /// without tips), the header and one row per record.

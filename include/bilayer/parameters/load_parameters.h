@@ -42,6 +42,11 @@ namespace bilayer
     std::array<std::string, 2> eigenstrain = {{"0; 0; 0", "0; 0; 0"}};
     /// Loads/Temperature change, dT(x, y) [K] (every layer)
     std::string temperature_change = "0";
+    /// Loads/Load factor: the factors lambda of the proportional loads
+    /// (tractions, body forces, prescribed displacements) in order, the
+    /// temperature change and the eigenstrains fixed (Fracture/Crack
+    /// growth).
+    std::vector<double> load_factors = {1.};
 
     /// The evaluated constants (material constants included).
     std::map<std::string, double> constant_values;
@@ -90,6 +95,10 @@ namespace bilayer
     bool
     traction_is_zero(const Layer layer, const unsigned int part) const;
   };
+  /// The factors of Loads/Load factor @p text: "a, b, c" or
+  /// "start:step:end"; refuses anything else in one line.
+  std::vector<double>
+  parse_load_factors(const std::string &text);
 } // namespace bilayer
 
 #endif

@@ -2,8 +2,10 @@
 #define bilayer_output_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 
 #include <string>
+#include <vector>
 
 /**
  * The subsection Output: the output directory, the files written and the
@@ -44,6 +46,22 @@ namespace bilayer
     Compression    compression       = Compression::best_speed;
     unsigned int   progress_interval = 100;
     TerminalOutput terminal          = TerminalOutput::full;
+    /// Output/Written steps of crack growth: the solution fields (VTU,
+    /// HDF5) and interface CSV of every this many steps (0: none), and of
+    /// the last step if @p last_step.
+    unsigned int written_steps_every = 1;
+    bool         written_steps_last  = true;
+    /// Output/Displacement points: where growth.csv reports the
+    /// displacement of layer 1.
+    std::vector<dealii::Point<2>> displacement_points;
+
+    /// Whether the fields of growth step @p step are written (the last
+    /// step is written at the end of the run where asked).
+    bool
+    writes_step(const unsigned int step) const
+    {
+      return written_steps_every > 0 && step % written_steps_every == 0;
+    }
 
     /// Whether the solution fields of @p cycle of @p n_cycles are written
     /// (with the last cycle, also a cycle that fails its checks: the run
@@ -70,6 +88,11 @@ namespace bilayer
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+  private:
+    /// Output/Written steps and Output/Displacement points.
+    void
+    parse_growth_outputs(const std::string &steps, const std::string &points);
   };
 } // namespace bilayer
 

@@ -15,6 +15,12 @@ namespace bilayer
   void
   check_scene_relations(const Scene &scene, const BoundaryParts &parts);
 
+  /// The entries of Fracture/Crack growth against the rest of the scene
+  /// (Loads/Load factor, friction, refinement); part of
+  /// check_scene_relations().
+  void
+  check_growth_relations(const Scene &scene);
+
   /**
    * The loads of a rectangle scene sampled where they act (1001 points
    * along each side: the tractions on their sides, the prescribed

@@ -1,0 +1,501 @@
+// The growth driver (Fracture/Crack growth, docs/fracture.md section 8):
+// quasi-static Griffith growth of the crack along Sigma on one mesh, and
+// the sweep of crack lengths. The subproblems are assembled and factorised
+// once; each step sets the load factor and the crack, rebuilds the
+// interface and solves on Sigma from the multipliers of the step before.
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <bilayer/drivers/resources.h>
+#include <bilayer/drivers/study.h>
+#include <bilayer/postprocess/growth_law.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// @p crack with the piece end at @p from moved to @p to; pieces that
+    /// then touch or overlap are merged.
+    CrackSet
+    moved_end(const CrackSet &crack,
+              const double    from,
+              const double    to,
+              const double    tolerance)
+    {
+      std::vector<CrackSet::Piece> pieces = crack.pieces();
+      for (auto &piece : pieces)
+        {
+          if (std::abs(piece.start - from) <= tolerance)
+            piece.start = to;
+          else if (std::abs(piece.end - from) <= tolerance)
+            piece.end = to;
+        }
+      std::sort(pieces.begin(), pieces.end(), [](const auto &a, const auto &b) {
+        return a.start < b.start;
+      });
+      std::vector<CrackSet::Piece> merged;
+      for (const auto &piece : pieces)
+        if (!merged.empty() && piece.start <= merged.back().end + tolerance)
+          merged.back().end = std::max(merged.back().end, piece.end);
+        else
+          merged.push_back(piece);
+      return CrackSet(merged, tolerance);
+    }
+
+    /// The length of the crack piece that ends at @p s (0 if none).
+    double
+    piece_length(const CrackSet &crack, const double s, const double tolerance)
+    {
+      for (const auto &piece : crack.pieces())
+        if (std::abs(piece.start - s) <= tolerance ||
+            std::abs(piece.end - s) <= tolerance)
+          return piece.end - piece.start;
+      return 0;
+    }
+
+    double
+    total_length(const CrackSet &crack)
+    {
+      double sum = 0;
+      for (const auto &piece : crack.pieces())
+        sum += piece.end - piece.start;
+      return sum;
+    }
+  } // namespace
+
+
+  bool
+  Study::run_growth()
+  {
+    AssertThrow(cycle_records.empty(),
+                ExcMessage("Study::run_growth: a study runs one driver"));
+    const FractureParameters &fracture = scene.fracture;
+    AssertThrow(fracture.growth != CrackGrowth::none,
+                ExcMessage("Study::run_growth needs Fracture/Crack growth"));
+    growth_run       = true;
+    const bool sweep = fracture.growth == CrackGrowth::sweep;
+
+    // State 0: the meshes of the last cycle, the subproblems factorised
+    // once for all steps.
+    Timer       total;
+    CycleRecord first;
+    first.cycle = scene.mesh.n_cycles - 1;
+    build_meshes(first);
+    first.cycle = 0;
+    check_memory(first);
+    set_up_subproblems();
+    count_subproblems(first);
+    onsets_exact = !sweep && fracture.exact_onsets && proportional_loading();
+    start_growth();
+
+    const std::vector<double> &factors = scene.loads.load_factors;
+    double                     lambda  = factors[0];
+    if (!solve_growth_step(first, lambda, "load", total))
+      return finish_growth(false);
+    for (unsigned int j = 0; j < factors.size(); ++j)
+      {
+        if (j > 0)
+          {
+            // Under proportional loading, the critical loads of the crack
+            // that lie before the next load factor are steps of their own
+            // (each followed by the growth it starts).
+            while (onsets_exact)
+              {
+                double onset = std::numeric_limits<double>::infinity();
+                for (const GrowthTip &tip : growth_steps.back().tips)
+                  if (tip.present && tip_may_grow(tip.number) &&
+                      followed[tip.number - 1].stopped.empty())
+                    onset = std::min(onset, tip.critical_load);
+                if (!(onset > lambda * (1 + 1e-12) &&
+                      onset < factors[j] * (1 - 1e-12)))
+                  break;
+                lambda = onset;
+                CycleRecord record;
+                if (!solve_growth_step(record, lambda, "onset", total) ||
+                    !grow_at_load(lambda, total))
+                  return finish_growth(false);
+                if (growth_stopped())
+                  break;
+              }
+            lambda = factors[j];
+            CycleRecord record;
+            if (!solve_growth_step(record, lambda, "load", total))
+              return finish_growth(false);
+          }
+        if (!grow_at_load(lambda, total))
+          return finish_growth(false);
+      }
+    return finish_growth(true);
+  }
+
+
+  void
+  Study::start_growth()
+  {
+    growth_steps.clear();
+    followed.clear();
+    sigma_vertices   = domain.sigma_vertex_parameters();
+    const double tol = domain.interface_curve().tolerance();
+    AssertThrow(!tips.empty(),
+                ExcMessage("Fracture/Crack growth needs a crack with a tip "
+                           "inside Omega (Geometry/Crack interval on Sigma, or "
+                           "the crack groups of the Gmsh file)"));
+    for (unsigned int t = 0; t < tips.size(); ++t)
+      {
+        FollowedTip tip;
+        tip.number           = t + 1;
+        tip.s                = tips[t].s;
+        tip.sign             = tips[t].sign;
+        const bool on_vertex = std::any_of(sigma_vertices.begin(),
+                                           sigma_vertices.end(),
+                                           [&](const double v) {
+                                             return std::abs(v - tip.s) <= tol;
+                                           });
+        AssertThrow(on_vertex,
+                    ExcMessage(
+                      "Fracture/Crack growth: the crack tip at " +
+                      tip_position(tips[t], scene.geometry.gmsh_file.empty()) +
+                      " is not a vertex of Sigma on both meshes "
+                      "(non-matching traces): give both meshes a "
+                      "vertex there"));
+        followed.push_back(tip);
+      }
+    point_subproblems.clear();
+    for (const Point<2> &p : scene.output.displacement_points)
+      point_subproblems.push_back(point_subproblem(p));
+    for (const unsigned int n : scene.fracture.growing_tips)
+      AssertThrow(n <= tips.size(),
+                  ExcMessage("Fracture/Growing tips: tip " + std::to_string(n) +
+                             " does not exist, the crack has " +
+                             std::to_string(tips.size()) + " tip(s)"));
+  }
+
+
+  bool
+  Study::tip_may_grow(const unsigned int number) const
+  {
+    const auto &list = scene.fracture.growing_tips;
+    return list.empty() ||
+           std::find(list.begin(), list.end(), number) != list.end();
+  }
+
+
+  bool
+  Study::growth_stopped() const
+  {
+    for (const FollowedTip &tip : followed)
+      if (tip.present && tip.stopped.empty() && tip_may_grow(tip.number))
+        return false;
+    return true;
+  }
+
+
+  bool
+  Study::solve_growth_step(CycleRecord       &record,
+                           const double       lambda,
+                           const std::string &kind,
+                           const Timer       &total)
+  {
+    const unsigned int step = growth_steps.size();
+    if (step >= scene.fracture.maximum_growth_steps)
+      throw RunFailure(step,
+                       "the crack still grows after Fracture/Maximum growth "
+                       "steps = " +
+                         std::to_string(scene.fracture.maximum_growth_steps) +
+                         " steps");
+    Timer timer;
+    set_load_factor(lambda);
+    MultiplierSpace::Functions previous;
+    const bool                 warm = step > 0 && mu.size() > 0;
+    if (warm)
+      previous = coupling.space().functions(mu);
+    record.cycle = step;
+    if (step > 0)
+      {
+        const CycleRecord &front   = cycle_records.front();
+        record.minus               = front.minus;
+        record.plus                = front.plus;
+        record.P                   = front.P;
+        record.M                   = front.M;
+        record.memory_estimate_mib = front.memory_estimate_mib;
+        for (const auto &sub : subproblems)
+          if (sub)
+            record.dofs += sub->n_dofs();
+        tips_found = false;
+        update_tips(record);
+      }
+    const bool accepted =
+      solve_state(record, warm ? &previous : nullptr, step > 0 ? timer : total)
+        .accepted();
+    growth_steps.push_back(growth_step(cycle_records.back(), lambda, kind));
+    write_growth();
+    print_growth_step(growth_steps.back());
+    return accepted;
+  }
+
+
+  GrowthStep
+  Study::growth_step(const CycleRecord &record,
+                     const double       lambda,
+                     const std::string &kind)
+  {
+    const FractureParameters &fracture = scene.fracture;
+    const double              tol      = domain.interface_curve().tolerance();
+    const CrackSet           &crack    = domain.interface_curve().crack();
+    GrowthStep                step;
+    step.step         = record.cycle;
+    step.load_factor  = lambda;
+    step.kind         = kind;
+    step.energy       = record.energy;
+    step.crack_length = total_length(crack);
+    measure_loading(step);
+    for (FollowedTip &followed_tip : followed)
+      {
+        GrowthTip tip;
+        tip.number = followed_tip.number;
+        if (!followed_tip.present)
+          {
+            step.tips.push_back(tip);
+            continue;
+          }
+        // The tip of this record at the followed position (none: the piece
+        // merged with another, or reached an end of Sigma).
+        const EnergyReleaseRate *g = nullptr;
+        for (const EnergyReleaseRate &candidate : record.release)
+          if (std::abs(candidate.tip.s - followed_tip.s) <= 10 * tol &&
+              candidate.tip.sign == followed_tip.sign)
+            g = &candidate;
+        if (!g)
+          {
+            followed_tip.present = false;
+            step.tips.push_back(tip);
+            continue;
+          }
+        tip.present      = true;
+        tip.s            = g->tip.s;
+        tip.point        = g->tip.point;
+        tip.G            = g->G;
+        tip.G_I          = g->G_I;
+        tip.G_II         = g->G_II;
+        tip.piece_length = piece_length(crack, tip.s, 10 * tol);
+        if (!g->tip.defined())
+          followed_tip.stopped = "at a corner of Sigma";
+        else if (!std::isfinite(g->G))
+          followed_tip.stopped = "G not resolved: " + g->unresolved;
+        else
+          {
+            const GrowthCriterion f =
+              growth_criterion(fracture.mixed_mode_law,
+                               fracture.mixed_mode_exponent,
+                               *g,
+                               fracture.toughness_at(tip.point, tip.s),
+                               fracture.mode_ii_toughness_at(tip.point, tip.s));
+            if (!f.undefined.empty() && tip_may_grow(tip.number))
+              throw RunFailure(step.step,
+                               "Fracture/Mixed-mode law: tip " +
+                                 std::to_string(tip.number) + ": " +
+                                 f.undefined);
+            tip.criterion = f.value;
+            if (onsets_exact || fracture.growth == CrackGrowth::sweep)
+              if (proportional_loading())
+                tip.critical_load = critical_load_factor(f, lambda);
+          }
+        tip.status =
+          !tip_may_grow(tip.number)     ? "held" :
+          !followed_tip.stopped.empty() ? "stopped: " + followed_tip.stopped :
+          tip.criterion >= 1 - growth_criterion_tolerance ? "critical" :
+                                                            "below critical";
+        step.tips.push_back(tip);
+      }
+    return step;
+  }
+
+
+  bool
+  Study::grow_at_load(const double lambda, const Timer &total)
+  {
+    const bool sweep = scene.fracture.growth == CrackGrowth::sweep;
+    bool       first = true;
+    while (true)
+      {
+        // The tips that grow now: every free tip of a sweep, the critical
+        // ones of quasi-static growth.
+        std::vector<unsigned int> growing;
+        for (const GrowthTip &tip : growth_steps.back().tips)
+          {
+            const FollowedTip &f = followed[tip.number - 1];
+            if (tip.present && f.stopped.empty() && tip_may_grow(tip.number) &&
+                (sweep || tip.criterion >= 1 - growth_criterion_tolerance))
+              growing.push_back(tip.number - 1);
+          }
+        if (growing.empty() || !advance_tips(growing))
+          return true;
+        // Growth at this load that goes on after its first step.
+        if (!sweep && !first)
+          growth_steps.back().unstable = true;
+        first = false;
+        CycleRecord record;
+        if (!solve_growth_step(record, lambda, "growth", total))
+          return false;
+      }
+  }
+
+
+  bool
+  Study::advance_tips(const std::vector<unsigned int> &growing)
+  {
+    const InterfaceCurve &curve = domain.interface_curve();
+    const double          tol   = curve.tolerance();
+    CrackSet              crack = curve.crack();
+    bool                  moved = false;
+    for (const unsigned int i : growing)
+      {
+        FollowedTip &tip   = followed[i];
+        auto         at    = std::lower_bound(sigma_vertices.begin(),
+                                   sigma_vertices.end(),
+                                   tip.s - tol);
+        int          index = at - sigma_vertices.begin();
+        double       s     = tip.s;
+        std::string  stop;
+        for (unsigned int k = 0; k < scene.fracture.growth_increment; ++k)
+          {
+            const int next = index + (tip.sign > 0 ? 1 : -1);
+            if (next < 0 || next >= static_cast<int>(sigma_vertices.size()))
+              {
+                stop = "at the end of Sigma";
+                break;
+              }
+            const double   candidate_s = sigma_vertices[next];
+            const CrackSet candidate   = moved_end(crack, s, candidate_s, tol);
+            std::string    refusal     = curve.crack_refusal(candidate);
+            if (refusal.empty())
+              refusal = support_refusal(candidate);
+            if (!refusal.empty())
+              {
+                stop = refusal;
+                break;
+              }
+            crack = candidate;
+            s     = candidate_s;
+            index = next;
+            Tensor<1, 2> before, after;
+            if (crack.contains(s) || crack.mouth(s))
+              {
+                stop = crack.mouth(s) ? "reached the end of Sigma" :
+                                        "merged with the next crack piece";
+                break;
+              }
+            if (curve.corner(s, before, after))
+              {
+                stop = "at a corner of Sigma";
+                break;
+              }
+          }
+        if (s != tip.s)
+          {
+            moved = true;
+            tip.s = s;
+          }
+        if (!stop.empty())
+          tip.stopped = stop;
+      }
+    if (moved)
+      domain.set_crack(crack);
+    return moved;
+  }
+
+
+  std::string
+  Study::support_refusal(const CrackSet &crack) const
+  {
+    // A given support radius must stay below the free distance of every
+    // tip of the new crack (crack_tips() refuses it otherwise).
+    if (!(scene.fracture.support_radius > 0))
+      return "";
+    InterfaceCurve curve = domain.interface_curve();
+    curve.set_crack(crack);
+    try
+      {
+        crack_tips(curve,
+                   {{&domain.triangulation(Subdomain::minus),
+                     &domain.triangulation(Subdomain::plus)}},
+                   scene.fracture.support_radius);
+      }
+    catch (const ExceptionBase &e)
+      {
+        return "Fracture/Support radius no longer fits: " + one_line_message(e);
+      }
+    return "";
+  }
+
+
+  void
+  Study::measure_loading(GrowthStep &step) const
+  {
+    // The work of the unit proportional loads, and layer 1's displacement
+    // at the named points, each from the owner of its subproblem.
+    PerSubproblem<double> work;
+    work.fill(0.);
+    for (const unsigned int s : Layout::subproblems)
+      if (subproblems[s] && distribution.owns(s))
+        work[s] = subproblems[s]->load_work(w[s]);
+    distribution.share(work);
+    step.conjugate_displacement = 0;
+    for (const double value : work)
+      step.conjugate_displacement += value;
+    const auto &points = scene.output.displacement_points;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const unsigned int    s = point_subproblems[i];
+        Vector<double>        u(2);
+        PerSubproblem<double> ux, uy;
+        ux.fill(0.);
+        uy.fill(0.);
+        if (distribution.owns(s))
+          {
+            VectorTools::point_value(subproblems[s]->mapping(),
+                                     subproblems[s]->dof_handler(),
+                                     w[s],
+                                     points[i],
+                                     u);
+            ux[s] = u[0];
+            uy[s] = u[1];
+          }
+        distribution.share(ux);
+        distribution.share(uy);
+        step.point_displacements.push_back(Tensor<1, 2>({ux[s], uy[s]}));
+      }
+  }
+
+
+  unsigned int
+  Study::point_subproblem(const Point<2> &p) const
+  {
+    // Omega- first: a point on Sigma is read on the minus side.
+    for (const Subdomain d : {Subdomain::minus, Subdomain::plus})
+      {
+        const unsigned int           s = Layout::index(Layer::first, d);
+        const GridTools::Cache<2, 2> cache(domain.triangulation(d),
+                                           subproblems[s]->mapping());
+        const auto found = GridTools::find_active_cell_around_point(cache, p);
+        if (found.first.state() == IteratorState::valid)
+          return s;
+      }
+    std::ostringstream msg;
+    msg << "Output/Displacement points: (" << p[0] << ", " << p[1]
+        << ") lies outside the domain";
+    AssertThrow(false, ExcMessage(msg.str()));
+    return 0;
+  }
+} // namespace bilayer

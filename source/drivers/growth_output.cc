@@ -1,0 +1,115 @@
+// The outputs of the growth driver: growth.csv and the "growth" object of
+// summary.json after every step, the terminal's line per step and the end
+// of the run.
+
+#include <deal.II/base/utilities.h>
+
+#include <bilayer/drivers/study.h>
+#include <bilayer/output/output.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  std::string
+  Study::growth_mode() const
+  {
+    return scene.fracture.growth == CrackGrowth::sweep ? "sweep" :
+                                                         "quasi-static";
+  }
+
+
+  void
+  Study::write_growth()
+  {
+    const std::string &dir = scene.output.directory;
+    std::string        failure;
+    if (distribution.is_root())
+      try
+        {
+          write_atomically(dir + "/growth.csv", [&](std::ostream &o) {
+            write_growth_csv(o,
+                             growth_steps,
+                             followed.size(),
+                             scene.output.displacement_points.size());
+          });
+          const std::string growth = growth_json(growth_mode(),
+                                                 growth_steps,
+                                                 unstable_runs(growth_steps),
+                                                 growth_stop);
+          write_atomically(dir + "/summary.json", [&](std::ostream &o) {
+            write_summary_json(o, scene.name, cycle_records, growth);
+          });
+        }
+      catch (const ExceptionBase &e)
+        {
+          failure = one_line_message(e);
+        }
+      catch (const std::exception &e)
+        {
+          failure = e.what();
+        }
+    const std::string error = distribution.first_error(failure);
+    if (!error.empty())
+      throw CollectiveError("writing growth.csv failed: " + error);
+  }
+
+
+  void
+  Study::print_growth_step(const GrowthStep &step) const
+  {
+    pcout << "growth step " << step.step
+          << ": lambda = " << std::setprecision(8) << step.load_factor << " ("
+          << step.kind << "), crack length " << std::setprecision(6)
+          << step.crack_length;
+    for (const GrowthTip &tip : step.tips)
+      if (tip.present)
+        {
+          pcout << "; tip " << tip.number << " s = " << std::setprecision(6)
+                << tip.s << " G = " << std::scientific << std::setprecision(4)
+                << tip.G;
+          if (std::isfinite(tip.criterion))
+            pcout << " f = " << std::defaultfloat << std::setprecision(4)
+                  << tip.criterion;
+          pcout << std::defaultfloat << " [" << tip.status << "]";
+        }
+    pcout << std::endl;
+  }
+
+
+  bool
+  Study::finish_growth(const bool passed)
+  {
+    if (growth_stop.empty())
+      {
+        bool every_tip_stopped = true;
+        for (const FollowedTip &tip : followed)
+          if (tip.present && tip.stopped.empty() && tip_may_grow(tip.number))
+            every_tip_stopped = false;
+        growth_stop = !passed           ? "a step failed its checks" :
+                      every_tip_stopped ? "every growing tip stopped" :
+                                          "the load factors are done";
+      }
+    // The last step's fields where Output/Written steps = last (or every N
+    // and the last is not a multiple of N).
+    const unsigned int last =
+      growth_steps.empty() ? 0 : growth_steps.size() - 1;
+    if (passed && scene.output.written_steps_last &&
+        !scene.output.writes_step(last) && !growth_steps.empty())
+      write_step_fields(last);
+    write_growth();
+    const std::vector<UnstableRun> runs = unstable_runs(growth_steps);
+    pcout << "growth: " << growth_steps.size() << " steps, " << growth_stop;
+    for (const UnstableRun &run : runs)
+      pcout << "; unstable growth at lambda = " << std::setprecision(8)
+            << run.load_factor << " from crack length " << std::setprecision(6)
+            << run.from_length << " to " << run.to_length << " (steps "
+            << run.first_step << " to " << run.last_step << ")";
+    pcout << std::endl;
+    return passed;
+  }
+} // namespace bilayer
