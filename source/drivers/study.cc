@@ -14,6 +14,7 @@
 #include <bilayer/parameters/parameter_entries.h>
 #include <bilayer/parameters/thermal_volume_load.h>
 #include <bilayer/postprocess/estimator.h>
+#include <bilayer/postprocess/mode_split.h>
 #include <bilayer/solvers/outer_solver.h>
 
 #include <cmath>
@@ -631,6 +632,14 @@ namespace bilayer
                 std::numeric_limits<double>::quiet_NaN();
               record.release[t].unresolved = unresolved_tips[t];
             }
+        // G_I + G_II = G (docs/fracture.md §7).
+        mode_split(subproblem_views(),
+                   coupling,
+                   w,
+                   mu,
+                   tip_cell_sizes,
+                   scene.fracture.mode_split_length,
+                   record.release);
         // The error bar: G once more with the support radius halved where
         // R/2 still holds enough cells (the same mesh: a single-mesh
         // indicator), and the sequence of G over the cycles.

@@ -254,6 +254,18 @@ namespace bilayer
             pcout << std::defaultfloat << std::setprecision(3)
                   << "support radius " << g.tip.support_radius << ")"
                   << std::scientific << std::setprecision(4) << "\n";
+            pcout << "    mode split                 ";
+            if (std::isfinite(g.G_I))
+              pcout << "G_I = " << g.G_I << ", G_II = " << g.G_II
+                    << std::defaultfloat << std::setprecision(3)
+                    << " (phase angle " << g.phase_angle
+                    << " degrees, closure length " << g.mode_split_length << ")"
+                    << std::scientific << std::setprecision(4);
+            else
+              pcout << "not defined";
+            if (!g.mode_split_note.empty())
+              pcout << " (" << g.mode_split_note << ")";
+            pcout << "\n";
           }
       }
     pcout << std::defaultfloat << std::setprecision(3)

@@ -501,7 +501,12 @@ namespace bilayer
                 << ", \"G_friction\": " << json(g.friction)
                 << ", \"G_error\": " << json(g.error)
                 << ", \"G_error_estimate\": " << json(g.error_estimate)
-                << ", \"G_half_support\": " << json(g.G_half_support) << "}";
+                << ", \"G_half_support\": " << json(g.G_half_support)
+                << ", \"G_I\": " << json(g.G_I)
+                << ", \"G_II\": " << json(g.G_II)
+                << ", \"phase_angle\": " << json(g.phase_angle)
+                << ", \"mode_split_length\": " << json(g.mode_split_length)
+                << ", \"mode_split_note\": " << json(g.mode_split_note) << "}";
           }
         out << "]}";
       }

@@ -48,6 +48,21 @@ namespace bilayer
                       "distance. G is also evaluated with R/2 (where R/2 holds "
                       "a cell at the tip) for its error bar.");
     prm.declare_entry(
+      "Mode split length",
+      "0",
+      Patterns::Double(0),
+      "Length Delta [length] of the crack-closure integrals that split G "
+      "into its opening and sliding parts G = G_I + G_II at every tip "
+      "(docs/fracture.md, section 7): the ratio of the closure works of "
+      "the traction ahead of the tip against the opening and the sliding "
+      "of layer 1 behind it, over Delta, applied to G. 0 chooses 8 times "
+      "the size of the cells at the tip, at most half the distance to the "
+      "nearest obstacle; with 0 the split is not reported (NaN) at a tip "
+      "between different materials on the two sides of Sigma, where it "
+      "depends on the length: a given Delta reports it at that reference "
+      "length. A given Delta must not exceed the distance to the nearest "
+      "obstacle of the tip (else NaN there).");
+    prm.declare_entry(
       "Crack growth",
       "none",
       Patterns::Selection("none|sweep|quasi-static"),
@@ -128,6 +143,11 @@ namespace bilayer
                 ExcMessage("Fracture/Support radius must be >= 0 (0: "
                            "automatic), got " +
                            prm.get("Support radius")));
+    mode_split_length = get_double(prm, "Fracture", "Mode split length");
+    AssertThrow(std::isfinite(mode_split_length) && mode_split_length >= 0,
+                ExcMessage("Fracture/Mode split length must be >= 0 (0: "
+                           "automatic), got " +
+                           prm.get("Mode split length")));
     const std::string mode = prm.get("Crack growth");
     growth                 = mode == "sweep"        ? CrackGrowth::sweep :
                              mode == "quasi-static" ? CrackGrowth::quasi_static :

@@ -138,6 +138,15 @@ namespace bilayer
         line << ", support radius " << g.tip.support_radius;
         if (!g.unresolved.empty())
           line << " (G not resolved: " << g.unresolved << ")";
+        line << "; mode split (docs/fracture.md section 7): ";
+        if (std::isfinite(g.G_I))
+          line << "G_I = " << g.G_I << ", G_II = " << g.G_II << ", phase angle "
+               << std::setprecision(4) << g.phase_angle << std::setprecision(10)
+               << " degrees, closure length " << g.mode_split_length;
+        else
+          line << "not defined";
+        if (!g.mode_split_note.empty())
+          line << " (" << g.mode_split_note << ")";
         notes.push_back(line.str());
       }
     return notes;

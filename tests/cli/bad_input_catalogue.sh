@@ -294,6 +294,7 @@ check "crack tips that cannot be fitted" "Mesh/Fit crack tips: Mesh/Cells along 
 [[ ! -e fresh ]] || fail "crack tips that cannot be fitted" "'fresh' left behind"
 run "support of theta beyond the outer boundary" "Fracture/Support radius = 5 reaches another tip, a corner of Sigma or the outer boundary from the crack tip at (x, y) = (-0.5, 0); allowed: (0, 0.5), or 0 (automatic)" "Fracture/Support radius=5"
 run "negative support radius" "Fracture/Support radius=-1" "Fracture/Support radius=-1"
+run "negative mode split length" "Fracture/Mode split length=-1" "Fracture/Mode split length=-1"
 # A support of theta with too few cells (G would tend to 0 with R): the
 # entry, the cells it holds, the radii and numbers of cells that would do.
 run "support radius below the cell size" "Fracture/Support radius = 0.01 at the crack tip at x = -0.5 holds 0.08 cells of the mesh of Omega- along its radius (cells of size 0.125 at the tip on cycle 0): G needs at least 1 (R >= the cell size, else G tends to 0 with R): use Fracture/Support radius in [0.125, 0.5), or at least 200 Mesh/Cells along Sigma" "Fracture/Support radius=0.01"

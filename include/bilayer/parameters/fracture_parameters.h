@@ -54,6 +54,14 @@ namespace bilayer
      * point of the outer boundary.
      */
     double support_radius = 0;
+    /**
+     * The length Delta of the crack-closure integrals of the mode split
+     * G = G_I + G_II [length] (docs/fracture.md §7). 0: mode_split_cells
+     * times the size of the cells at the tip, at most half the free
+     * distance (then no split at a tip between different materials, whose
+     * split depends on the length).
+     */
+    double mode_split_length = 0;
 
     CrackGrowth growth = CrackGrowth::none;
     /// G_c (mode I toughness of the mode-dependent laws) and G_IIc as

@@ -182,7 +182,11 @@ namespace bilayer
     /// The phase angle psi = atan(sqrt(G_II / G_I)) [degrees], in [0, 90]
     /// (NaN where the split is not defined).
     double phase_angle = std::numeric_limits<double>::quiet_NaN();
-    /// Empty where the split is defined, else why it is not.
+    /// The closure length Delta of the split [length] (Fracture/Mode split
+    /// length, or the automatic one); NaN where no split was computed.
+    double mode_split_length = std::numeric_limits<double>::quiet_NaN();
+    /// Empty where the split is defined, else why it is not; at a tip
+    /// between different materials, the reference length of the split.
     std::string mode_split_note;
     /// Why G is not reported at this tip on this mesh (then NaN): the
     /// support of theta holds too few cells (support_cells()); empty if G
