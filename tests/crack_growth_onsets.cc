@@ -1,5 +1,5 @@
 // Quasi-static crack growth under proportional loading (Study::run_growth,
-// docs/fracture.md section 8), on Examples 1 and 2 of the paper with a
+// docs/fracture.md section 9), on Examples 1 and 2 of the paper with a
 // toughness that rises along Sigma (G_c = g0 (1 + 8 (|x| - 0.5))), so that
 // the growth is stable: each crack length has its own critical load.
 //

@@ -1,4 +1,4 @@
-// The growth driver (Fracture/Crack growth, docs/fracture.md section 8):
+// The growth driver (Fracture/Crack growth, docs/fracture.md section 9):
 // quasi-static Griffith growth of the crack along Sigma on one mesh, and
 // the sweep of crack lengths. The subproblems are assembled and factorised
 // once; each step sets the load factor and the crack, rebuilds the

@@ -76,7 +76,7 @@ namespace bilayer
       "advance step by step at the (single) load factor whatever their "
       "criterion, until they stop: G, its mode split and the critical load "
       "of every crack length. The subproblems are factorised once; each "
-      "step rebuilds only the interface (docs/fracture.md, section 8).");
+      "step rebuilds only the interface (docs/fracture.md, section 9).");
     prm.declare_entry("Toughness",
                       "1",
                       Patterns::Anything(),

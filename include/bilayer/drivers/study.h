@@ -113,7 +113,7 @@ namespace bilayer
 
     /**
      * The growth driver (Fracture/Crack growth = quasi-static or sweep,
-     * docs/fracture.md section 8): on the meshes of the last cycle, with
+     * docs/fracture.md section 9): on the meshes of the last cycle, with
      * the subproblems factorised once, the load factors of Loads/Load
      * factor (and, under proportional loading with Fracture/Exact onsets,
      * the critical load of each crack between them); at each load the tips

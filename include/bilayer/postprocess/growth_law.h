@@ -8,7 +8,7 @@
 
 /**
  * @file
- * When a crack tip grows (docs/fracture.md, section 8): the criterion of
+ * When a crack tip grows (docs/fracture.md, section 9): the criterion of
  * Fracture/Mixed-mode law at a tip, and the load factor at which it
  * reaches 1 under proportional loading.
  */
