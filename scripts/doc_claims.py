@@ -100,6 +100,9 @@ COMMANDS = {
     "composite_ply": {"command": RUN % "parameter_files/composite_ply.prm"},
     # docs/fracture.md §6 and README: Example 1 with friction (about a minute).
     "friction_study": {"command": "scripts/friction_study --output {out}/f"},
+    # README: the DCB debonding under a rising force (a few seconds).
+    "dcb_growth": {"command": '{bilayer} parameter_files/dcb_growth.prm --set "Output/Output directory={out}/r" '
+                              '--set "Output/Write VTU=false"'},
 }
 
 PAPER = r"paper's settings \(Uzawa, theta = 65, 16 cells\).*?"
@@ -309,6 +312,19 @@ CLAIMS = [
     {"id": "fracture.friction.time", "doc": "docs/fracture.md", "fast": False,
      "pattern": Q("(15 runs in {} s; 2-core x86_64 dev VM"), "command": "friction_study",
      "extract": {"regex": r"bilayer runs in (\d+) s"}, "tolerance": ("factor", 2)},
+    {"id": "readme.dcb_growth.onset", "doc": "README.md", "fast": True,
+     "pattern": Q("the crack starts at the exact onset λ_c ≈ {} and runs"), "command": "dcb_growth",
+     "extract": {"regex": r"unstable growth at lambda = (\S+) from"}, "tolerance": ("rounded",)},
+    {"id": "readme.dcb_growth.end", "doc": "README.md", "fast": True,
+     "pattern": Q("runs unstably at that load to x = {}, one cell"), "command": "dcb_growth",
+     "extract": {"regex": r"unstable growth at lambda = \S+ from crack length \S+ to (\S+) "},
+     "tolerance": ("rounded",)},
+    {"id": "readme.dcb_growth.steps", "doc": "README.md", "fast": True,
+     "pattern": Q("can no longer be resolved ({} steps in"), "command": "dcb_growth",
+     "extract": {"regex": r"^growth: (\d+) steps"}, "tolerance": ("exact",)},
+    {"id": "readme.dcb_growth.time", "doc": "README.md", "fast": True,
+     "pattern": Q("steps in {} s, 2-core x86_64 VM"), "command": "dcb_growth",
+     "extract": "wall", "tolerance": ("factor", 3)},
     {"id": "fracture.crack_growth.time", "doc": "docs/fracture.md", "fast": False,
      "pattern": Q("fracture.crack_growth.time`): {} s; before the cells"), "command": "crack_growth_end",
      "extract": "wall", "tolerance": ("factor", 2)},
