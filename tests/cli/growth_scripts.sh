@@ -4,7 +4,8 @@
 #     figure and its data; the unstable runs it prints are those of
 #     summary.json (load and crack lengths); --displacement uy_1 draws the
 #     point's column, a point the run does not have is refused (exit 1,
-#     nothing drawn);
+#     nothing drawn); the run factorises and estimates the error (eta) on
+#     step 0 alone;
 #  2. scripts/crack_growth --driver on Example 2 (full_opening.prm, 32 cells
 #     along Sigma, active set) with --toughness 1e-4: exit 0, and its
 #     sqrt(G_c / G) agrees with the driver's critical_load to 1e-6 (the
@@ -49,6 +50,21 @@ rc=$?
 [[ $rc -eq 1 && ! -e $work/gc_bad && $(cat "$work/bad.err") == *uy_7* ]] ||
   why="$why; --displacement uy_7: exit $rc, $(cat "$work/bad.err")"
 verdict "growth_curve draws a growth run, its unstable runs those of summary.json" "$why"
+
+# 1b. the run factorises once (factorisation seconds > 0 on step 0 alone) and
+# estimates the error on step 0 alone (eta finite there, null on the later
+# steps: their mesh is step 0's, their indicators would refine nothing)
+why=""
+python3 - "$work/run/summary.json" << 'PY' || why="not step 0 alone"
+import json, math, sys
+cycles = json.load(open(sys.argv[1]))["cycles"]
+factorising = [c["cycle"] for c in cycles if c["wall_seconds"]["factorisation"] > 0]
+estimated = [c["cycle"] for c in cycles if c["eta"] is not None and math.isfinite(c["eta"])]
+print("%d steps; factorising: %s; with eta: %s; accepted: %s" % (
+    len(cycles), factorising, estimated, all(c["accepted"] for c in cycles)))
+sys.exit(0 if factorising == [0] and estimated == [0] and all(c["accepted"] for c in cycles) else 1)
+PY
+verdict "a growth run factorises and estimates the error on step 0 alone" "$why"
 
 # 2. crack_growth --driver
 why=""
