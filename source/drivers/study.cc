@@ -679,13 +679,23 @@ namespace bilayer
       }
     // The indicators mark the next adaptive cycle; their global sum is
     // reported on every mesh (and must be finite, checked below).
-    indicators = estimate_error(subproblem_views(),
-                                coupling,
-                                w,
-                                mu,
-                                scene.mesh.interface_terms,
-                                scene.mesh.contact_weight,
-                                &record.eta);
+    if (estimates_error(record))
+      indicators = estimate_error(subproblem_views(),
+                                  coupling,
+                                  w,
+                                  mu,
+                                  scene.mesh.interface_terms,
+                                  scene.mesh.contact_weight,
+                                  &record.eta);
+    else
+      record.eta = std::numeric_limits<double>::quiet_NaN();
     check(record);
+  }
+
+
+  bool
+  Study::estimates_error(const CycleRecord &record) const
+  {
+    return !growth_run || record.cycle == 0;
   }
 } // namespace bilayer

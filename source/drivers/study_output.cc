@@ -218,7 +218,9 @@ namespace bilayer
           << std::scientific << std::setprecision(4)
           << "  energy Pi                    " << record.energy << "\n"
           << "  error estimate eta           " << record.eta
-          << "  (energy norm, sqrt(2 (Pi_h - Pi)) by the estimator)\n"
+          << (estimates_error(record) ?
+                "  (energy norm, sqrt(2 (Pi_h - Pi)) by the estimator)\n" :
+                "  (not estimated: a growth step on the mesh of step 0)\n")
           << "  constraint violation (12)    " << r.constraint_violation
           << "  (relative " << r.relative_constraint_violation << ")\n"
           << "  largest interpenetration     " << r.max_penetration

@@ -7,7 +7,8 @@
 # open (nodes with [u].nu > 0) and partly closed (nodes in contact, mu_c > 0
 # and |[u].nu| below 1e-6 of the largest opening); the friction scene
 # partial_closure_friction.prm runs too, and so do the fracture specimens
-# dcb.prm and els.prm (below).
+# dcb.prm and els.prm and the growth scenes growth_full_opening.prm and
+# growth_weak_patch.prm (below).
 # Usage: shipped_scenes.sh BILAYER PARAMETER_FILES
 set -u
 bilayer=$1 files=$2
@@ -132,6 +133,61 @@ print("%s: every cycle accepted: %s, one tip at x = a: %s, G = %.6g, beam theory
       % (specimen, accepted, one_tip, G, beam, 100 * (G / beam - 1), 100 * tolerance,
          close, open_))
 sys.exit(0 if accepted and close and open_ else 1)
+PY
+done
+# The growth scenes run with their own settings (quasi-static growth of
+# Example 2): growth_full_opening.prm grows both tips symmetrically (G of
+# tip 1 equals G of tip 2 to 1e-8 relative at every step: the scene is
+# symmetric about x = 0), its first onset is the critical load
+# sqrt(G_c / G(l; 1)) of the initial crack, and the growth at that load is
+# unstable (G(l; 1) rises with l); growth_weak_patch.prm has one unstable run
+# that starts before the weak patch (x = 0.7) and ends beyond it, followed by
+# an arrest (below critical at the same load).
+for scene in growth_full_opening growth_weak_patch; do
+  "$bilayer" "$files/$scene.prm" --set "Output/Output directory=$work/$scene" > "$scene.log" 2>&1
+  rc=$?
+  if [[ $rc -ne 0 ]]; then
+    echo "$scene.prm: exit $rc: $(tail -1 "$scene.log")"
+    fail=1
+    continue
+  fi
+  python3 - "$work/$scene" "$scene" <<'PY' || fail=1
+import csv, json, math, sys
+where, scene = sys.argv[1], sys.argv[2]
+growth = json.load(open(where + "/summary.json"))["growth"]
+rows = list(csv.DictReader(l for l in open(where + "/growth.csv") if not l.startswith("#")))
+runs = growth["unstable"]
+def num(text):
+    return float(text) if text not in ("", "null") else float("nan")
+if scene == "growth_full_opening":
+    pairs = [(num(r["tip1_G"]), num(r["tip2_G"])) for r in rows if r["tip1_G"] not in ("", "null")]
+    symmetric = all(abs(a - b) <= 1e-8 * abs(a) for a, b in pairs)
+    onset = [r for r in rows if r["kind"] == "onset"][0]
+    g0 = num(rows[0]["tip1_G"]) / num(rows[0]["load_factor"]) ** 2
+    exact = abs(num(onset["load_factor"]) / math.sqrt(1e-4 / g0) - 1) < 1e-8
+    first = runs[0] if runs else None
+    ok = symmetric and exact and first is not None and \
+        abs(first["load_factor"] - num(onset["load_factor"])) < 1e-12
+    print("%s: %d steps, G_1 = G_2 at %d steps: %s, first onset lambda = %.8g = sqrt(G_c / G(l_0; 1)): "
+          "%s, %d unstable run(s), the first at the onset: %s" % (
+              scene, len(rows), len(pairs), symmetric, num(onset["load_factor"]), exact, len(runs), ok))
+else:
+    ok = len(runs) == 1
+    if ok:
+        run = runs[0]
+        by_step = {int(r["step"]): r for r in rows}
+        before = by_step[run["first_step"] - 1]
+        last = by_step[run["last_step"]]
+        x0, x1 = num(before["tip2_x"]), num(last["tip2_x"])
+        crosses = x0 < 0.7 < x1
+        arrested = last["tip2_status"] == "below critical"
+        ok = crosses and arrested
+        print("%s: one unstable run at lambda = %.6g, tip 2 from x = %.4g to %.4g across the patch "
+              "at 0.7: %s, arrested there (below critical): %s" % (
+                  scene, run["load_factor"], x0, x1, crosses, arrested))
+    else:
+        print("%s: %d unstable runs, expected 1" % (scene, len(runs)))
+sys.exit(0 if ok else 1)
 PY
 done
 [[ $fail -eq 0 ]] && echo "shipped scenes: yes" || echo "shipped scenes: NO"

@@ -224,6 +224,13 @@ namespace bilayer
     tip_may_grow(const unsigned int number) const;
     bool
     growth_stopped() const;
+    /// Whether the state of @p record has an error estimate: every cycle of
+    /// a static run and the first step of a growth run. The later steps
+    /// keep the mesh of the first (their indicators would refine nothing):
+    /// eta is NaN there, and the estimator's pass over every cell, the
+    /// largest part of a step, is saved.
+    bool
+    estimates_error(const CycleRecord &record) const;
     /// One step at the load factor @p lambda on the present crack.
     bool
     solve_growth_step(CycleRecord         &record,
