@@ -206,6 +206,13 @@ namespace bilayer
 
 
   bool
+  Study::estimates_error(const CycleRecord &record) const
+  {
+    return !growth_run || record.cycle == 0;
+  }
+
+
+  bool
   Study::tip_may_grow(const unsigned int number) const
   {
     const auto &list = scene.fracture.growing_tips;

@@ -691,11 +691,4 @@ namespace bilayer
       record.eta = std::numeric_limits<double>::quiet_NaN();
     check(record);
   }
-
-
-  bool
-  Study::estimates_error(const CycleRecord &record) const
-  {
-    return !growth_run || record.cycle == 0;
-  }
 } // namespace bilayer

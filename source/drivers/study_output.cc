@@ -204,33 +204,9 @@ namespace bilayer
 
 
   void
-  Study::print_report(const CycleRecord &record) const
+  Study::print_release(const CycleRecord &record) const
   {
-    const auto &r = record.report;
-    pcout << "  " << record.result.solver << ": " << record.result.message
-          << " (" << record.result.subdomain_solves << " subdomain solves";
-    if (record.result.preconditioner_solves > 0)
-      pcout << " + " << record.result.preconditioner_solves
-            << " Dirichlet solves";
-    if (record.theta > 0)
-      pcout << ", theta = " << record.theta;
-    pcout << ")\n"
-          << std::scientific << std::setprecision(4)
-          << "  energy Pi                    " << record.energy << "\n"
-          << "  error estimate eta           " << record.eta
-          << (estimates_error(record) ?
-                "  (energy norm, sqrt(2 (Pi_h - Pi)) by the estimator)\n" :
-                "  (not estimated: a growth step on the mesh of step 0)\n")
-          << "  constraint violation (12)    " << r.constraint_violation
-          << "  (relative " << r.relative_constraint_violation << ")\n"
-          << "  largest interpenetration     " << r.max_penetration
-          << "  (displacement scale " << r.displacement_scale << ")\n"
-          << "  discrete violation           " << r.relative_discrete_violation
-          << " (relative)\n"
-          << "  smallest mu_c                " << r.min_contact_multiplier
-          << "\n"
-          << "  complementarity              " << r.complementarity << "\n"
-          << "  KKT residual (relative)      " << r.kkt.value() << "\n";
+    pcout << std::scientific << std::setprecision(4);
     for (unsigned int t = 0; t < record.release.size(); ++t)
       {
         const EnergyReleaseRate &g = record.release[t];
@@ -270,6 +246,38 @@ namespace bilayer
             pcout << "\n";
           }
       }
+  }
+
+
+  void
+  Study::print_report(const CycleRecord &record) const
+  {
+    const auto &r = record.report;
+    pcout << "  " << record.result.solver << ": " << record.result.message
+          << " (" << record.result.subdomain_solves << " subdomain solves";
+    if (record.result.preconditioner_solves > 0)
+      pcout << " + " << record.result.preconditioner_solves
+            << " Dirichlet solves";
+    if (record.theta > 0)
+      pcout << ", theta = " << record.theta;
+    pcout << ")\n"
+          << std::scientific << std::setprecision(4)
+          << "  energy Pi                    " << record.energy << "\n"
+          << "  error estimate eta           " << record.eta
+          << (estimates_error(record) ?
+                "  (energy norm, sqrt(2 (Pi_h - Pi)) by the estimator)\n" :
+                "  (not estimated: a growth step on the mesh of step 0)\n")
+          << "  constraint violation (12)    " << r.constraint_violation
+          << "  (relative " << r.relative_constraint_violation << ")\n"
+          << "  largest interpenetration     " << r.max_penetration
+          << "  (displacement scale " << r.displacement_scale << ")\n"
+          << "  discrete violation           " << r.relative_discrete_violation
+          << " (relative)\n"
+          << "  smallest mu_c                " << r.min_contact_multiplier
+          << "\n"
+          << "  complementarity              " << r.complementarity << "\n"
+          << "  KKT residual (relative)      " << r.kkt.value() << "\n";
+    print_release(record);
     pcout << std::defaultfloat << std::setprecision(3)
           << "  processes                    " << record.processes
           << ", traces sent " << record.shared_values << " values in "

@@ -342,6 +342,9 @@ namespace bilayer
                   const bool         interface_csv);
     void
     print_report(const CycleRecord &record) const;
+    /// The report's lines of G and its mode split at each tip.
+    void
+    print_release(const CycleRecord &record) const;
 
     /// The subproblems as the interface reads them and as the solvers use
     /// them (null where a layer is absent).
