@@ -268,7 +268,16 @@ namespace bilayer
     const bool accepted =
       solve_state(record, warm ? &previous : nullptr, step > 0 ? timer : total)
         .accepted();
-    growth_steps.push_back(growth_step(cycle_records.back(), lambda, kind));
+    try
+      {
+        growth_steps.push_back(growth_step(cycle_records.back(), lambda, kind));
+      }
+    catch (const RunFailure &)
+      {
+        // The record of the step that cannot go on, in summary.json too.
+        write_growth();
+        throw;
+      }
     write_growth();
     print_growth_step(growth_steps.back());
     return accepted;

@@ -188,9 +188,12 @@ namespace bilayer
                           fields && scene.output.write_vtu,
                           interface_csv);
     const std::string &dir = scene.output.directory;
-    write_atomically(dir + "/summary.json", [&](std::ostream &o) {
-      write_summary_json(o, scene.name, cycle_records);
-    });
+    // (A growth step's summary.json, with the growth object, comes from
+    // write_growth() once the step is measured.)
+    if (!growth_run)
+      write_atomically(dir + "/summary.json", [&](std::ostream &o) {
+        write_summary_json(o, scene.name, cycle_records);
+      });
     write_atomically(dir + "/table.txt", [&](std::ostream &o) {
       write_tip_notes(o);
       table.write_text(o, TableHandler::org_mode_table);
