@@ -323,7 +323,7 @@ CLAIMS = [
      "pattern": Q("can no longer be resolved ({} steps in"), "command": "dcb_growth",
      "extract": {"regex": r"^growth: (\d+) steps"}, "tolerance": ("exact",)},
     {"id": "readme.dcb_growth.time", "doc": "README.md", "fast": True,
-     "pattern": Q("steps in {} s, 2-core x86_64 VM"), "command": "dcb_growth",
+     "pattern": Q("steps in {} s with `Write VTU = false`, 2-core x86_64 VM"), "command": "dcb_growth",
      "extract": "wall", "tolerance": ("factor", 3)},
     {"id": "fracture.crack_growth.time", "doc": "docs/fracture.md", "fast": False,
      "pattern": Q("fracture.crack_growth.time`): {} s; before the cells"), "command": "crack_growth_end",
