@@ -32,10 +32,18 @@ namespace bilayer
         const CrackTip &tip = tips[t];
         if (!tip.defined())
           continue;
-        const TipCells cells =
-          support_cells(tip,
-                        {{&domain.triangulation(Subdomain::minus),
-                          &domain.triangulation(Subdomain::plus)}});
+        // On the meshes of the subproblems (the later states of a study on
+        // one mesh), from their cell extents.
+        const ElasticSubproblem *const minus =
+          subproblems[Layout::u_minus].get();
+        const ElasticSubproblem *const plus = subproblems[Layout::u_plus].get();
+        const TipCells                 cells =
+          minus != nullptr && plus != nullptr ?
+                            support_cells(tip,
+                          {{&minus->cell_extents(), &plus->cell_extents()}}) :
+                            support_cells(tip,
+                          {{&domain.triangulation(Subdomain::minus),
+                                            &domain.triangulation(Subdomain::plus)}});
         tip_cell_sizes[t] = cells.size;
         const double R    = tip.support_radius;
         if (support_holds(R, cells.size))

@@ -255,15 +255,18 @@ namespace bilayer
   {
     for (const unsigned int s : Layout::subproblems)
       loads[s].reinit(present(s) ? subproblems[s]->n_dofs() : 0);
-    Vector<double> term;
+    // Added into the loads directly (the first subproblem of a block with
+    // -mu): no vector of the subproblem's size per block.
+    Vector<double> negative;
     for (const unsigned int b : Layout::blocks)
-      for (unsigned int j = 0; j < 2 && active(b); ++j)
+      if (active(b))
         {
-          const unsigned int s =
-            j == 0 ? Layout::coupled(b).first : Layout::coupled(b).second;
-          term.reinit(subproblems[s]->n_dofs());
-          coupling[b][j].matrix.Tvmult(term, mu.block(b));
-          loads[s].add(j == 0 ? -1. : 1., term);
+          negative = mu.block(b);
+          negative *= -1.;
+          coupling[b][0].matrix.Tvmult_add(loads[Layout::coupled(b).first],
+                                           negative);
+          coupling[b][1].matrix.Tvmult_add(loads[Layout::coupled(b).second],
+                                           mu.block(b));
         }
   }
 

@@ -216,6 +216,32 @@ namespace bilayer
   }
 
 
+  namespace
+  {
+    /// Whether @p cell (centre @p center, diameter @p diameter) has @p tip
+    /// as a vertex; if so, its size enters @p cells as one of mesh @p m.
+    void
+    add_tip_cell(const CrackTip                               &tip,
+                 const Triangulation<2>::active_cell_iterator &cell,
+                 const Point<2>                               &center,
+                 const double                                  diameter,
+                 const unsigned int                            m,
+                 TipCells                                     &cells)
+    {
+      if ((center - tip.point).norm() > diameter)
+        return;
+      bool at = false;
+      for (const unsigned int v : cell->vertex_indices())
+        at = at || (cell->vertex(v) - tip.point).norm() <= 1e-8 * diameter;
+      if (!at)
+        return;
+      const double size = cell_size(cell);
+      if (size > cells.size)
+        cells.size = size, cells.mesh = m;
+    }
+  } // namespace
+
+
   TipCells
   support_cells(const CrackTip                                &tip,
                 const std::array<const Triangulation<2> *, 2> &meshes)
@@ -224,20 +250,25 @@ namespace bilayer
     for (unsigned int m = 0; m < 2; ++m)
       if (meshes[m] != nullptr)
         for (const auto &cell : meshes[m]->active_cell_iterators())
-          {
-            const double diameter = cell->diameter();
-            if ((cell->center() - tip.point).norm() > diameter)
-              continue;
-            bool at = false;
-            for (const unsigned int v : cell->vertex_indices())
-              at =
-                at || (cell->vertex(v) - tip.point).norm() <= 1e-8 * diameter;
-            if (!at)
-              continue;
-            const double size = cell_size(cell);
-            if (size > cells.size)
-              cells.size = size, cells.mesh = m;
-          }
+          add_tip_cell(tip, cell, cell->center(), cell->diameter(), m, cells);
+    return cells;
+  }
+
+
+  TipCells
+  support_cells(const CrackTip                           &tip,
+                const std::array<const CellExtents *, 2> &meshes)
+  {
+    TipCells cells;
+    for (unsigned int m = 0; m < 2; ++m)
+      if (meshes[m] != nullptr)
+        for (unsigned int i = 0; i < meshes[m]->size(); ++i)
+          add_tip_cell(tip,
+                       meshes[m]->cell(i),
+                       meshes[m]->center(i),
+                       meshes[m]->diameter(i),
+                       m,
+                       cells);
     return cells;
   }
 } // namespace bilayer

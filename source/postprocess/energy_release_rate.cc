@@ -64,15 +64,15 @@ namespace bilayer
 
     /// The smallest R of the defined tips whose theta reaches @p cell, or 0.
     double
-    smallest_support_radius(const std::vector<CrackTip>               &tips,
-                            const std::vector<ThetaField>             &fields,
-                            const DoFHandler<2>::active_cell_iterator &cell,
-                            const double                               diameter)
+    smallest_support_radius(const std::vector<CrackTip>   &tips,
+                            const std::vector<ThetaField> &fields,
+                            const Point<2>                &center,
+                            const double                   diameter)
     {
       const unsigned int n          = tips.size();
       double             smallest_R = 0;
       for (unsigned int t = 0; t < n; ++t)
-        if (tips[t].defined() && fields[t].reaches(cell->center(), diameter))
+        if (tips[t].defined() && fields[t].reaches(center, diameter))
           smallest_R = smallest_R == 0 ?
                          tips[t].support_radius :
                          std::min(smallest_R, tips[t].support_radius);
@@ -169,15 +169,18 @@ namespace bilayer
       const VolumeLoad *const          volume = sub.volume_load();
       std::vector<Tensor<2, 2>>        grad_u;
       std::vector<Tensor<1, 2>>        u_values;
-      for (const auto &cell : sub.dof_handler().active_cell_iterators())
+      const CellExtents               &extents = sub.cell_extents();
+      for (unsigned int i = 0; i < extents.size(); ++i)
         {
           // No point of a cell is farther from its centre than its
           // diameter (the vertex mean lies inside the cell).
-          const double diameter = cell->diameter();
-          const double smallest_R =
-            smallest_support_radius(tips, fields, cell, diameter);
+          const Point<2> &center   = extents.center(i);
+          const double    diameter = extents.diameter(i);
+          const double    smallest_R =
+            smallest_support_radius(tips, fields, center, diameter);
           if (smallest_R == 0)
             continue;
+          const auto &cell = extents.cell(i);
           // Pieces no larger than 1/8 of R: at least four across the
           // fall of theta (R/2 < r < R).
           const unsigned int m =
@@ -205,8 +208,7 @@ namespace bilayer
               fe_values[displacement].get_function_values(u, u_values);
             }
           for (unsigned int t = 0; t < n; ++t)
-            if (tips[t].defined() &&
-                fields[t].reaches(cell->center(), diameter))
+            if (tips[t].defined() && fields[t].reaches(center, diameter))
               integral(t) +=
                 volume == nullptr ?
                   cell_integral(fe_values, grad_u, law, fields[t]) :

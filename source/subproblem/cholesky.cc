@@ -215,15 +215,7 @@ namespace bilayer
     AssertDimension(x.size(), size());
     const std::size_t n = size();
     const double     *l = factor.data();
-    // L y = x, by columns.
-    for (std::size_t j = 0; j < n; ++j)
-      {
-        const double *column = l + j * n;
-        const double  y      = x[j] / column[j];
-        x[j]                 = y;
-        for (std::size_t i = j + 1; i < n; ++i)
-          x[i] -= column[i] * y;
-      }
+    forward_solve(x);
     // L^T z = y, by rows of L^T (columns of L).
     for (std::size_t j = n; j-- > 0;)
       {
@@ -232,6 +224,24 @@ namespace bilayer
         for (std::size_t i = j + 1; i < n; ++i)
           sum -= column[i] * x[i];
         x[j] = sum / column[j];
+      }
+  }
+
+
+  void
+  SchurComplementFactor::forward_solve(std::vector<double> &x) const
+  {
+    AssertDimension(x.size(), size());
+    const std::size_t n = size();
+    const double     *l = factor.data();
+    // L y = x, by columns.
+    for (std::size_t j = 0; j < n; ++j)
+      {
+        const double *column = l + j * n;
+        const double  y      = x[j] / column[j];
+        x[j]                 = y;
+        for (std::size_t i = j + 1; i < n; ++i)
+          x[i] -= column[i] * y;
       }
   }
 
@@ -281,5 +291,29 @@ namespace bilayer
     const double *values = static_cast<const double *>(x->x);
     std::copy(values, values + data->n, rhs_and_solution.begin());
     cholmod_free_dense(&x, &data->common);
+  }
+
+
+  void
+  SparseCholesky::solve_from_trailing(std::vector<double> &load,
+                                      Vector<double>      &solution) const
+  {
+    Assert(schur != nullptr, ExcInternalError());
+    const std::size_t n = data->n, m = schur->size(), first = n - m;
+    schur->forward_solve(load);
+    cholmod_dense *y = cholmod_zeros(n, 1, CHOLMOD_REAL, &data->common);
+    AssertThrow(y != nullptr, ExcMessage("CHOLMOD: out of memory"));
+    std::copy(load.begin(), load.end(), static_cast<double *>(y->x) + first);
+    // L^T z = y, then x = P^T z.
+    cholmod_dense *z =
+      cholmod_solve(CHOLMOD_Lt, data->factor, y, &data->common);
+    cholmod_free_dense(&y, &data->common);
+    AssertThrow(z != nullptr, ExcMessage("CHOLMOD solve failed"));
+    const double *values = static_cast<const double *>(z->x);
+    const int    *perm   = static_cast<const int *>(data->factor->Perm);
+    solution.reinit(n, true);
+    for (std::size_t k = 0; k < n; ++k)
+      solution(perm[k]) = values[k];
+    cholmod_free_dense(&z, &data->common);
   }
 } // namespace bilayer

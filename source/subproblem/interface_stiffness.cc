@@ -14,11 +14,7 @@ namespace bilayer
   {
     const AffineConstraints<double> &homogeneous =
       subproblem.zero_displacement_constraints();
-    const IndexSet on_sigma =
-      DoFTools::extract_boundary_dofs(subproblem.dof_handler(),
-                                      ComponentMask(),
-                                      {BoundaryIds::sigma});
-    for (const auto i : on_sigma)
+    for (const auto i : subproblem.trace_dofs())
       if (!homogeneous.is_constrained(i))
         sigma_dofs.push_back(i);
     // A condensed subproblem holds S already (its factor on Sigma).

@@ -241,6 +241,7 @@ namespace bilayer
                                       ComponentMask(),
                                       {BoundaryIds::sigma});
     trace_dofs_.assign(on_sigma.begin(), on_sigma.end());
+    extents.reinit(dofs);
     if (!owned())
       {
         assembly_seconds = timer.wall_time();
@@ -360,19 +361,10 @@ namespace bilayer
                                     const bool            homogeneous) const
   {
     Assert(condensed(), ExcInternalError());
-    const SchurComplementFactor &schur = *factorisation.schur_complement();
-    // The condensed load on the unconstrained Sigma dofs ...
-    std::vector<double> y(schur.size(), 0.);
-    if (coupling.size() > 0)
-      {
-        for (const auto &[i, a] : sigma_positions)
-          y[a] += coupling(i);
-        for (const auto &dof : constrained_sigma_dofs)
-          for (const auto &[a, weight] : dof.entries)
-            y[a] += weight * coupling(dof.dof);
-      }
-    // ... the Sigma part of K^{-1} of it ...
-    schur.solve(y);
+    // The condensed load on the unconstrained Sigma dofs, the Sigma part of
+    // K^{-1} of it ...
+    std::vector<double> y = condensed_load(coupling);
+    factorisation.schur_complement()->solve(y);
     // ... added to the solution without coupling, and distributed to the
     // constrained Sigma dofs.
     if (homogeneous)
@@ -384,6 +376,35 @@ namespace bilayer
     for (const auto &dof : constrained_sigma_dofs)
       for (const auto &[a, weight] : dof.entries)
         solution(dof.dof) += weight * y[a];
+  }
+
+
+  std::vector<double>
+  ElasticSubproblem::condensed_load(const Vector<double> &coupling) const
+  {
+    std::vector<double> y(n_schur_dofs(), 0.);
+    if (coupling.size() > 0)
+      {
+        for (const auto &[i, a] : sigma_positions)
+          y[a] += coupling(i);
+        for (const auto &dof : constrained_sigma_dofs)
+          for (const auto &[a, weight] : dof.entries)
+            y[a] += weight * coupling(dof.dof);
+      }
+    return y;
+  }
+
+
+  void
+  ElasticSubproblem::solve_coupling(const Vector<double> &coupling,
+                                    Vector<double>       &solution) const
+  {
+    // K^{-1} of the condensed load (zero off the Sigma dofs: only the
+    // backward substitution runs through the sparse factor), with the
+    // homogeneous constraints.
+    std::vector<double> y = condensed_load(coupling);
+    factorisation.solve_from_trailing(y, solution);
+    homogeneous_constraints.distribute(solution);
   }
 
 
@@ -464,6 +485,14 @@ namespace bilayer
         homogeneous_constraints.condense(solution);
         shared->solve(solution, true);
       }
+    else if (condensed() && coupling.size() > 0)
+      {
+        // The solution without coupling (distributed) plus K^{-1} of the
+        // coupling load.
+        solve_coupling(coupling, solution);
+        solution += particular;
+        return;
+      }
     else
       {
         if (coupling.size() > 0)
@@ -484,6 +513,11 @@ namespace bilayer
   ElasticSubproblem::solve_homogeneous(const Vector<double> &coupling,
                                        Vector<double>       &solution) const
   {
+    if (!shared && condensed())
+      {
+        solve_coupling(coupling, solution);
+        return;
+      }
     solution = coupling;
     homogeneous_constraints.condense(solution);
     if (shared)

@@ -265,6 +265,12 @@ namespace bilayer
   support_cells(const CrackTip                                        &tip,
                 const std::array<const dealii::Triangulation<2> *, 2> &meshes);
 
+  /// The same from the cell extents of the two meshes (the same answer,
+  /// without visiting the cells' geometry).
+  TipCells
+  support_cells(const CrackTip                           &tip,
+                const std::array<const CellExtents *, 2> &meshes);
+
   /**
    * G at every tip of @p tips for the solutions @p w and the multipliers
    * @p mu (collective: each subproblem's integral is computed by its owner,

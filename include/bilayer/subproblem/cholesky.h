@@ -41,6 +41,10 @@ namespace bilayer
     void
     solve(std::vector<double> &x) const;
 
+    /// x := L_T^{-1} x, the first of the two triangular solves of solve().
+    void
+    forward_solve(std::vector<double> &x) const;
+
     /// x := S x (x in the order of indices()).
     void
     multiply(std::vector<double> &x) const;
@@ -106,6 +110,19 @@ namespace bilayer
     /// Overwrite @p rhs_and_solution with A^{-1} rhs.
     void
     solve(dealii::Vector<double> &rhs_and_solution) const;
+
+    /**
+     * With schur_complement(): @p solution = A^{-1} b for a right-hand side
+     * b that is zero off T, given by its entries on T in the order of
+     * schur_complement()->indices() (@p load, overwritten). With
+     * P A P^T = L L^T and T last in P, L^{-1} P b is zero on the other
+     * indices and L_T^{-1} b_T on T: the forward substitution is the dense
+     * one on T alone, and only the backward substitution runs through the
+     * sparse factor (about half of solve()).
+     */
+    void
+    solve_from_trailing(std::vector<double>    &load,
+                        dealii::Vector<double> &solution) const;
 
   private:
     struct Data;

@@ -12,6 +12,7 @@
 
 #include <bilayer/physics/elastic_law.h>
 #include <bilayer/physics/volume_load.h>
+#include <bilayer/subproblem/cell_extents.h>
 #include <bilayer/subproblem/cholesky.h>
 #include <bilayer/subproblem/distributed_system.h>
 #include <bilayer/subproblem/distribution.h>
@@ -166,6 +167,9 @@ namespace bilayer
     share_trace(dealii::Vector<double> &w) const;
 
     /// Solve with the extra load vector @p coupling (may be empty = zero).
+    /// With condensed(), @p coupling must vanish off the Sigma dofs (the
+    /// interface's multiplier terms do): the solution is that without
+    /// coupling plus the half-cost solve of solve_from_trailing().
     void
     solve(const dealii::Vector<double> &coupling,
           dealii::Vector<double>       &solution) const;
@@ -252,6 +256,21 @@ namespace bilayer
       return homogeneous_constraints;
     }
 
+    /// The centres and diameters of the active cells (set up once per
+    /// mesh).
+    const CellExtents &
+    cell_extents() const
+    {
+      return extents;
+    }
+
+    /// The dofs on Sigma, in increasing order (set up once per mesh).
+    const std::vector<dealii::types::global_dof_index> &
+    trace_dofs() const
+    {
+      return trace_dofs_;
+    }
+
     /// The unconstrained stiffness matrix K (not with distributed(): the
     /// group holds it, see distributed_system()).
     const dealii::SparseMatrix<double> &
@@ -329,6 +348,16 @@ namespace bilayer
     double factorisation_seconds = 0;
 
   private:
+    /// With condensed(): the load @p coupling (zero off the Sigma dofs)
+    /// condensed onto the unconstrained Sigma dofs, in the order of the
+    /// Schur factor.
+    std::vector<double>
+    condensed_load(const dealii::Vector<double> &coupling) const;
+    /// With condensed(): @p solution = K^{-1} @p coupling with the
+    /// homogeneous constraints (the load zero off the Sigma dofs).
+    void
+    solve_coupling(const dealii::Vector<double> &coupling,
+                   dealii::Vector<double>       &solution) const;
     void
     assemble(const std::vector<bool>                        &clamped,
              const std::vector<const dealii::Function<2> *> &traction,
@@ -345,6 +374,7 @@ namespace bilayer
     /// The dofs on the faces on Sigma (glued and crack), constrained ones
     /// included: the support of every trace the interface evaluates.
     std::vector<dealii::types::global_dof_index> trace_dofs_;
+    CellExtents                                  extents;
     std::unique_ptr<dealii::FESystem<2>>         fe_system;
     std::unique_ptr<dealii::Mapping<2>>          curved_mapping;
     dealii::DoFHandler<2>                        dofs;
