@@ -19,6 +19,9 @@
 //  6. a Sigma dof on the clamped side (prescribed displacement, no entries)
 //     takes its prescribed value in the whole problem and zero in the
 //     homogeneous one.
+//  7. solve() and solve_homogeneous() of the condensed subproblem (their
+//     forward substitution on Sigma alone) equal the plain sparse solves on
+//     every dof (relative difference < 1e-10);
 // Meshes (8 x 8 cells, simplicial factors, and 48 x 48, supernodal): Q1
 // and Q2 quadrilaterals, P2 triangles, Q1 refined towards a
 // point of Sigma (hanging nodes next to Sigma whose constraints name Sigma
@@ -186,6 +189,24 @@ main()
         largest_difference_on(sigma, on_sigma_only, whole);
       std::cout << "  solve_on_sigma = solve on Sigma (< 1e-10): "
                 << verdict(d_whole < 1e-10 && d_homogeneous < 1e-10)
+                << std::endl;
+      // The whole solves of the condensed subproblem (the forward
+      // substitution on Sigma alone, solve_from_trailing()) against the
+      // plain sparse ones, on every dof.
+      std::vector<types::global_dof_index> all(condensed.n_dofs());
+      for (unsigned int i = 0; i < all.size(); ++i)
+        all[i] = i;
+      Vector<double> reference, condensed_whole;
+      plain.solve(load, reference);
+      condensed.solve(load, condensed_whole);
+      const double d_all =
+        largest_difference_on(all, condensed_whole, reference);
+      plain.solve_homogeneous(load, reference);
+      condensed.solve_homogeneous(load, condensed_whole);
+      const double d_all_homogeneous =
+        largest_difference_on(all, condensed_whole, reference);
+      std::cout << "  whole solve = plain solve on every dof (< 1e-10): "
+                << verdict(d_all < 1e-10 && d_all_homogeneous < 1e-10)
                 << std::endl;
       if (n_constrained > 0)
         {
