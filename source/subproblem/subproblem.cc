@@ -235,7 +235,6 @@ namespace bilayer
     constraints.close();
     homogeneous_constraints.close();
     start_load_parts(volume);
-
     const IndexSet on_sigma =
       DoFTools::extract_boundary_dofs(dofs,
                                       ComponentMask(),
