@@ -100,6 +100,8 @@ COMMANDS = {
     "composite_ply": {"command": RUN % "parameter_files/composite_ply.prm"},
     # docs/fracture.md §6 and README: Example 1 with friction (about a minute).
     "friction_study": {"command": "scripts/friction_study --output {out}/f"},
+    # docs/performance.md: the cost of a growth curve (about a minute).
+    "bench_growth": {"command": "scripts/bench_growth --no-outputs --repeat 2 --output {out}/b"},
     # README: the DCB debonding under a rising force (a few seconds).
     "dcb_growth": {"command": '{bilayer} parameter_files/dcb_growth.prm --set "Output/Output directory={out}/r" '
                               '--set "Output/Write VTU=false"'},
@@ -312,6 +314,10 @@ CLAIMS = [
     {"id": "fracture.friction.time", "doc": "docs/fracture.md", "fast": False,
      "pattern": Q("(15 runs in {} s; 2-core x86_64 dev VM"), "command": "friction_study",
      "extract": {"regex": r"bilayer runs in (\d+) s"}, "tolerance": ("factor", 2)},
+    {"id": "performance.growth.ratio", "doc": "docs/performance.md", "fast": False,
+     "pattern": Q("On the otherwise idle machine (ratio {}, the performance.growth.ratio"),
+     "command": "bench_growth", "extract": {"regex": r"wall \(b\) / wall \(a\) = (\S+)"},
+     "tolerance": ("factor", 1.5)},
     {"id": "readme.dcb_growth.onset", "doc": "README.md", "fast": True,
      "pattern": Q("the crack starts at the exact onset λ_c ≈ {} and runs"), "command": "dcb_growth",
      "extract": {"regex": r"unstable growth at lambda = (\S+) from"}, "tolerance": ("rounded",)},
