@@ -302,7 +302,8 @@ namespace bilayer
     const std::size_t n = data->n, m = schur->size(), first = n - m;
     schur->forward_solve(load);
     cholmod_dense *y = cholmod_zeros(n, 1, CHOLMOD_REAL, &data->common);
-    AssertThrow(y != nullptr, ExcMessage("CHOLMOD: out of memory"));
+    if (y == nullptr)
+      throw std::bad_alloc();
     std::copy(load.begin(), load.end(), static_cast<double *>(y->x) + first);
     // L^T z = y, then x = P^T z.
     cholmod_dense *z =

@@ -475,6 +475,14 @@ namespace bilayer
   ElasticSubproblem::solve(const Vector<double> &coupling,
                            Vector<double>       &solution) const
   {
+    if (condensed() && coupling.size() > 0)
+      {
+        // The solution without coupling (distributed) plus K^{-1} of the
+        // coupling load.
+        solve_coupling(coupling, solution);
+        solution += particular;
+        return;
+      }
     if (shared)
       {
         if (coupling.size() > 0)
@@ -483,14 +491,6 @@ namespace bilayer
           solution.reinit(n_dofs());
         homogeneous_constraints.condense(solution);
         shared->solve(solution, true);
-      }
-    else if (condensed() && coupling.size() > 0)
-      {
-        // The solution without coupling (distributed) plus K^{-1} of the
-        // coupling load.
-        solve_coupling(coupling, solution);
-        solution += particular;
-        return;
       }
     else
       {
@@ -512,7 +512,7 @@ namespace bilayer
   ElasticSubproblem::solve_homogeneous(const Vector<double> &coupling,
                                        Vector<double>       &solution) const
   {
-    if (!shared && condensed())
+    if (condensed())
       {
         solve_coupling(coupling, solution);
         return;
