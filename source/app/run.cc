@@ -35,6 +35,7 @@ namespace bilayer
     int
     refuse(const bool reporter, const std::string &message)
     {
+      wait_if_stopping();
       if (reporter)
         std::cerr << "bilayer: error: " << unanchored(message) << std::endl;
       return ExitStatus::error;
@@ -414,20 +415,24 @@ namespace bilayer
         }
       catch (const ExceptionBase &e)
         {
+          wait_if_stopping();
           std::cerr << "bilayer: error: " << unanchored(one_line_message(e))
                     << std::endl;
         }
       catch (const std::bad_alloc &)
         {
+          wait_if_stopping();
           std::cerr << "bilayer: error: out of memory (an allocation failed)"
                     << std::endl;
         }
       catch (const std::exception &e)
         {
+          wait_if_stopping();
           std::cerr << "bilayer: error: " << unanchored(e.what()) << std::endl;
         }
       catch (...)
         {
+          wait_if_stopping();
           std::cerr << "bilayer: error: unknown error" << std::endl;
         }
       // An error on one process would leave the others waiting; the

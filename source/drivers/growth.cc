@@ -84,6 +84,7 @@ namespace bilayer
     AssertThrow(fracture.growth != CrackGrowth::none,
                 ExcMessage("Study::run_growth needs Fracture/Crack growth"));
     growth_run       = true;
+    outputs.deferred = true;
     const bool sweep = fracture.growth == CrackGrowth::sweep;
 
     // Subproblems shared by groups of processes (more than four) keep the
@@ -98,6 +99,25 @@ namespace bilayer
         "(a subproblem shared by a group keeps the load of its set-up), got " +
         std::to_string(distribution.n_processes()));
 
+    // Factors that scale no load would repeat one state.
+    const auto  scales  = scene.loads.load_factor_scales;
+    const bool  nothing = scales == LoadParameters::Scaled::mechanical ?
+                            !has_mechanical_load() :
+                          scales == LoadParameters::Scaled::thermal ?
+                            !has_preload() :
+                            !has_mechanical_load() && !has_preload();
+    if (scaled && nothing)
+      throw CollectiveError(
+        std::string("Loads/Load factor scales = ") +
+        (scales == LoadParameters::Scaled::mechanical ? "mechanical" :
+         scales == LoadParameters::Scaled::thermal    ? "thermal" :
+                                                        "all") +
+        ": the scene has no such load, so the load factors change nothing; " +
+        (scales == LoadParameters::Scaled::mechanical && has_preload() ?
+           "set Loads/Load factor scales = thermal to scale the temperature "
+           "change and eigenstrains" :
+           "give the scene a load or choose what the factors scale"));
+
     // State 0: the meshes of the last cycle, the subproblems factorised
     // once for all steps.
     Timer       total;
@@ -111,42 +131,49 @@ namespace bilayer
     onsets_exact = !sweep && fracture.exact_onsets && proportional_loading();
     start_growth();
 
+    // Loading starts at 0. Under proportional loading the critical loads
+    // of the crack below the next load factor are steps of their own, each
+    // followed by the growth it starts; the first of them may lie below
+    // the first load factor (found by a probe at that factor).
     const std::vector<double> &factors = scene.loads.load_factors;
-    double                     lambda  = factors[0];
-    if (!solve_growth_step(first, lambda, "load", total))
-      return finish_growth(false);
-    for (unsigned int j = 0; j < factors.size(); ++j)
+    double                     lambda  = 0;
+    const auto                 step    = [&](const double       load,
+                            const std::string &kind) {
+      CycleRecord record;
+      return solve_growth_step(growth_steps.empty() ? first : record,
+                               load,
+                               kind,
+                               total);
+    };
+    try
       {
-        if (j > 0)
+        for (unsigned int j = 0; j < factors.size(); ++j)
           {
-            // Under proportional loading, the critical loads of the crack
-            // that lie before the next load factor are steps of their own
-            // (each followed by the growth it starts).
             while (onsets_exact)
               {
-                double onset = std::numeric_limits<double>::infinity();
-                for (const GrowthTip &tip : growth_steps.back().tips)
-                  if (tip.present && tip_may_grow(tip.number) &&
-                      followed[tip.number - 1].stopped.empty())
-                    onset = std::min(onset, tip.critical_load);
+                const double onset = growth_steps.empty() ?
+                                       probe_onset(first, factors[0]) :
+                                       next_onset();
                 if (!(onset > lambda * (1 + 1e-12) &&
                       onset < factors[j] * (1 - 1e-12)))
                   break;
                 lambda = onset;
-                CycleRecord record;
-                if (!solve_growth_step(record, lambda, "onset", total) ||
-                    !grow_at_load(lambda, total))
+                if (!step(lambda, "onset") || !grow_at_load(lambda, total))
                   return finish_growth(false);
                 if (growth_stopped())
                   break;
               }
             lambda = factors[j];
-            CycleRecord record;
-            if (!solve_growth_step(record, lambda, "load", total))
+            if (!step(lambda, "load") || !grow_at_load(lambda, total))
               return finish_growth(false);
           }
-        if (!grow_at_load(lambda, total))
-          return finish_growth(false);
+      }
+    catch (const RunFailure &)
+      {
+        // A step that cannot go on: the records so far, in summary.json
+        // too.
+        write_growth(true);
+        throw;
       }
     return finish_growth(true);
   }
@@ -205,6 +232,81 @@ namespace bilayer
   }
 
 
+  double
+  Study::next_onset()
+  {
+    double onset = std::numeric_limits<double>::infinity();
+    for (FollowedTip &tip : followed)
+      tip.onset = std::numeric_limits<double>::infinity();
+    for (const GrowthTip &tip : growth_steps.back().tips)
+      if (tip.present && tip_may_grow(tip.number) &&
+          followed[tip.number - 1].stopped.empty())
+        {
+          followed[tip.number - 1].onset = tip.critical_load;
+          onset = std::min(onset, tip.critical_load);
+        }
+    return onset;
+  }
+
+
+  double
+  Study::probe_onset(const CycleRecord &first, const double lambda)
+  {
+    if (!(lambda > 0))
+      return std::numeric_limits<double>::infinity();
+    // The state at lambda, solved and assessed but neither written nor
+    // printed: its critical loads are those of the crack (G ~ lambda^2).
+    CycleRecord probe = first;
+    const bool  shown = pcout.is_active();
+    pcout.set_condition(false);
+    try
+      {
+        set_load_factor(lambda);
+        set_up_interface(probe, nullptr);
+        solve(probe);
+        assess(probe);
+      }
+    catch (...)
+      {
+        pcout.set_condition(shown);
+        throw;
+      }
+    pcout.set_condition(shown);
+    double onset = std::numeric_limits<double>::infinity();
+    if (!probe.result.converged)
+      return onset;
+    for (unsigned int t = 0; t < probe.release.size() && t < followed.size();
+         ++t)
+      {
+        const EnergyReleaseRate &g = probe.release[t];
+        if (!tip_may_grow(followed[t].number) || !g.tip.defined() ||
+            !std::isfinite(g.G))
+          continue;
+        const GrowthCriterion f = criterion_at(g);
+        if (f.undefined.empty())
+          {
+            followed[t].onset = critical_load_factor(f, lambda);
+            onset             = std::min(onset, followed[t].onset);
+          }
+      }
+    return onset;
+  }
+
+
+  GrowthCriterion
+  Study::criterion_at(const EnergyReleaseRate &g) const
+  {
+    const FractureParameters &fracture = scene.fracture;
+    return growth_criterion(
+      fracture.mixed_mode_law,
+      fracture.mixed_mode_exponent,
+      g,
+      fracture.toughness_at(g.tip.point, g.tip.s),
+      fracture.mode_ii_toughness_at(g.tip.point, g.tip.s),
+      split_resolution(scene.solver.acceptance_tolerance));
+  }
+
+
   bool
   Study::estimates_error(const CycleRecord &record) const
   {
@@ -239,11 +341,21 @@ namespace bilayer
   {
     const unsigned int step = growth_steps.size();
     if (step >= scene.fracture.maximum_growth_steps)
-      throw RunFailure(step,
-                       "the crack still grows after Fracture/Maximum growth "
-                       "steps = " +
-                         std::to_string(scene.fracture.maximum_growth_steps) +
-                         " steps");
+      {
+        const std::string limit =
+          "Fracture/Maximum growth steps = " +
+          std::to_string(scene.fracture.maximum_growth_steps);
+        std::ostringstream at;
+        at << std::setprecision(8) << lambda;
+        throw RunFailure(step,
+                         kind == "growth" ?
+                           "the crack still grows (at load factor " +
+                             at.str() + ") after " + limit + " steps" :
+                           limit + " steps reached before the load factors "
+                                   "are done (the next: " +
+                             at.str() +
+                             "): raise it, or give fewer Loads/Load factor");
+      }
     Timer timer;
     set_load_factor(lambda);
     MultiplierSpace::Functions previous;
@@ -268,17 +380,8 @@ namespace bilayer
     const bool accepted =
       solve_state(record, warm ? &previous : nullptr, step > 0 ? timer : total)
         .accepted();
-    try
-      {
-        growth_steps.push_back(growth_step(cycle_records.back(), lambda, kind));
-      }
-    catch (const RunFailure &)
-      {
-        // The record of the step that cannot go on, in summary.json too.
-        write_growth();
-        throw;
-      }
-    write_growth();
+    growth_steps.push_back(growth_step(cycle_records.back(), lambda, kind));
+    write_growth(false);
     print_growth_step(growth_steps.back());
     return accepted;
   }
@@ -334,18 +437,20 @@ namespace bilayer
           followed_tip.stopped = "G not resolved: " + g->unresolved;
         else
           {
-            const GrowthCriterion f =
-              growth_criterion(fracture.mixed_mode_law,
-                               fracture.mixed_mode_exponent,
-                               *g,
-                               fracture.toughness_at(tip.point, tip.s),
-                               fracture.mode_ii_toughness_at(tip.point, tip.s));
+            const GrowthCriterion f = criterion_at(*g);
             if (!f.undefined.empty() && tip_may_grow(tip.number))
               throw RunFailure(step.step,
                                "Fracture/Mixed-mode law: tip " +
                                  std::to_string(tip.number) + ": " +
                                  f.undefined);
             tip.criterion = f.value;
+            // At an onset step, the tips whose critical load it is are
+            // critical by construction (G of the new solve differs from
+            // the prediction by the solver's tolerance, not by physics).
+            tip.critical =
+              is_critical(f) ||
+              (kind == "onset" &&
+               std::abs(followed_tip.onset - lambda) <= 1e-12 * lambda);
             if (onsets_exact || fracture.growth == CrackGrowth::sweep)
               if (proportional_loading())
                 tip.critical_load = critical_load_factor(f, lambda);
@@ -353,7 +458,7 @@ namespace bilayer
         tip.status =
           !tip_may_grow(tip.number)     ? "held" :
           !followed_tip.stopped.empty() ? "stopped: " + followed_tip.stopped :
-          tip.criterion >= 1 - growth_criterion_tolerance ? "critical" :
+          tip.critical                  ? "critical" :
                                                             "below critical";
         step.tips.push_back(tip);
       }
@@ -375,7 +480,7 @@ namespace bilayer
           {
             const FollowedTip &f = followed[tip.number - 1];
             if (tip.present && f.stopped.empty() && tip_may_grow(tip.number) &&
-                (sweep || tip.criterion >= 1 - growth_criterion_tolerance))
+                (sweep || tip.critical))
               growing.push_back(tip.number - 1);
           }
         if (growing.empty() || !advance_tips(growing))

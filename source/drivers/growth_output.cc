@@ -1,6 +1,7 @@
-// The outputs of the growth driver: growth.csv and the "growth" object of
-// summary.json after every step, the terminal's line per step and the end
-// of the run.
+// The outputs of the growth driver: growth.csv, appended to step by step,
+// summary.json with its "growth" object, the tables and the collections
+// (.pvd, .xdmf) at the end; the terminal's line per step and the end of the
+// run.
 
 #include <deal.II/base/utilities.h>
 
@@ -24,26 +25,44 @@ namespace bilayer
 
 
   void
-  Study::write_growth()
+  Study::write_growth(const bool final)
   {
     const std::string &dir = scene.output.directory;
     std::string        failure;
     if (distribution.is_root())
       try
         {
-          write_atomically(dir + "/growth.csv", [&](std::ostream &o) {
-            write_growth_csv(o,
-                             growth_steps,
-                             followed.size(),
-                             scene.output.displacement_points.size());
-          });
-          const std::string growth = growth_json(growth_mode(),
-                                                 growth_steps,
-                                                 unstable_runs(growth_steps),
-                                                 growth_stop);
-          write_atomically(dir + "/summary.json", [&](std::ostream &o) {
-            write_summary_json(o, scene.name, cycle_records, growth);
-          });
+          // growth.csv grows by the rows of the steps that no longer change
+          // (all but the last until the end; a step is marked unstable when
+          // the next one grows at its load): a constant number of bytes per
+          // step. The rest is written once, at the end.
+          const std::size_t done =
+            final || growth_steps.empty() ? growth_steps.size() :
+                                            growth_steps.size() - 1;
+          const unsigned int n_tips   = followed.size();
+          const unsigned int n_points = scene.output.displacement_points.size();
+          if (!growth_head_written || growth_rows_written < done)
+            append_to(dir + "/growth.csv", [&](std::ostream &o) {
+              if (!growth_head_written)
+                write_growth_csv_head(o, n_tips, n_points);
+              for (std::size_t k = growth_rows_written; k < done; ++k)
+                write_growth_csv_row(o, growth_steps[k], n_tips, n_points);
+            });
+          growth_head_written = true;
+          growth_rows_written = done;
+          if (final)
+            {
+              const std::string growth =
+                growth_json(growth_mode(),
+                            growth_steps,
+                            unstable_runs(growth_steps),
+                            growth_stop);
+              write_atomically(dir + "/summary.json", [&](std::ostream &o) {
+                write_summary_json(o, scene.name, cycle_records, growth);
+              });
+              write_tables();
+              write_collections(dir, outputs);
+            }
         }
       catch (const ExceptionBase &e)
         {
@@ -101,7 +120,7 @@ namespace bilayer
     if (passed && scene.output.written_steps_last &&
         !scene.output.writes_step(last) && !growth_steps.empty())
       write_step_fields(last);
-    write_growth();
+    write_growth(true);
     const std::vector<UnstableRun> runs = unstable_runs(growth_steps);
     pcout << "growth: " << growth_steps.size() << " steps, " << growth_stop;
     for (const UnstableRun &run : runs)

@@ -27,13 +27,52 @@ namespace bilayer
                              " is shared by a group of processes (more than "
                              "four processes): the load factor stays 1; run "
                              "with at most four processes to scale the load"));
-    lambda = new_lambda;
+    lambda                  = new_lambda;
+    const double mechanical = scene.loads.mechanical_factor(lambda);
+    const double thermal    = scene.loads.thermal_factor(lambda);
     for (const auto &load : volume_loads)
       if (load)
-        load->set_load_factor(lambda);
+        load->set_load_factor(mechanical, thermal);
     for (const auto &sub : subproblems)
       if (sub)
-        sub->set_load_factor(lambda);
+        sub->set_load_factor(mechanical, thermal);
+  }
+
+
+  bool
+  Study::has_preload() const
+  {
+    for (const Layer layer : {Layer::first, Layer::second})
+      if (scene.materials.has_layer(layer))
+        {
+          const unsigned int l = static_cast<unsigned int>(layer);
+          if (!expressions::is_zero(scene.loads.eigenstrain[l]))
+            return true;
+          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+            if (scene.loads.has_thermal_load(
+                  scene.materials.material(layer, sd)))
+              return true;
+        }
+    return false;
+  }
+
+
+  bool
+  Study::has_mechanical_load() const
+  {
+    const LoadParameters &loads = scene.loads;
+    for (const Layer layer : {Layer::first, Layer::second})
+      if (scene.materials.has_layer(layer))
+        {
+          const unsigned int l = static_cast<unsigned int>(layer);
+          if (!expressions::is_zero(loads.body_force[l]) ||
+              !expressions::is_zero(loads.prescribed[l]))
+            return true;
+          for (unsigned int i = 0; i < loads.parts.size(); ++i)
+            if (!loads.traction_is_zero(layer, i))
+              return true;
+        }
+    return false;
   }
 
 
@@ -42,17 +81,16 @@ namespace bilayer
   {
     if (scene.contact.frictional())
       return false;
-    for (const Layer layer : {Layer::first, Layer::second})
-      if (scene.materials.has_layer(layer))
-        {
-          const unsigned int l = static_cast<unsigned int>(layer);
-          if (!expressions::is_zero(scene.loads.eigenstrain[l]))
-            return false;
-          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
-            if (scene.loads.has_thermal_load(
-                  scene.materials.material(layer, sd)))
-              return false;
-        }
-    return true;
+    // Every load present is scaled by lambda: the solution is lambda times
+    // that at 1, G goes with lambda^2.
+    switch (scene.loads.load_factor_scales)
+      {
+        case LoadParameters::Scaled::mechanical:
+          return !has_preload();
+        case LoadParameters::Scaled::thermal:
+          return !has_mechanical_load();
+        default:
+          return true;
+      }
   }
 } // namespace bilayer

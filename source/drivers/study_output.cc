@@ -122,7 +122,8 @@ namespace bilayer
           error = changed;
       }
     if (!error.empty())
-      throw CollectiveError("writing the results of cycle " +
+      throw CollectiveError(std::string("writing the results of ") +
+                            (growth_run ? "step " : "cycle ") +
                             std::to_string(record.cycle) + " failed: " + error);
   }
 
@@ -194,6 +195,16 @@ namespace bilayer
       write_atomically(dir + "/summary.json", [&](std::ostream &o) {
         write_summary_json(o, scene.name, cycle_records);
       });
+    // (A growth run writes its tables once, at the end: write_growth().)
+    if (!growth_run)
+      write_tables();
+  }
+
+
+  void
+  Study::write_tables()
+  {
+    const std::string &dir = scene.output.directory;
     write_atomically(dir + "/table.txt", [&](std::ostream &o) {
       write_tip_notes(o);
       table.write_text(o, TableHandler::org_mode_table);

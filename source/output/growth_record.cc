@@ -7,10 +7,9 @@
 namespace bilayer
 {
   void
-  write_growth_csv(std::ostream                  &out,
-                   const std::vector<GrowthStep> &steps,
-                   const unsigned int             n_tips,
-                   const unsigned int             n_points)
+  write_growth_csv_head(std::ostream      &out,
+                        const unsigned int n_tips,
+                        const unsigned int n_points)
   {
     out << "# kind: load (a load factor), onset (the critical load of the "
            "crack), growth (the crack advanced at the load before); "
@@ -38,49 +37,67 @@ namespace bilayer
                               "status"})
         out << ",tip" << t << "_" << key;
     out << '\n';
-    for (const GrowthStep &step : steps)
+  }
+
+
+  void
+  write_growth_csv_row(std::ostream      &out,
+                       const GrowthStep  &step,
+                       const unsigned int n_tips,
+                       const unsigned int n_points)
+  {
+    out << step.step << ',' << json_number(step.load_factor) << ','
+        << step.kind << ',' << (step.unstable ? 1 : 0) << ','
+        << json_number(step.energy) << ','
+        << json_number(step.conjugate_displacement) << ','
+        << json_number(step.crack_length);
+    for (unsigned int p = 0; p < n_points; ++p)
+      for (unsigned int d = 0; d < 2; ++d)
+        out << ','
+            << (p < step.point_displacements.size() ?
+                  json_number(step.point_displacements[p][d]) :
+                  std::string("null"));
+    for (unsigned int t = 0; t < n_tips; ++t)
       {
-        out << step.step << ',' << json_number(step.load_factor) << ','
-            << step.kind << ',' << (step.unstable ? 1 : 0) << ','
-            << json_number(step.energy) << ','
-            << json_number(step.conjugate_displacement) << ','
-            << json_number(step.crack_length);
-        for (unsigned int p = 0; p < n_points; ++p)
-          for (unsigned int d = 0; d < 2; ++d)
-            out << ','
-                << (p < step.point_displacements.size() ?
-                      json_number(step.point_displacements[p][d]) :
-                      std::string("null"));
-        for (unsigned int t = 0; t < n_tips; ++t)
+        const GrowthTip *tip = nullptr;
+        for (const GrowthTip &candidate : step.tips)
+          if (candidate.number == t + 1 && candidate.present)
+            tip = &candidate;
+        if (!tip)
           {
-            const GrowthTip *tip = nullptr;
-            for (const GrowthTip &candidate : step.tips)
-              if (candidate.number == t + 1 && candidate.present)
-                tip = &candidate;
-            if (!tip)
-              {
-                out << std::string(10, ',');
-                continue;
-              }
-            for (const double value : {tip->s,
-                                       tip->point[0],
-                                       tip->point[1],
-                                       tip->G,
-                                       tip->G_I,
-                                       tip->G_II,
-                                       tip->criterion,
-                                       tip->critical_load,
-                                       tip->piece_length})
-              out << ',' << json_number(value);
-            // A status has no commas (a CSV cell).
-            std::string status = tip->status;
-            for (char &c : status)
-              if (c == ',')
-                c = ';';
-            out << ',' << status;
+            out << std::string(10, ',');
+            continue;
           }
-        out << '\n';
+        for (const double value : {tip->s,
+                                   tip->point[0],
+                                   tip->point[1],
+                                   tip->G,
+                                   tip->G_I,
+                                   tip->G_II,
+                                   tip->criterion,
+                                   tip->critical_load,
+                                   tip->piece_length})
+          out << ',' << json_number(value);
+        // A status has no commas (a CSV cell).
+        std::string status = tip->status;
+        for (char &c : status)
+          if (c == ',')
+            c = ';';
+        out << ',' << status;
       }
+    out << '\n';
+  }
+
+
+  void
+  write_growth_csv(std::ostream                  &out,
+                   const std::vector<GrowthStep> &steps,
+                   const unsigned int             n_tips,
+                   const unsigned int             n_points)
+  {
+    write_growth_csv_head(out, n_tips, n_points);
+    for (const GrowthStep &step : steps)
+      write_growth_csv_row(out, step, n_tips, n_points);
   }
 
 

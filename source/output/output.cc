@@ -117,6 +117,41 @@ namespace bilayer
   }
 
 
+  void
+  append_to(const std::string                         &path,
+            const std::function<void(std::ostream &)> &writer)
+  {
+    std::error_code   error;
+    const auto        before = std::filesystem::exists(path, error) ?
+                                 std::filesystem::file_size(path, error) :
+                                 std::uintmax_t(0);
+    const std::size_t kept   = error ? 0 : before;
+    const auto        failed = [&](const std::string &what) {
+      const std::string why = errno != 0 ? std::strerror(errno) : "unknown";
+      // The file as it was before this call.
+      std::error_code ignored;
+      if (std::filesystem::exists(path, ignored))
+        std::filesystem::resize_file(path, kept, ignored);
+      return ExcMessage(what + " '" + path + "': " + why);
+    };
+    errno = 0;
+    std::ofstream out(path, std::ios::app);
+    AssertThrow(out, failed("cannot open"));
+    try
+      {
+        writer(out);
+      }
+    catch (const ExceptionBase &)
+      {
+        out.setstate(std::ios::badbit);
+      }
+    out.flush();
+    AssertThrow(out, failed("cannot write"));
+    out.close();
+    AssertThrow(out, failed("cannot write"));
+  }
+
+
   namespace
   {
     /// The XDMF file of all cycles: a temporal collection of spatial
@@ -361,9 +396,10 @@ namespace bilayer
                          first.write_pvtu_record(out, pieces);
                        });
       records.pvd.emplace_back(cycle, stem + ".pvtu");
-      write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
-        DataOutBase::write_pvd_record(out, records.pvd);
-      });
+      if (!records.deferred)
+        write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
+          DataOutBase::write_pvd_record(out, records.pvd);
+        });
     }
 
 
@@ -379,8 +415,9 @@ namespace bilayer
       for (const auto &grid : grids)
         content.push_back(grid.second);
       records.xdmf.emplace_back(cycle, content);
-      write_atomically(directory + "/solution.xdmf",
-                       [&](std::ostream &out) { write_xdmf(out, records); });
+      if (!records.deferred)
+        write_atomically(directory + "/solution.xdmf",
+                         [&](std::ostream &out) { write_xdmf(out, records); });
     }
   } // namespace
 
@@ -553,8 +590,26 @@ namespace bilayer
         patches, names, ranges, DataOutBase::VtkFlags(), out);
     });
     records.interface_pvd.emplace_back(cycle, name.str());
-    write_atomically(directory + "/interface.pvd", [&](std::ostream &out) {
-      DataOutBase::write_pvd_record(out, records.interface_pvd);
-    });
+    if (!records.deferred)
+      write_atomically(directory + "/interface.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, records.interface_pvd);
+      });
+  }
+
+
+  void
+  write_collections(const std::string &directory, const SolutionRecords &records)
+  {
+    if (!records.pvd.empty())
+      write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, records.pvd);
+      });
+    if (!records.xdmf.empty())
+      write_atomically(directory + "/solution.xdmf",
+                       [&](std::ostream &out) { write_xdmf(out, records); });
+    if (!records.interface_pvd.empty())
+      write_atomically(directory + "/interface.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, records.interface_pvd);
+      });
   }
 } // namespace bilayer

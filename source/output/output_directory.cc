@@ -261,7 +261,7 @@ namespace bilayer
   StagedDirectory::is_output_name(const std::string &name, const bool temporary)
   {
     static const std::regex output(
-      "(used_parameters\\.prm|summary\\.json|table\\.(txt|tex|csv)|"
+      "(used_parameters\\.prm|summary\\.json|table\\.(txt|tex|csv)|growth\\.csv|"
       "interface\\.pvd|solution\\.(pvd|xdmf)|interface-[0-9]{2,}\\.(csv|vtu)|"
       "solution-[0-9]{2,}\\.pvtu|"
       "solution-[0-9]{2,}-[uv]-(minus|plus)(\\.[0-9]+)?\\.(vtu|h5))");
@@ -564,11 +564,14 @@ namespace bilayer
     /// Per signal of stop_signals: ignored when the program started.
     bool ignored_at_start[3] = {false, false, false};
     int  stop_pipe[2]        = {-1, -1};
+    /// Set by the signal handler: the watching thread is ending the run.
+    volatile std::sig_atomic_t stop_requested = 0;
 
     extern "C" void
     on_stop_signal(int signal)
     {
       // (Async-signal-safe: the watching thread does the work.)
+      stop_requested                       = 1;
       const int                      saved = errno;
       const unsigned char            byte  = static_cast<unsigned char>(signal);
       [[maybe_unused]] const ssize_t n     = ::write(stop_pipe[1], &byte, 1);
@@ -604,6 +607,18 @@ namespace bilayer
     pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
     std::raise(signal);
     std::_Exit(128 + signal);
+  }
+
+
+  void
+  wait_if_stopping()
+  {
+    // The watching thread removes the staging directory, says why in one
+    // line and ends the process: an error of the run caused by that (a
+    // file written while the directory goes) is not a second line.
+    if (stop_requested)
+      while (true)
+        ::pause();
   }
 
 

@@ -177,10 +177,19 @@ namespace bilayer
       Patterns::Anything(),
       "The load factors lambda [-] of Fracture/Crack growth: a ','-separated "
       "list of numbers >= 0 (increasing with quasi-static growth; one with "
-      "sweep), or start:step:end (step > 0). lambda multiplies the "
-      "tractions, body forces and prescribed displacements; the temperature "
-      "change and the eigenstrains stay as given (a preload). Without crack "
-      "growth only 1.");
+      "sweep), or start:step:end (step > 0). lambda multiplies the loads "
+      "that Loads/Load factor scales names; the others stay as given (a "
+      "preload). Without crack growth only 1.");
+    prm.declare_entry(
+      "Load factor scales",
+      "mechanical",
+      Patterns::Selection("mechanical|thermal|all"),
+      "What Loads/Load factor multiplies: 'mechanical' the tractions, body "
+      "forces and prescribed displacements (the temperature change and the "
+      "eigenstrains are a preload); 'thermal' the temperature change and the "
+      "eigenstrains (the mechanical loads are the preload: lambda is a "
+      "factor of dT, e.g. the critical temperature drop of a film); 'all' "
+      "every load. A growth run whose factors scale no load is refused.");
     for (unsigned int l = 0; l < 2; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
@@ -255,7 +264,11 @@ namespace bilayer
     };
 
     prm.enter_subsection("Loads");
-    load_factors = parse_load_factors(prm.get("Load factor"));
+    load_factors       = parse_load_factors(prm.get("Load factor"));
+    const std::string scales = prm.get("Load factor scales");
+    load_factor_scales = scales == "thermal" ? Scaled::thermal :
+                         scales == "all"     ? Scaled::all :
+                                               Scaled::mechanical;
     constants    = prm.get("Constants");
     AssertThrow(constants.size() <= expressions::max_length,
                 ExcMessage("Loads/Constants: longer than " +

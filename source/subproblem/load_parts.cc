@@ -15,7 +15,8 @@ namespace bilayer
   void
   ElasticSubproblem::start_load_parts(const VolumeLoad *volume)
   {
-    load_factor_ = 1;
+    load_factor_    = 1;
+    preload_factor_ = 1;
     has_preload_ = volume != nullptr && volume->has_eigenstrain();
     inhomogeneities.clear();
     for (const auto &line : constraints.get_lines())
@@ -54,24 +55,28 @@ namespace bilayer
 
 
   void
-  ElasticSubproblem::set_load_factor(const double lambda)
+  ElasticSubproblem::set_load_factor(const double lambda, const double preload)
   {
-    AssertThrow(std::isfinite(lambda),
+    AssertThrow(std::isfinite(lambda) && std::isfinite(preload),
                 ExcMessage("the load factor of subproblem " + name() +
                            " must be a finite number"));
-    AssertThrow(lambda == 1 || distribution.group_size(index()) <= 1,
+    AssertThrow((lambda == 1 && preload == 1) ||
+                  distribution.group_size(index()) <= 1,
                 ExcMessage("subproblem " + name() +
                            " is shared by a group of processes (more than "
                            "four processes): its load factor stays 1; run "
                            "with at most four processes to scale the load"));
-    if (lambda == load_factor_)
+    // (Without a preload, @p preload scales nothing.)
+    const double p = has_preload_ ? preload : 1.;
+    if (lambda == load_factor_ && p == preload_factor_)
       return;
-    load_factor_ = lambda;
+    load_factor_    = lambda;
+    preload_factor_ = p;
     for (const auto &[i, value] : inhomogeneities)
       constraints.set_inhomogeneity(i, lambda * value);
     if (!owned() || shared)
       return;
-    if (has_preload_ && lambda == 1)
+    if (has_preload_ && lambda == 1 && preload_factor_ == 1)
       {
         system_rhs  = rhs_at_one;
         load_vector = load_at_one;
@@ -82,11 +87,13 @@ namespace bilayer
         load_vector.equ(lambda, unit_load);
         if (has_preload_)
           {
-            system_rhs += preload_rhs;
-            load_vector += preload_load;
+            system_rhs.add(preload_factor_, preload_rhs);
+            load_vector.add(preload_factor_, preload_load);
           }
       }
     if (condensed())
       solve(Vector<double>(), particular);
   }
+
+
 } // namespace bilayer

@@ -636,7 +636,12 @@ namespace bilayer
       0.5 * energy_norm_squared(w) -
       (shared ? shared->load_product(w) : ordered_dot(load_vector, w));
     // (Without an eigenstrain exactly the sum above, bit for bit.)
-    return eigenstrain_energy_ == 0 ? energy : energy + eigenstrain_energy_;
+    // (The eigenstrain energy of setup() is quadratic in the preload.)
+    return eigenstrain_energy_ == 0 ? energy :
+           preload_factor_ == 1 ?
+                                      energy + eigenstrain_energy_ :
+                                      energy + preload_factor_ * preload_factor_ *
+                                                 eigenstrain_energy_;
   }
 
 
@@ -652,5 +657,18 @@ namespace bilayer
         return shared->load_product(w);
       }
     return ordered_dot(unit_load, w);
+  }
+
+
+  double
+  ElasticSubproblem::preload_work(const Vector<double> &w) const
+  {
+    if (!has_preload_)
+      return 0;
+    AssertThrow(!shared && preload_load.size() == w.size(),
+                ExcMessage("preload_work: subproblem " + name() +
+                           " is shared by a group of processes; its preload "
+                           "is not kept"));
+    return ordered_dot(preload_load, w);
   }
 } // namespace bilayer

@@ -14,12 +14,14 @@
 #include <bilayer/output/output.h>
 #include <bilayer/parameters/parameters.h>
 #include <bilayer/postprocess/fracture.h>
+#include <bilayer/postprocess/growth_law.h>
 #include <bilayer/solvers/outer_solver.h>
 #include <bilayer/subproblem/distribution.h>
 #include <bilayer/subproblem/subproblem.h>
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <utility>
@@ -107,9 +109,19 @@ namespace bilayer
      * material that expands) and no friction (Contact/Friction on the
      * crack faces = none); the contact conditions without an initial gap
      * are positively homogeneous. (For lambda < 0 only without contact.)
+     * With Loads/Load factor scales = thermal: no mechanical load instead
+     * of no preload; with all, any load.
      */
     bool
     proportional_loading() const;
+    /// Whether a present layer has an eigenstrain or a temperature change
+    /// on a material that expands.
+    bool
+    has_preload() const;
+    /// Whether a present layer has a traction, body force or prescribed
+    /// displacement.
+    bool
+    has_mechanical_load() const;
 
     /**
      * The growth driver (Fracture/Crack growth = quasi-static or sweep,
@@ -209,6 +221,9 @@ namespace bilayer
       double       s = 0, sign = 1;
       bool         present = true;
       std::string  stopped;
+      /// The critical load predicted for the tip by the step before (or
+      /// the probe): an onset step at it makes the tip critical.
+      double onset = std::numeric_limits<double>::infinity();
     };
     bool                      growth_run = false, onsets_exact = false;
     std::vector<GrowthStep>   growth_steps;
@@ -216,6 +231,9 @@ namespace bilayer
     std::vector<double>       sigma_vertices;
     std::vector<unsigned int> point_subproblems;
     std::string               growth_stop;
+    /// What growth.csv holds: its head, and the rows of this many steps.
+    bool        growth_head_written = false;
+    std::size_t growth_rows_written = 0;
 
     /// The followed tips, Sigma's vertices and the points' subproblems.
     void
@@ -241,6 +259,17 @@ namespace bilayer
     growth_step(const CycleRecord &record,
                 const double       lambda,
                 const std::string &kind);
+    /// The smallest critical load of the growing tips of the last step.
+    double
+    next_onset();
+    /// The smallest critical load of the growing tips of the crack at the
+    /// start, from a state solved at @p lambda on the meshes of @p first
+    /// and neither written nor printed (infinite if none or lambda = 0).
+    double
+    probe_onset(const CycleRecord &first, const double lambda);
+    /// The criterion of Fracture/Mixed-mode law at the tip of @p g.
+    GrowthCriterion
+    criterion_at(const EnergyReleaseRate &g) const;
     /// Growth at the load @p lambda until every criterion is below 1.
     bool
     grow_at_load(const double lambda, const dealii::Timer &total);
@@ -255,8 +284,14 @@ namespace bilayer
     point_subproblem(const dealii::Point<2> &p) const;
     std::string
     growth_mode() const;
+    /// growth.csv's rows of the steps that are final; with @p final (the
+    /// end of the run, or a failure) all of them, summary.json, the tables
+    /// and the collections.
     void
-    write_growth();
+    write_growth(const bool final);
+    /// table.txt, table.tex and table.csv of the records so far.
+    void
+    write_tables();
     void
     print_growth_step(const GrowthStep &step) const;
     bool

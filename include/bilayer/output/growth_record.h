@@ -33,6 +33,9 @@ namespace bilayer
     double           G_II = std::numeric_limits<double>::quiet_NaN();
     /// The value of the growth criterion (1: critical; Mixed-mode law).
     double criterion = std::numeric_limits<double>::quiet_NaN();
+    /// Whether the criterion holds (is_critical(): the load within the
+    /// tolerance of the critical load).
+    bool critical = false;
     /// The load factor at which the criterion reaches 1 for this crack,
     /// under proportional loading (NaN with a preload; infinite where
     /// nothing is released).
@@ -75,6 +78,20 @@ namespace bilayer
     /// The crack length where it started and where it stopped.
     double from_length = 0, to_length = 0;
   };
+
+  /// The head of growth.csv ('#' lines and the header): tip columns for
+  /// @p n_tips tips, point columns for @p n_points points.
+  void
+  write_growth_csv_head(std::ostream      &out,
+                        const unsigned int n_tips,
+                        const unsigned int n_points);
+
+  /// One row of growth.csv: @p step.
+  void
+  write_growth_csv_row(std::ostream      &out,
+                       const GrowthStep  &step,
+                       const unsigned int n_tips,
+                       const unsigned int n_points);
 
   /// growth.csv: '#' lines (what the columns mean), the header and one row
   /// per step; tip columns for @p n_tips tips (empty cells where a tip is

@@ -60,6 +60,15 @@ namespace bilayer
   write_atomically(const std::string                         &path,
                    const std::function<void(std::ostream &)> &writer);
 
+  /**
+   * Append what @p writer writes to the file @p path (created if missing);
+   * where that fails, the file is cut back to its length before the call
+   * and the failure thrown (one line naming the file).
+   */
+  void
+  append_to(const std::string                         &path,
+            const std::function<void(std::ostream &)> &writer);
+
   /// What write_solution() keeps from cycle to cycle.
   struct SolutionRecords
   {
@@ -69,6 +78,11 @@ namespace bilayer
     std::vector<std::pair<unsigned int, std::vector<std::string>>> xdmf;
     /// (cycle, interface-NN.vtu) for interface.pvd.
     std::vector<std::pair<double, std::string>> interface_pvd;
+    /// Whether the collections (solution.pvd, solution.xdmf,
+    /// interface.pvd) wait for write_collections() instead of being
+    /// rewritten whole with every cycle: a growth run of many steps writes
+    /// a constant number of bytes per step.
+    bool deferred = false;
   };
 
   /**
@@ -111,6 +125,12 @@ namespace bilayer
                       const unsigned int                cycle,
                       const std::vector<InterfaceNode> &nodes,
                       SolutionRecords                  &records);
+
+  /// solution.pvd, solution.xdmf and interface.pvd of the cycles in
+  /// @p records (those with a cycle written; first process).
+  void
+  write_collections(const std::string     &directory,
+                    const SolutionRecords &records);
 } // namespace bilayer
 
 #endif

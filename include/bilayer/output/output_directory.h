@@ -178,6 +178,15 @@ namespace bilayer
    */
   void
   watch_stop_signals(const bool report);
+
+  /**
+   * Where a stop signal has arrived (watch_stop_signals()), wait for the
+   * watching thread to end the process: called before an error line is
+   * printed, so that a run stopped while it writes reports the stop alone.
+   * Returns at once otherwise.
+   */
+  void
+  wait_if_stopping();
 } // namespace bilayer
 
 #endif

@@ -43,10 +43,32 @@ namespace bilayer
     /// Loads/Temperature change, dT(x, y) [K] (every layer)
     std::string temperature_change = "0";
     /// Loads/Load factor: the factors lambda of the proportional loads
-    /// (tractions, body forces, prescribed displacements) in order, the
-    /// temperature change and the eigenstrains fixed (Fracture/Crack
-    /// growth).
+    /// in order (Fracture/Crack growth); what they scale is
+    /// load_factor_scales.
     std::vector<double> load_factors = {1.};
+    /// Loads/Load factor scales: what lambda multiplies.
+    enum class Scaled
+    {
+      /// tractions, body forces, prescribed displacements (the default)
+      mechanical,
+      /// the temperature change and the eigenstrains
+      thermal,
+      /// both
+      all
+    };
+    Scaled load_factor_scales = Scaled::mechanical;
+    /// The factors of the mechanical loads and of the thermal loads and
+    /// eigenstrains at the load factor @p lambda.
+    double
+    mechanical_factor(const double lambda) const
+    {
+      return load_factor_scales == Scaled::thermal ? 1. : lambda;
+    }
+    double
+    thermal_factor(const double lambda) const
+    {
+      return load_factor_scales == Scaled::mechanical ? 1. : lambda;
+    }
 
     /// The evaluated constants (material constants included).
     std::map<std::string, double> constant_values;

@@ -111,7 +111,8 @@ namespace bilayer
   /**
    * A VolumeLoad under a load factor lambda: the body force lambda f (a
    * proportional load) and the eigenstrain eps* of the load it holds
-   * unscaled (a preload, as the thermal strain): every reader of the body
+   * unscaled (a preload, as the thermal strain), or scaled by a factor of
+   * its own (Loads/Load factor scales): every reader of the body
    * force (the energy release rate, the error estimator) sees lambda f,
    * while ElasticSubproblem::setup() assembles unit_load(). With lambda = 1
    * every value is that of the held load, bit for bit.
@@ -123,11 +124,14 @@ namespace bilayer
       : load(std::move(load))
     {}
 
-    /// Set lambda (any finite number; 1 after construction).
+    /// Set lambda (any finite number; 1 after construction), and the
+    /// factor @p preload of the eigenstrain (1: held; Loads/Load factor
+    /// scales = thermal or all).
     void
-    set_load_factor(const double lambda)
+    set_load_factor(const double lambda, const double preload = 1)
     {
-      factor = lambda;
+      factor         = lambda;
+      preload_factor = preload;
     }
 
     double
@@ -145,13 +149,14 @@ namespace bilayer
     dealii::SymmetricTensor<2, 2>
     eigenstrain(const dealii::Point<2> &p) const override
     {
-      return load->eigenstrain(p);
+      return preload_factor == 1 ? load->eigenstrain(p) :
+                                   preload_factor * load->eigenstrain(p);
     }
 
     double
     eigenstress_zz(const dealii::Point<2> &p) const override
     {
-      return load->eigenstress_zz(p);
+      return preload_factor * load->eigenstress_zz(p);
     }
 
     bool
@@ -181,7 +186,11 @@ namespace bilayer
     std::array<dealii::SymmetricTensor<2, 2>, 2>
     eigenstrain_gradient(const dealii::Point<2> &p) const override
     {
-      return load->eigenstrain_gradient(p);
+      auto gradient = load->eigenstrain_gradient(p);
+      if (preload_factor != 1)
+        for (auto &g : gradient)
+          g *= preload_factor;
+      return gradient;
     }
 
     const VolumeLoad &
@@ -192,7 +201,7 @@ namespace bilayer
 
   private:
     std::unique_ptr<VolumeLoad> load;
-    double                      factor = 1;
+    double                      factor = 1, preload_factor = 1;
   };
 } // namespace bilayer
 

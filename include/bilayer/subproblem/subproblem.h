@@ -211,9 +211,12 @@ namespace bilayer
      * A subproblem shared by a group of processes (distributed(): more
      * than four processes) refuses lambda != 1. Every process calls it
      * (the constraints of every subproblem are kept everywhere).
+     * @p preload scales F_pre the same way (Loads/Load factor scales =
+     * thermal or all: the load becomes lambda F_1 + preload F_pre; it
+     * scales nothing in a subproblem without a preload).
      */
     void
-    set_load_factor(const double lambda);
+    set_load_factor(const double lambda, const double preload = 1);
 
     /// The load factor of set_load_factor() (1 after setup()).
     double
@@ -232,6 +235,11 @@ namespace bilayer
      */
     double
     load_work(const dealii::Vector<double> &w) const;
+
+    /// (F_pre, w): the work of the preload on @p w (0 without one); owners
+    /// of a subproblem not shared only.
+    double
+    preload_work(const dealii::Vector<double> &w) const;
 
     /// Whether the load has a preload part F_pre (an eigenstrain or a
     /// thermal strain), which set_load_factor() leaves unscaled.
@@ -408,7 +416,7 @@ namespace bilayer
     /// unconstrained), preload_rhs and preload_load the preload's (with a
     /// preload), rhs_at_one and load_at_one those of setup() (with a
     /// preload: restored at lambda = 1).
-    double                 load_factor_ = 1;
+    double                 load_factor_ = 1, preload_factor_ = 1;
     bool                   has_preload_ = false;
     dealii::Vector<double> unit_rhs, preload_rhs, rhs_at_one;
     dealii::Vector<double> unit_load, preload_load, load_at_one;
