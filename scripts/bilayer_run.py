@@ -4,11 +4,25 @@ The scripts import it from their own directory (`import bilayer_run`):
 
     ROOT, BILAYER          the repository and build/bilayer in it
     argument_parser(doc)   an ArgumentParser whose --help is the script's
-                           docstring (first paragraph, then the rest)
+                           docstring (first paragraph, then the rest) and
+                           whose errors are one line "SCRIPT: error: ...
+                           (scripts/SCRIPT --help)", exit 2
+    integer(lo, hi), number(lo, hi, ...), numbers(lo, hi, ...), text(what)
+                           argparse types: a whole number, a finite number,
+                           a list "A,B,..." of finite numbers in a range, a
+                           non-empty string; a bad value is refused by the
+                           parser naming the option and the allowed range
+    guard(main)            runs MAIN() as a script's body: its status;
+                           Ctrl-C exits 130 with one line, a closed stdout
+                           1, an OSError one line "SCRIPT: PATH: why" (1),
+                           anything else "SCRIPT: internal error: ..." (1);
+                           never a traceback
     MPI_ENV                the environment for mpirun as root, oversubscribed
     setup()                scripts/setup --no-install (configure and build
                            if needed, never install), quietly; exits with its
-                           status (after its one-line message) if it fails
+                           status (after its one-line message) if it fails;
+                           exits 1 with one line when BILAYER is then not an
+                           executable
     require(*tools)        exits 1 with one line naming the Debian package
                            of the first of TOOLS (gnuplot, mpirun, ...) not
                            on PATH: the scripts never install anything
@@ -27,12 +41,19 @@ The scripts import it from their own directory (`import bilayer_run`):
                            includes, then SETTINGS), from bilayer PRM
                            --print-parameters; exits 1 with bilayer's line
                            when it refuses the file
+    figure_path(script, value, inside)
+                           a --figure PNG: new, or a committed file under
+                           docs/; one line and exit 1 otherwise
+    copy_figure(script, source, figure)
+                           the copy to it (one line and exit 1 on failure)
     OutputFolder(script, path, default)
                            the folder a script writes its results into
                            (see its docstring: never a folder the script
                            did not make, never a file it did not write)
     safe_name(prm)         the scene's name for a default folder: its stem,
                            odd characters replaced ('..prm' is not '..')
+    gnuplot(script, lines, cwd)
+                           gnuplot on LINES in CWD; one line, exit 1 if it fails
     gnuplot_string(text)   TEXT as a gnuplot string literal
 
 BILAYER is build/bilayer, or the program the environment variable BILAYER
@@ -58,6 +79,7 @@ import argparse
 import collections
 import importlib.util
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -78,12 +100,171 @@ directory: where summary.json was read (DIR or DIR.failed; None for a
 temporary directory, which is gone)."""
 
 
+class ArgumentParser(argparse.ArgumentParser):
+    """argparse.ArgumentParser whose errors (an unknown option, a missing
+    or bad value) are one line on stderr, "SCRIPT: error: MESSAGE
+    (scripts/SCRIPT --help)", and exit status 2: no usage block."""
+
+    def error(self, message):
+        message = " ".join(str(message).split())
+        self.exit(2, "%s: error: %s (scripts/%s --help)\n" % (self.prog, message, self.prog))
+
+
 def argument_parser(doc):
-    """An argparse.ArgumentParser describing a script by its docstring DOC:
-    the first paragraph above the options, the rest below, as written."""
+    """An ArgumentParser describing a script by its docstring DOC: the
+    first paragraph above the options, the rest below, as written; its
+    errors are one line, exit 2."""
     first, _, rest = doc.partition("\n\n")
-    return argparse.ArgumentParser(description=first, epilog=rest or None,
-                                   formatter_class=argparse.RawDescriptionHelpFormatter)
+    return ArgumentParser(description=first, epilog=rest or None,
+                          formatter_class=argparse.RawDescriptionHelpFormatter)
+
+
+def _shown(value):
+    """VALUE for a message: quoted, cut at 60 characters, one line."""
+    value = repr(value)
+    return value if len(value) <= 60 else value[:57] + "..."
+
+
+def integer(lo, hi):
+    """An argparse type: a whole number in [LO, HI]."""
+    def parse(value):
+        try:
+            n = int(value.strip())
+        except ValueError:
+            raise argparse.ArgumentTypeError(
+                "expected a whole number in [%d, %d], got %s" % (lo, hi, _shown(value)))
+        if not lo <= n <= hi:
+            raise argparse.ArgumentTypeError(
+                "%s is outside the allowed range [%d, %d]" % (_shown(value), lo, hi))
+        return n
+    parse.__name__ = "whole number"
+    return parse
+
+
+def _finite(value):
+    """VALUE as a finite float, or None."""
+    try:
+        x = float(value.strip())
+    except ValueError:
+        return None
+    return x if math.isfinite(x) else None
+
+
+def _range_text(lo, hi, lo_open, hi_open):
+    return "%s%s, %s%s" % ("(" if lo_open or lo is None else "[",
+                           "-inf" if lo is None else "%g" % lo,
+                           "inf" if hi is None else "%g" % hi,
+                           ")" if hi_open or hi is None else "]")
+
+
+def _inside(x, lo, hi, lo_open, hi_open):
+    return ((lo is None or (x > lo if lo_open else x >= lo)) and
+            (hi is None or (x < hi if hi_open else x <= hi)))
+
+
+def number(lo=None, hi=None, lo_open=False, hi_open=False):
+    """An argparse type: a finite number in the range from LO to HI (None:
+    unbounded; *_open: the bound itself excluded)."""
+    allowed = _range_text(lo, hi, lo_open, hi_open)
+
+    def parse(value):
+        x = _finite(value)
+        if x is None:
+            raise argparse.ArgumentTypeError(
+                "expected a finite number in %s, got %s" % (allowed, _shown(value)))
+        if not _inside(x, lo, hi, lo_open, hi_open):
+            raise argparse.ArgumentTypeError(
+                "%s is outside the allowed range %s" % (_shown(value), allowed))
+        return x
+    parse.__name__ = "number"
+    return parse
+
+
+def numbers(lo=None, hi=None, lo_open=False, hi_open=False, most=100):
+    """An argparse type: "A,B,..." with 1 to MOST finite numbers in the
+    range from LO to HI (as number())."""
+    allowed = _range_text(lo, hi, lo_open, hi_open)
+
+    def parse(value):
+        parts = value.split(",")
+        if not value.strip() or len(parts) > most:
+            raise argparse.ArgumentTypeError(
+                "expected 1 to %d numbers in %s separated by ',', got %s" % (
+                    most, allowed, _shown(value)))
+        out = []
+        for part in parts:
+            x = _finite(part)
+            where = _shown(part.strip()) + (" in " + _shown(value) if len(parts) > 1 else "")
+            if x is None:
+                raise argparse.ArgumentTypeError(
+                    "%s is not a finite number (expected numbers in %s separated by ',')" % (
+                        where, allowed))
+            if not _inside(x, lo, hi, lo_open, hi_open):
+                raise argparse.ArgumentTypeError(
+                    "%s is outside the allowed range %s" % (where, allowed))
+            out.append(x)
+        return out
+    parse.__name__ = "list of numbers"
+    return parse
+
+
+def text(what):
+    """An argparse type: a non-empty string (a path, a name) without
+    control characters; WHAT names it in the message."""
+    def parse(value):
+        if not value.strip():
+            raise argparse.ArgumentTypeError("expected %s, got an empty string" % what)
+        if any(ord(c) < 32 for c in value):
+            raise argparse.ArgumentTypeError("%s %s holds control characters" % (
+                what, _shown(value)))
+        return value
+    parse.__name__ = what
+    return parse
+
+
+def guard(main, name=None):
+    """Run MAIN() as a script's body and exit with its status (None: 0),
+    never with a traceback: KeyboardInterrupt (Ctrl-C) exits 130 with one
+    line; a closed standard output (BrokenPipeError) exits 1 quietly; an
+    OSError not handled before (a disk full, a file that vanished) is one
+    line "SCRIPT: PATH: why", exit 1; anything else, a bug, is one line
+    "SCRIPT: internal error: TYPE: message", exit 1 (a last safety net:
+    foreseeable bad input has its own message)."""
+    name = name or os.path.basename(sys.argv[0])
+    try:
+        status = main()
+    except KeyboardInterrupt:
+        _quiet_stdout()
+        print("%s: interrupted" % name, file=sys.stderr)
+        sys.exit(130)
+    except BrokenPipeError:
+        _quiet_stdout()
+        sys.exit(1)
+    except OSError as e:
+        _quiet_stdout()
+        where = e.filename if e.filename is not None else ""
+        print("%s: %s%s" % (name, "%s: " % where if where else "",
+                            e.strerror or " ".join(str(e).split())), file=sys.stderr)
+        sys.exit(1)
+    except Exception as e:  # noqa: BLE001 (the last safety net: one line)
+        _quiet_stdout()
+        message = " ".join(str(e).split())[:300]
+        print("%s: internal error: %s%s" % (name, type(e).__name__,
+                                            ": " + message if message else ""), file=sys.stderr)
+        sys.exit(1)
+    sys.exit(status or 0)
+
+
+def _quiet_stdout():
+    """Flush stdout, or where it is closed send the rest to /dev/null (no
+    "Exception ignored" at exit)."""
+    try:
+        sys.stdout.flush()
+    except (OSError, ValueError):
+        try:
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        except (OSError, ValueError):
+            pass
 
 
 def tool_packages():
@@ -102,12 +283,14 @@ def setup():
     """scripts/setup --no-install with its output discarded: configures and
     builds if needed, never installs. If it fails (its one line on stderr
     names what is missing), exits with its status."""
-    if os.environ.get("BILAYER"):
-        return
-    p = subprocess.run([os.path.join(ROOT, "scripts", "setup"), "--no-install"],
-                       stdout=subprocess.DEVNULL)
-    if p.returncode != 0:
-        sys.exit(p.returncode)
+    if not os.environ.get("BILAYER"):
+        p = subprocess.run([os.path.join(ROOT, "scripts", "setup"), "--no-install"],
+                           stdout=subprocess.DEVNULL)
+        if p.returncode != 0:
+            sys.exit(p.returncode)
+    if not (os.path.isfile(BILAYER) and os.access(BILAYER, os.X_OK)):
+        sys.exit("%s: no executable %s (build it: scripts/setup; or name the program in the "
+                 "environment variable BILAYER)" % (os.path.basename(sys.argv[0]), BILAYER))
 
 
 def require(*tools):
@@ -156,13 +339,18 @@ def read_summary(directory, returncode):
     """(summary.json parsed, the directory it was read from) of a run into
     DIRECTORY that exited with RETURNCODE: DIRECTORY after a success;
     DIRECTORY.failed, else DIRECTORY, after a failure; (None, None) where
-    neither holds one."""
+    neither holds one that is a JSON object."""
     places = [directory] if returncode == 0 else [directory + ".failed", directory]
     for where in places:
         path = os.path.join(where, "summary.json")
         if os.path.isfile(path):
-            with open(path) as f:
-                return json.load(f), where
+            try:
+                with open(path, encoding="utf-8") as f:
+                    summary = json.load(f)
+            except (OSError, ValueError):
+                continue
+            if isinstance(summary, dict):
+                return summary, where
     return None, None
 
 
@@ -230,9 +418,65 @@ def safe_name(prm):
     return stem
 
 
+def gnuplot(script, lines, cwd):
+    """Run gnuplot on LINES (a list of commands) in the folder CWD; exit 1
+    with one line (gnuplot's last) where it fails."""
+    p = subprocess.run(["gnuplot"], input="\n".join(lines) + "\n", text=True, cwd=cwd,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    if p.returncode != 0:
+        sys.exit("%s: gnuplot failed (exit %d): %s" % (
+            script, p.returncode, (p.stderr.strip().splitlines() or ["no message"])[-1]))
+
+
 def gnuplot_string(text):
     """TEXT as a gnuplot single-quoted string ('' inside is one ')."""
     return "'" + str(text).replace("'", "''").replace("\n", " ") + "'"
+
+
+def figure_path(script, value, inside=()):
+    """The absolute path of a script's --figure PNG (None for None): a
+    new file in an existing, writable folder, or a file under docs/ that
+    git tracks (the committed figure it replaces). Exits 1 with one line
+    where VALUE is empty, names a folder or a path inside one of the
+    folders INSIDE (the results read, the output folder), its folder is
+    missing or not writable, or it exists otherwise."""
+    if value is None:
+        return None
+    if not value.strip():
+        sys.exit("%s: --figure is an empty string: name a new PNG file" % script)
+    figure = os.path.abspath(value)
+    for folder in inside:
+        real = os.path.realpath(folder)
+        if os.path.realpath(figure) == real or \
+                os.path.realpath(figure).startswith(real + os.sep):
+            sys.exit("%s: --figure %s is inside %s: name a file outside it" % (
+                script, value, folder))
+    if os.path.isdir(figure) or value.endswith(os.sep):
+        sys.exit("%s: --figure %s is a folder: name a new PNG file" % (script, value))
+    parent = os.path.dirname(figure)
+    if not os.path.isdir(parent):
+        sys.exit("%s: --figure %s: the folder %s does not exist" % (script, value, parent))
+    if not os.access(parent, os.W_OK | os.X_OK):
+        sys.exit("%s: --figure %s: the folder %s is not writable" % (script, value, parent))
+    if os.path.lexists(figure):
+        docs = os.path.realpath(os.path.join(ROOT, "docs"))
+        tracked = not os.path.islink(figure) and os.path.isfile(figure) and \
+            os.path.realpath(figure).startswith(docs + os.sep) and subprocess.run(
+                ["git", "-C", ROOT, "ls-files", "--error-unmatch", figure],
+                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode == 0
+        if not tracked:
+            sys.exit("%s: --figure %s exists and is not a committed file under docs/: it is "
+                     "left as it is; name a new file" % (script, figure))
+    return figure
+
+
+def copy_figure(script, source, figure):
+    """Copy the figure SOURCE to FIGURE (of figure_path()); exit 1 with one
+    line where it cannot be written."""
+    try:
+        shutil.copyfile(source, figure)
+    except OSError as e:
+        sys.exit("%s: cannot write --figure %s: %s" % (script, figure, e.strerror or e))
 
 
 class OutputFolder:
@@ -278,7 +522,11 @@ class OutputFolder:
         elif os.path.islink(self.path) or not os.path.isdir(self.path):
             self.fail("%s exists and is not a folder: choose another --output" % self.path)
         else:
-            names = sorted(os.listdir(self.path))
+            try:
+                names = sorted(os.listdir(self.path))
+            except OSError as e:
+                self.fail("cannot read the output folder %s: %s; choose another --output" % (
+                    self.path, e.strerror or e))
             listed = self.read_marker()
             if listed is not None:
                 self.listed = listed
@@ -330,11 +578,18 @@ class OutputFolder:
         text = "\n".join([self.first_line(), "identity: " + self.identity(),
                           "folder: " + self.path] +
                          ["file: " + n for n in self.listed]) + "\n"
-        fd, tmp = tempfile.mkstemp(dir=self.path, prefix=self.MARKER + ".")
-        os.fchmod(fd, 0o644)
-        with os.fdopen(fd, "w") as f:
-            f.write(text)
-        os.replace(tmp, os.path.join(self.path, self.MARKER))
+        tmp = None
+        try:
+            fd, tmp = tempfile.mkstemp(dir=self.path, prefix=self.MARKER + ".")
+            os.fchmod(fd, 0o644)
+            with os.fdopen(fd, "w") as f:
+                f.write(text)
+            os.replace(tmp, os.path.join(self.path, self.MARKER))
+        except OSError as e:
+            if tmp is not None and os.path.lexists(tmp):
+                os.remove(tmp)   # the script's own temporary file
+            self.fail("cannot write into the output folder %s: %s; choose another --output" % (
+                self.path, e.strerror or e))
 
     def claim(self, name, folder=False):
         """The path of NAME (a plain name, no '/') in the folder, for the
@@ -352,7 +607,10 @@ class OutputFolder:
             self.listed.append(name)
             self.write_marker()
         if folder and not os.path.isdir(path):
-            os.mkdir(path)
+            try:
+                os.mkdir(path)
+            except OSError as e:
+                self.fail("cannot create %s: %s" % (path, e.strerror or e))
         return path
 
 
@@ -382,9 +640,10 @@ def main(argv):
     if len(argv) == 2 and argv[0] == "name":
         print(safe_name(argv[1]))
         return 0
-    sys.exit("usage: bilayer_run.py output SCRIPT DIR [NAME ...] | entry PRM SECTION/ENTRY "
-             "[--set S/E=v ...] | name PRM")
+    print("bilayer_run.py: usage: bilayer_run.py output SCRIPT DIR [NAME ...] | entry PRM "
+          "SECTION/ENTRY [--set S/E=v ...] | name PRM", file=sys.stderr)
+    return 2
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    guard(lambda: main(sys.argv[1:]), "bilayer_run.py")

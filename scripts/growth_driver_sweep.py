@@ -19,12 +19,11 @@ import math
 import os
 import platform
 import shlex
-import shutil
-import subprocess
 import sys
 import time
 
 import bilayer_run
+import study_lib
 
 NAME = "crack_growth"
 AGREEMENT = 1e-6   # largest relative difference of the two critical loads
@@ -48,12 +47,10 @@ def number(text):
 def read_growth(folder):
     """The rows of FOLDER/growth.csv (dicts of strings) and its header."""
     path = os.path.join(folder, "growth.csv")
-    if not os.path.isfile(path):
+    if not os.path.lexists(path):
         fail("no growth.csv in %s" % folder)
-    with open(path) as f:
-        reader = csv.DictReader(line for line in f if not line.startswith("#"))
-        rows = list(reader)
-        return rows, reader.fieldnames or []
+    return study_lib.read_csv(path, NAME, ("step", "load_factor", "crack_length"),
+                              "a growth.csv of bilayer")
 
 
 def tips_of(header):
@@ -71,8 +68,9 @@ def growing_tips(tip):
         numbers = [int(v) for v in tip.split(",")]
     except ValueError:
         numbers = []
-    if not numbers or min(numbers) < 1:
-        fail("--tip %s: expected start, end, both, all or tip numbers '1,2'" % tip)
+    if not numbers or min(numbers) < 1 or max(numbers) > 10000:
+        fail("error: argument --tip: %r: expected start, end, both, all or tip numbers in "
+             "[1, 10000] such as '1,2' (scripts/crack_growth --help)" % tip[:60], 2)
     return ", ".join(str(n) for n in numbers)
 
 
@@ -114,7 +112,7 @@ def main(args, prm, scene):
     """crack_growth --driver."""
     if args.lengths or args.range:
         fail("--driver sweeps the crack lengths of the mesh (every vertex of Sigma, Fracture/"
-             "Growth increment): --lengths and --range belong to the five-run mode")
+             "Growth increment): --lengths and --range belong to the five-run mode", 2)
     settings = ["Fracture/Crack growth=sweep",
                 "Fracture/Growing tips=%s" % growing_tips(args.tip),
                 "Output/Written steps=none", "Output/Write VTU=false",
@@ -134,18 +132,11 @@ def main(args, prm, scene):
         fail("--toughness G_c gives lambda_c = sqrt(G_c / G(l; 1)), the mode-independent law; "
              "the scene has Mixed-mode law = %s: pass the law's entries with --set and read the "
              "driver's critical_load alone (no --toughness)" % law)
-    docs = os.path.join(bilayer_run.ROOT, "docs")
-    figure = os.path.abspath(args.figure) if args.figure else None
-    if figure is not None and os.path.lexists(figure):
-        tracked = figure.startswith(os.path.realpath(docs) + os.sep) and subprocess.run(
-            ["git", "-C", bilayer_run.ROOT, "ls-files", "--error-unmatch", figure],
-            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode == 0
-        if not tracked:
-            fail("--figure %s exists and is not a committed file under docs/: it is left as it "
-                 "is; name a new file" % figure)
-    bilayer_run.require("gnuplot")
-    folder = bilayer_run.OutputFolder(NAME, args.output, os.path.join(
+    output = os.path.abspath(args.output or os.path.join(
         bilayer_run.ROOT, "results", "%s-%s" % (NAME, scene), "driver"))
+    figure = bilayer_run.figure_path(NAME, args.figure, inside=(output,))
+    bilayer_run.require("gnuplot")
+    folder = bilayer_run.OutputFolder(NAME, output)
     names = {n: folder.claim(n) for n in ("command.txt", NAME + ".csv", NAME + ".dat",
                                            NAME + ".png")}
     run_dir = folder.claim("run", folder=True)
@@ -233,11 +224,10 @@ def main(args, prm, scene):
                 + "\n")
     lines = figure_lines(NAME + ".png", NAME + ".dat", tips, "%s: G along the sweep (driver)" % scene,
                          gc is not None)
-    subprocess.run(["gnuplot"], input="\n".join(lines) + "\n", text=True, check=True,
-                   cwd=folder.path)
+    bilayer_run.gnuplot(NAME, lines, folder.path)
     print("figure: %s" % names[NAME + ".png"])
     if figure is not None:
-        shutil.copyfile(names[NAME + ".png"], figure)
+        bilayer_run.copy_figure(NAME, names[NAME + ".png"], figure)
         print("figure: %s" % figure)
     print("table: %s" % names[NAME + ".csv"])
     print("one bilayer run, %d crack lengths, %.1f s; stop: %s" % (

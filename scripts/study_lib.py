@@ -14,6 +14,21 @@ directory (`import study_lib`):
     interface_rows(path)   the rows of an interface CSV as dicts of strings
                            (its '#' lines skipped)
     table_rows(directory)  the rows of table.csv as dicts of strings
+
+Reading a folder the user names (any folder: bilayer's or not), each
+exiting 1 with one line "SCRIPT: ..." where it cannot, never a traceback:
+    results_folder(path, script, what)
+                           the absolute path of an existing, readable folder
+    read_json(path, script, required)
+                           a JSON object (a dict) from a file; None where
+                           the file is missing and not required
+    read_csv(path, script, columns)
+                           (rows as dicts of strings, header) of a CSV file
+                           ('#' lines skipped) whose header has COLUMNS and
+                           every row as many cells as the header
+    cell_number(row, column, path, script)
+                           a cell of read_csv() as a float: empty, null, nan
+                           are NaN, text that is no finite number exits 1
     sequence_settings(method, refinement, degree, cycles, tolerance)
                            the settings of one mesh sequence of
                            scripts/work_precision (from 8 cells along Sigma)
@@ -84,14 +99,19 @@ def loglog_fit(xs, ys):
 
 
 def summary(directory):
-    """summary.json of the result directory DIRECTORY, parsed."""
-    with open(os.path.join(directory, "summary.json")) as f:
-        return json.load(f)
+    """summary.json of the result directory DIRECTORY, parsed (a dict);
+    exits 1 with one line where it is missing or not a JSON object."""
+    return read_json(os.path.join(directory, "summary.json"), os.path.basename(sys.argv[0]))
 
 
 def cycles(directory):
-    """The cycles of summary.json in DIRECTORY (a list of dicts)."""
-    return summary(directory)["cycles"]
+    """The cycles of summary.json in DIRECTORY (a list of dicts); exits 1
+    with one line where it has none."""
+    c = summary(directory).get("cycles")
+    if not isinstance(c, list) or not c or not all(isinstance(x, dict) for x in c):
+        _refuse(os.path.basename(sys.argv[0]), "%s has no list of cycles: not a summary.json "
+                "of bilayer" % os.path.join(directory, "summary.json"))
+    return c
 
 
 def interface_path(directory, cycle):
@@ -111,6 +131,121 @@ def table_rows(directory):
     comment lines ('#': the crack tips) are skipped."""
     with open(os.path.join(directory, "table.csv")) as f:
         return list(csv.DictReader(l for l in f if not l.startswith("#")))
+
+
+def _refuse(script, message):
+    sys.exit("%s: %s" % (script, message))
+
+
+def results_folder(path, script, what="the results folder"):
+    """The absolute path of the folder PATH (WHAT in messages); exits 1
+    with one line where it is empty, missing, not a folder or not
+    readable."""
+    if not path:
+        _refuse(script, "%s is an empty string: name a folder" % what)
+    full = os.path.abspath(path)
+    if not os.path.exists(full):
+        _refuse(script, "%s %s does not exist" % (what, path))
+    if not os.path.isdir(full):
+        _refuse(script, "%s %s is not a folder (give a bilayer output directory)" % (what, path))
+    try:
+        os.listdir(full)
+    except OSError as e:
+        _refuse(script, "%s %s cannot be read: %s" % (what, path, e.strerror or e))
+    return full
+
+
+def _read_text(path, script, what):
+    """The text of the regular file PATH; exits 1 with one line where it
+    is not a readable UTF-8 file."""
+    if os.path.isdir(path):
+        _refuse(script, "%s is a folder, not %s" % (path, what))
+    if not os.path.isfile(path):
+        _refuse(script, "%s is not a regular file (%s)" % (path, what))
+    try:
+        with open(path, encoding="utf-8") as f:
+            return f.read()
+    except UnicodeDecodeError as e:
+        _refuse(script, "%s is not a text file (byte %d is not UTF-8): not %s" % (
+            path, e.start, what))
+    except OSError as e:
+        _refuse(script, "%s cannot be read: %s" % (path, e.strerror or e))
+
+
+def read_json(path, script, required=True, what="a summary.json of bilayer"):
+    """The JSON object (a dict) in the file PATH; None where PATH does not
+    exist and REQUIRED is false. Exits 1 with one line where it is not a
+    readable file, not JSON, or not an object."""
+    if not os.path.lexists(path):
+        if required:
+            _refuse(script, "no %s (%s)" % (os.path.basename(path), path))
+        return None
+    data = _read_text(path, script, what)
+    try:
+        value = json.loads(data)
+    except ValueError as e:
+        _refuse(script, "%s is not JSON (%s): not %s" % (
+            path, " ".join(str(e).split())[:120], what))
+    except RecursionError:
+        _refuse(script, "%s nests too deep: not %s" % (path, what))
+    if not isinstance(value, dict):
+        _refuse(script, "%s holds a JSON %s, not an object: not %s" % (
+            path, type(value).__name__.replace("NoneType", "null"), what))
+    return value
+
+
+def read_csv(path, script, columns=(), what="a CSV file of bilayer"):
+    """(rows, header) of the CSV file PATH, its '#' lines skipped: rows
+    as dicts {column: text} with the 1-based line of the file in
+    row["#line"]. Exits 1 with one line where the file is missing or not
+    readable text, has no header, lacks one of COLUMNS, repeats a column,
+    or has a row whose cell count differs from the header's."""
+    if not os.path.lexists(path):
+        _refuse(script, "no %s (%s)" % (os.path.basename(path), path))
+    lines = []
+    for number, line in enumerate(_read_text(path, script, what).splitlines(), 1):
+        if not line.startswith("#") and line.strip():
+            lines.append((number, line))
+    try:
+        table = list(csv.reader([l for _, l in lines]))
+    except csv.Error as e:
+        _refuse(script, "%s is not a CSV file (%s): not %s" % (path, e, what))
+    if not table:
+        _refuse(script, "%s has no header line: not %s" % (path, what))
+    header = [h.strip() for h in table[0]]
+    missing = [c for c in columns if c not in header]
+    if missing:
+        _refuse(script, "%s has no column %s (its columns: %s): not %s" % (
+            path, ", ".join(missing), ", ".join(header)[:200] or "none", what))
+    if len(set(header)) != len(header):
+        _refuse(script, "%s repeats a column of its header: not %s" % (path, what))
+    rows = []
+    for (number, _), cells in zip(lines[1:], table[1:]):
+        if len(cells) != len(header):
+            _refuse(script, "%s line %d has %d cells where the header has %d: not %s" % (
+                path, number, len(cells), len(header), what))
+        row = dict(zip(header, cells))
+        row["#line"] = number
+        rows.append(row)
+    return rows, header
+
+
+def cell_number(row, column, path, script):
+    """ROW[COLUMN] of read_csv() as a float: empty, null and nan are NaN
+    (bilayer writes a number that is not finite as null); exits 1 with one
+    line naming the file, the line and the column where the text is not a
+    number or an infinite one."""
+    text = (row.get(column) or "").strip()
+    if text in ("", "null", "nan"):
+        return float("nan")
+    try:
+        value = float(text)
+    except ValueError:
+        value = None
+    if value is None or math.isinf(value):
+        _refuse(script, "%s line %s: %s = %r is not a finite number (not bilayer's)" % (
+            path, row.get("#line", "?"), column, text[:40]))
+    return value
 
 
 def sequence_settings(method, refinement, degree, cycles, tolerance):
@@ -187,7 +322,7 @@ def print_processes(serial, parallel, processes):
 def print_example(directory):
     """scripts/run_examples: the last cycle of the run in DIRECTORY."""
     d = summary(directory)
-    c = d["cycles"][-1]
+    c = cycles(directory)[-1]
     print("%-24s %6d %7d %14.6e %10.2e %10.2e %8.3f %8.3f" % (
         d["scene"], c["iterations"], c["subdomain_solves"], c["energy"],
         c["constraint_violation"], c["max_penetration"],
@@ -204,10 +339,11 @@ def main(argv):
     elif len(argv) == 2 and argv[0] == "example":
         print_example(argv[1])
     else:
-        sys.exit("usage: study_lib.py work DIR LABEL WARM | processes SERIAL PARALLEL NP | "
-                 "example DIR")
+        print("study_lib.py: usage: study_lib.py work DIR LABEL WARM | processes SERIAL "
+              "PARALLEL NP | example DIR", file=sys.stderr)
+        return 2
     return 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    bilayer_run.guard(lambda: main(sys.argv[1:]), "study_lib.py")

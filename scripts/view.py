@@ -174,11 +174,14 @@ def discover(directory, cycle, field):
     try:
         with open(os.path.join(d, "summary.json")) as f:
             summary = json.load(f)
-        scene = summary.get("scene") or scene
-        for r in summary.get("cycles", []):
-            if r.get("cycle") == cycles[index]:
+        if not isinstance(summary, dict):   # not bilayer's: no title data
+            summary = {}
+        if isinstance(summary.get("scene"), str) and summary["scene"]:
+            scene = summary["scene"]
+        for r in summary.get("cycles") if isinstance(summary.get("cycles"), list) else []:
+            if isinstance(r, dict) and r.get("cycle") == cycles[index]:
                 record = r
-    except (OSError, ValueError):
+    except (OSError, ValueError, RecursionError):
         pass
     return {"dir": os.path.abspath(d), "solution": os.path.abspath(solution),
             "interface": interface and os.path.abspath(interface), "note": note,

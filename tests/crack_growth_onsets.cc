@@ -14,6 +14,9 @@
 //    crack length must start to grow at an "onset" step whose load factor
 //    is sqrt(G_c / G(l; 1)) of the sweep (to 1e-6), with the criterion 1
 //    there (to 1e-8); the crack lengths follow the sweep's;
+//  - the same with the load factors 2.5, 6, the first above the first
+//    onset: loading starts at 0, so step 0 is that onset (found below the
+//    first load factor) and the onsets are those of 0.5:0.5:6;
 //  - quasi-static growth on load factors alone (0.5:0.05:6, Exact onsets =
 //    false): each crack length first grows at the first load factor at or
 //    above its critical load (the onsets are bracketed by the step).
@@ -27,6 +30,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <vector>
 
 #include "verdict.h"
 
@@ -170,6 +174,41 @@ namespace
           worst_onset < 1e-6);
     check("criterion 1 at every onset to 1e-8", worst_criterion < 1e-8);
     check("exact: subproblems factorised once", factorised_once(exact));
+
+    // Loading starts at 0: with load factors whose first lies above the
+    // first onset (2.5 > 1.7), the onset is found below it (the state at
+    // 2.5 is never the first step) and every onset is that of 0.5:0.5:6.
+    Study above(scene_from_string(scene_text(loads,
+                                             "quasi-static",
+                                             "2.5, 6",
+                                             tips,
+                                             true,
+                                             g0,
+                                             "r_above"),
+                                  "crack_growth_onsets"),
+                quiet);
+    check("first load factor above the onset accepted", above.run_growth());
+    std::vector<double> onsets_exact, onsets_above;
+    for (const GrowthStep &s : exact.growth())
+      if (s.kind == "onset")
+        onsets_exact.push_back(s.load_factor);
+    for (const GrowthStep &s : above.growth())
+      if (s.kind == "onset")
+        onsets_above.push_back(s.load_factor);
+    bool same = onsets_exact.size() == onsets_above.size();
+    for (unsigned int k = 0; same && k < onsets_exact.size(); ++k)
+      same = std::abs(onsets_above[k] / onsets_exact[k] - 1) < 1e-9;
+    const GrowthStep &start = above.growth().front();
+    check("first load factor above the onset: step 0 is the onset at "
+          "sqrt(G_c / G(l_0; 1)) (1e-6)",
+          start.kind == "onset" &&
+            std::abs(start.load_factor /
+                       critical[key(start.crack_length)] -
+                     1) < 1e-6);
+    check("first load factor above the onset: the onsets of 0.5:0.5:6 "
+          "(1e-9) and the same final crack length",
+          same && key(above.growth().back().crack_length) ==
+                    key(exact.growth().back().crack_length));
 
     // Load factors alone: each crack length first grows at the first load
     // factor at or above its critical load.

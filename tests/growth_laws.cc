@@ -117,4 +117,54 @@ main()
   check("split not defined: the mode-independent law needs none",
         growth_criterion(mi, 1, nan, G_Ic, G_IIc).undefined.empty() &&
           near(growth_criterion(mi, 1, nan, G_Ic, G_IIc).value, 0.16 / G_Ic));
+
+  // Round-off and overflow (issue: criteria that follow round-off).
+  // A pure mode I tip whose G_II is round-off (1e-35 G): with a small
+  // exponent (a = 0.01) a G_II counted at face value would add
+  // (1e-35 / G_IIc)^0.01 = 0.45 to f. Below the resolution it is 0: f is
+  // that of pure mode I, for the power law and Benzeggagh-Kenane alike.
+  const double resolution = split_resolution(1e-6);
+  check("split resolution: max(Solver/Acceptance tolerance, 1e-12)",
+        resolution == 1e-6 && split_resolution(0) == 1e-12);
+  const EnergyReleaseRate pure = release(0.2, 2e-36);
+  check("power law a = 0.01: a round-off G_II does not count",
+        near(growth_criterion(pl, 0.01, pure, G_Ic, G_IIc, resolution).value,
+             std::pow(0.2 / G_Ic, 0.01)));
+  check("BK eta = 0.01: a round-off G_II does not count",
+        near(growth_criterion(bk, 0.01, pure, G_Ic, G_IIc, resolution).value,
+             0.2 / G_Ic));
+  check("a resolved G_II (1e-3 G) counts",
+        growth_criterion(pl, 0.01, release(0.2, 2e-4), G_Ic, G_IIc, resolution)
+            .value > 1.4 * std::pow(0.2 / G_Ic, 0.01));
+  // A large exponent: (G_I / G_Ic)^400 overflows for G_I > 5.9 G_Ic. In
+  // logarithms, ln f = 400 ln(G_I / G_Ic) and lambda_c = lambda (G_Ic /
+  // G_I)^(1/2), finite and positive.
+  const GrowthCriterion big =
+    growth_criterion(pl, 400, release(10 * G_Ic, 0), G_Ic, G_IIc, resolution);
+  check("power law a = 400, G_I = 10 G_Ic: ln f = 400 ln 10, no overflow",
+        near(big.log_value, 400 * std::log(10.)) && is_critical(big));
+  check("power law a = 400: lambda_c = lambda / sqrt(10)",
+        near(critical_load_factor(big, lambda), lambda / std::sqrt(10.)));
+  const GrowthCriterion tiny =
+    growth_criterion(pl, 400, release(0.1 * G_Ic, 0), G_Ic, G_IIc, resolution);
+  check("power law a = 400, G_I = G_Ic / 10: f underflows, lambda_c exact",
+        near(critical_load_factor(tiny, lambda), lambda * std::sqrt(10.)) &&
+          !is_critical(tiny));
+  // The tolerance of the onset is on the load: at lambda = lambda_c (1 -
+  // 1e-8) a tip is below critical for every exponent (with a tolerance on
+  // f, f = (1 - 1e-8)^(2 a) >= 1 - 1e-9 would pass for a = 0.01), and at
+  // lambda_c (1 - 1e-10) critical.
+  bool below = true, at = true;
+  for (const double a : {0.01, 0.5, 1., 50.})
+    {
+      const GrowthCriterion f = growth_criterion(pl, a, g, G_Ic, G_IIc);
+      const double          c = critical_load_factor(f, lambda) / lambda;
+      below = below && !is_critical(growth_criterion(
+                         pl, a, scaled(g, c * (1 - 1e-8)), G_Ic, G_IIc));
+      at = at && is_critical(growth_criterion(
+                   pl, a, scaled(g, c * (1 - 1e-10)), G_Ic, G_IIc));
+    }
+  check("onset tolerance on the load: lambda_c (1 - 1e-8) below critical, "
+        "lambda_c (1 - 1e-10) critical, a = 0.01 to 50",
+        below && at);
 }

@@ -14,7 +14,12 @@
 #     scene and toughness: two runs, one number);
 #  3. the check fails when the two disagree: --toughness 1e-4 with
 #     Fracture/Toughness = 2e-4 set after it (the driver's G_c is twice the
-#     script's): exit 1, naming the difference.
+#     script's): exit 1, naming the difference;
+#  4. bad arguments and foreign folders (issue 45): growth_curve on copies of
+#     the run with a summary.json that is a JSON list, a growth.csv with a
+#     garbage row, and --output ''; crack_growth --range 1,2,x: one line on
+#     stderr, exit 1 (the folder) or 2 (the command line), no traceback,
+#     nothing written.
 # Usage: growth_scripts.sh BILAYER SOURCE_DIR   (exit 77: no gnuplot)
 set -u
 bilayer=$(cd "$(dirname "$1")" && pwd)/$(basename "$1") src=$(cd "$2" && pwd)
@@ -94,4 +99,27 @@ rc=$?
 [[ $rc -eq 1 && $(tail -1 "$work/cg2.err") == *"critical loads differ"* ]] ||
   why="exit $rc, $(tail -1 "$work/cg2.err")"
 verdict "crack_growth --driver fails where the critical loads differ" "$why"
+
+# 4. one-line refusals (issue 45): refused RC DESCRIPTION COMMAND... runs the
+# command in $work/refusal, which must stay empty.
+why=""
+refused() {
+  local rc=$1 what=$2 got
+  shift 2
+  mkdir -p "$work/refusal"
+  (cd "$work/refusal" && "$@") > /dev/null 2> "$work/refusal.err"
+  got=$?
+  [[ $got -eq $rc ]] || why="$why; $what: exit $got, not $rc"
+  [[ $(grep -c . "$work/refusal.err") -eq 1 ]] || why="$why; $what: $(grep -c . "$work/refusal.err") lines on stderr"
+  ! grep -q "Traceback\|internal error" "$work/refusal.err" || why="$why; $what: $(tail -1 "$work/refusal.err")"
+  [[ -z $(ls -A "$work/refusal") ]] || why="$why; $what: wrote $(ls -A "$work/refusal" | head -1)"
+}
+cp -r "$work/run" "$work/list" && echo '[1, 2]' > "$work/list/summary.json"
+cp -r "$work/run" "$work/garbage" && echo 'x,y' >> "$work/garbage/growth.csv"
+refused 1 "summary.json a JSON list" python3 "$scripts/growth_curve" "$work/list" --output out
+refused 1 "growth.csv with a garbage row" python3 "$scripts/growth_curve" "$work/garbage" --output out
+refused 2 "--output ''" python3 "$scripts/growth_curve" "$work/run" --output ''
+refused 2 "--range 1,2,x" python3 "$scripts/crack_growth" "$src/parameter_files/full_opening.prm" \
+  --range 1,2,x --output out
+verdict "growth_curve and crack_growth refuse foreign folders and bad arguments with one line" "$why"
 verdicts_end

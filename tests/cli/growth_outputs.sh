@@ -1,0 +1,158 @@
+#!/usr/bin/env bash
+# The output contract of growth runs (Fracture/Crack growth), as for static
+# runs (docs/robustness.md, "Growth runs"):
+#  1. every file a growth run writes is its own: a growth scene (quasi-static
+#     and sweep) runs twice into one directory, exit 0 both times; a failed
+#     growth run's DIR.failed does not block the corrected run;
+#  2. SIGINT, SIGTERM and SIGHUP during the steps: exit 128 + signal, one
+#     line, no staging directory, lock or stopped copy left, DIR as it was;
+#     SIGKILL: the stale staging directory and lock do not block the next
+#     run, which removes them; a full file system (a 2 MiB tmpfs, where this
+#     machine lets the test mount one): one line, exit 1, the directory as it
+#     was, then a run elsewhere exit 0;
+#  3. growth output costs O(1) per step: the bytes the process writes
+#     (wchar of /proc/self/io, which counts a reaped child's writes) grow
+#     by the same amount per step from 20 to 40 to 80 steps (within 3 %),
+#     as they must when no file is rewritten whole after every step.
+# Usage: growth_outputs.sh BILAYER PARAMETER_DIRECTORY
+set -u
+bilayer=$(realpath "$1")
+scenes=$(realpath "$2")
+prm=$scenes/growth_full_opening.prm
+source "$(dirname "${BASH_SOURCE[0]}")/verdict.sh"
+work=$(mktemp -d)
+cleanup() {
+  mountpoint -q "$work/small" 2> /dev/null && umount "$work/small"
+  rm -rf "$work"
+}
+trap cleanup EXIT
+cd "$work" || exit 1
+digest() { find "$@" -type f -print0 2> /dev/null | sort -z | xargs -0 md5sum 2> /dev/null; }
+left() { # DIR: what a run left beside DIR
+  compgen -G "$1.partial*"
+  compgen -G "$1.lock"
+  compgen -G "$1.replaced-*"
+  compgen -G "$1.stopped-*"
+}
+# Many steps below the onset (about 2.06), each with its files.
+long=(--set "Loads/Load factor=0.001:0.001:1.5" --set "Output/Written steps=every 1"
+  --set "Output/Write interface CSV=true" --set "Fracture/Maximum growth steps=5000")
+
+# ---- 1. Reruns into the run's own directory.
+for scene in growth_full_opening growth_weak_patch dcb_growth; do
+  why=""
+  for k in 1 2; do
+    "$bilayer" "$scenes/$scene.prm" --set "Output/Output directory=g" --set "Output/Write VTU=false" \
+      > g.out 2> g.err || why="$why; run $k: exit $? $(head -2 g.err)"
+  done
+  [[ -z $(left g) && -s g/growth.csv ]] || why="$why; left: $(left g)"
+  verdict "$scene twice into one directory: exit 0 both" "$why"
+  rm -rf g
+done
+why=""
+for k in 1 2; do
+  "$bilayer" "$prm" --set "Output/Output directory=s" --set "Fracture/Crack growth=sweep" \
+    --set "Loads/Load factor=1" > s.out 2> s.err || why="$why; run $k: exit $? $(head -2 s.err)"
+done
+verdict "Crack growth = sweep twice into one directory: exit 0 both" "$why"
+"$bilayer" "$prm" --set "Output/Output directory=f" --set "Fracture/Maximum growth steps=3" > f.out 2> f.err
+rc=$?
+why=""
+[[ $rc -eq 2 && -s f.failed/growth.csv && -s f.failed/summary.json ]] || why="exit $rc, $(ls f.failed 2> /dev/null | tr '\n' ' ')"
+"$bilayer" "$prm" --set "Output/Output directory=f" > f.out 2> f.err || why="$why; the corrected run: exit $? $(cat f.err)"
+[[ -s f/growth.csv && ! -e f.failed ]] || why="$why; f.failed kept or f missing"
+verdict "a failed growth run's DIR.failed, then the corrected run: exit 0, DIR.failed gone" "$why"
+
+# ---- 2. Signals and a full disk during the steps.
+"$bilayer" "$prm" --set "Output/Output directory=out" > out.log 2>&1 || verdict "set-up run" "exit $?"
+steps_staged() { # PID: wait until the run has appended 30 rows to growth.csv (at most 2 minutes)
+  for _ in $(seq 6000); do
+    [[ $({ wc -l < out.partial/growth.csv; } 2> /dev/null || echo 0) -ge 34 ]] && return 0
+    kill -0 "$1" 2> /dev/null || break
+    sleep 0.02
+  done
+  return 1
+}
+set -m # (background jobs of their own, which do not ignore SIGINT)
+for signal in INT TERM HUP; do
+  before=$(digest out)
+  "$bilayer" "$prm" "${long[@]}" --set "Output/Output directory=out" > sig.out 2> sig.err &
+  pid=$!
+  why=""
+  steps_staged $pid || why="never staged 30 steps"
+  kill -s $signal $pid
+  wait $pid 2> /dev/null
+  rc=$?
+  [[ $rc -eq $((128 + $(kill -l $signal))) ]] || why="$why; exit status $rc"
+  [[ $(wc -l < sig.err) -eq 1 ]] && grep -qF "bilayer: error: stopped by SIG$signal" sig.err ||
+    why="$why; stderr: $(head -3 sig.err)"
+  [[ -z $(left out) ]] || why="$why; left: $(left out | tr '\n' ' ')"
+  [[ "$(digest out)" == "$before" ]] || why="$why; out changed"
+  verdict "SIG$signal during growth steps: exit 128+signal, one line, nothing left" "$why"
+done
+"$bilayer" "$prm" "${long[@]}" --set "Output/Output directory=out" > sig.out 2> sig.err &
+pid=$!
+steps_staged $pid
+kill -s KILL $pid
+wait $pid 2> /dev/null
+set +m
+stale=$(left out | tr '\n' ' ')
+"$bilayer" "$prm" --set "Output/Output directory=out" > k.out 2> k.err
+rc=$?
+why=""
+[[ -n $stale ]] || why="(SIGKILL left nothing to clean)"
+[[ $rc -eq 0 && -z $(left out) ]] || why="$why; exit $rc, $(cat k.err); left: $(left out | tr '\n' ' ')"
+verdict "SIGKILL during growth steps, then a run: exit 0, the stale $stale removed" "$why"
+
+mkdir small
+if mount -t tmpfs -o size=2m tmpfs small 2> /dev/null; then
+  mkdir small/keep && echo "a note" > small/keep/note
+  before=$(digest small)
+  "$bilayer" "$prm" "${long[@]}" --set "Output/Output directory=small/keep/out" > full.out 2> full.err
+  rc=$?
+  why=""
+  [[ $rc -eq 1 && $(wc -l < full.err) -eq 1 ]] && grep -q "No space left on device" full.err ||
+    why="exit $rc, $(head -3 full.err)"
+  [[ "$(digest small)" == "$before" && -z $(ls -A small/keep | grep -v '^note$') ]] ||
+    why="$why; left: $(ls -A small/keep | tr '\n' ' ')"
+  "$bilayer" "$prm" --set "Output/Output directory=small/keep/out" > full.out 2> full.err ||
+    why="$why; the next run: exit $? $(cat full.err)"
+  verdict "a full file system during growth steps: one line, the directory as it was, the next run exit 0" "$why"
+else
+  echo "(a full file system: no tmpfs can be mounted here; docs/robustness.md, scripts/fuzz_inputs)"
+fi
+
+# ---- 3. Bytes written per step.
+measure() { # STEPS: the bytes written by a run of STEPS steps
+  /usr/bin/python3 - "$bilayer" "$prm" "$1" << 'EOF'
+import subprocess, sys
+def wchar():
+    for line in open("/proc/self/io"):
+        key, value = line.split(":")
+        if key == "wchar":
+            return int(value)
+bilayer, prm, n = sys.argv[1], sys.argv[2], int(sys.argv[3])
+before = wchar()
+r = subprocess.run([bilayer, prm, "--set", "Output/Output directory=b%d" % n,
+                    "--set", "Loads/Load factor=0.001:0.001:%g" % (0.001 * n),
+                    "--set", "Output/Written steps=every 1",
+                    "--set", "Output/Write interface CSV=true"],
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+print(wchar() - before if r.returncode == 0 else -1)
+EOF
+}
+b20=$(measure 20)
+b40=$(measure 40)
+b80=$(measure 80)
+why=$(/usr/bin/python3 -c "
+b20, b40, b80 = $b20, $b40, $b80
+if min(b20, b40, b80) <= 0:
+    print('a run failed')
+else:
+    first, second = (b40 - b20) / 20, (b80 - b40) / 40
+    print('' if abs(second / first - 1) <= 0.03 else
+          'bytes per step %.0f (20-40) then %.0f (40-80)' % (first, second))
+")
+echo "bytes written: 20 steps $b20, 40 steps $b40, 80 steps $b80"
+verdict "growth output: the same bytes per step from 20 to 80 steps" "$why"
+verdicts_end
