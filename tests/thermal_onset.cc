@@ -10,7 +10,9 @@
 // G(lambda dT) = lambda^2 G(dT) and the energy is lambda^2 Pi(dT) (the
 // eigenstrain energy included). The critical temperature change for a
 // toughness G_c is therefore dT_c = dT sqrt(G_c / G(dT)), with G(dT) from a
-// static run of the scene. Checks:
+// static run of the scene. The toughness rises ahead of the tip, G_c (1 +
+// (x - 5)), so that the growth after the onset arrests within a few steps.
+// Checks:
 //  - the growth driver's onset load factor times dT equals dT_c to 1e-8,
 //    with load factors that bracket it (0.5:0.5:2) and with load factors
 //    whose first lies above it (1.5, 2: loading starts at 0);
@@ -68,7 +70,7 @@ namespace
       << " set Load factor = " << factors << "\n"
       << (thermal ? " set Load factor scales = thermal\n" : "") << "end\n"
       << "subsection Fracture\n set Crack growth = quasi-static\n"
-      << " set Toughness = " << G_c << "\nend\n";
+      << " set Toughness = " << G_c << "*(1 + (x - 5))\nend\n";
     return s.str();
   }
 

@@ -99,25 +99,6 @@ namespace bilayer
         "(a subproblem shared by a group keeps the load of its set-up), got " +
         std::to_string(distribution.n_processes()));
 
-    // Factors that scale no load would repeat one state.
-    const auto  scales  = scene.loads.load_factor_scales;
-    const bool  nothing = scales == LoadParameters::Scaled::mechanical ?
-                            !has_mechanical_load() :
-                          scales == LoadParameters::Scaled::thermal ?
-                            !has_preload() :
-                            !has_mechanical_load() && !has_preload();
-    if (scaled && nothing)
-      throw CollectiveError(
-        std::string("Loads/Load factor scales = ") +
-        (scales == LoadParameters::Scaled::mechanical ? "mechanical" :
-         scales == LoadParameters::Scaled::thermal    ? "thermal" :
-                                                        "all") +
-        ": the scene has no such load, so the load factors change nothing; " +
-        (scales == LoadParameters::Scaled::mechanical && has_preload() ?
-           "set Loads/Load factor scales = thermal to scale the temperature "
-           "change and eigenstrains" :
-           "give the scene a load or choose what the factors scale"));
-
     // State 0: the meshes of the last cycle, the subproblems factorised
     // once for all steps.
     Timer       total;

@@ -5,6 +5,7 @@
 
 #include <bilayer/drivers/study.h>
 #include <bilayer/parameters/expressions.h>
+#include <bilayer/parameters/scene_checks.h>
 
 #include <cmath>
 
@@ -40,43 +41,6 @@ namespace bilayer
 
 
   bool
-  Study::has_preload() const
-  {
-    for (const Layer layer : {Layer::first, Layer::second})
-      if (scene.materials.has_layer(layer))
-        {
-          const unsigned int l = static_cast<unsigned int>(layer);
-          if (!expressions::is_zero(scene.loads.eigenstrain[l]))
-            return true;
-          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
-            if (scene.loads.has_thermal_load(
-                  scene.materials.material(layer, sd)))
-              return true;
-        }
-    return false;
-  }
-
-
-  bool
-  Study::has_mechanical_load() const
-  {
-    const LoadParameters &loads = scene.loads;
-    for (const Layer layer : {Layer::first, Layer::second})
-      if (scene.materials.has_layer(layer))
-        {
-          const unsigned int l = static_cast<unsigned int>(layer);
-          if (!expressions::is_zero(loads.body_force[l]) ||
-              !expressions::is_zero(loads.prescribed[l]))
-            return true;
-          for (unsigned int i = 0; i < loads.parts.size(); ++i)
-            if (!loads.traction_is_zero(layer, i))
-              return true;
-        }
-    return false;
-  }
-
-
-  bool
   Study::proportional_loading() const
   {
     if (scene.contact.frictional())
@@ -86,9 +50,9 @@ namespace bilayer
     switch (scene.loads.load_factor_scales)
       {
         case LoadParameters::Scaled::mechanical:
-          return !has_preload();
+          return !has_thermal_load(scene);
         case LoadParameters::Scaled::thermal:
-          return !has_mechanical_load();
+          return !has_mechanical_load(scene);
         default:
           return true;
       }

@@ -231,13 +231,13 @@ namespace bilayer
 
 
   std::string
-  MemoryAvailability::shortage(const std::string &entries) const
+  MemoryAvailability::shortage(const std::string &entries,
+                               const double       needed) const
   {
     std::ostringstream m;
     m << std::setprecision(3);
     if (limit == Limit::address_space)
       {
-        // Names the threads when they hold more than the limit leaves.
         const std::string blas_env = environment("OPENBLAS_NUM_THREADS"),
                           own_env  = environment("BILAYER_BLAS_THREADS");
         m << format_bytes(bytes) << " are left of the address-space limit "
@@ -249,17 +249,21 @@ namespace bilayer
             << format_bytes(openblas_buffer) << ", and the subproblem tasks' "
             << "calls need " << format_bytes(blas_buffers) << " more";
         m << ")";
-        // One BLAS thread already: the libraries themselves fill the limit.
+        // The threads make the difference only where the memory they map
+        // would leave room for the meshes; one BLAS thread already: the
+        // libraries themselves fill the limit.
         const bool one_thread =
           blas_env == "1" && (own_env.empty() || own_env == "1");
-        if (openblas && !one_thread)
-          m << ": run with fewer BLAS threads (OPENBLAS_NUM_THREADS=1"
+        const bool threads_matter =
+          openblas && !one_thread && needed <= bytes + mapped + blas_buffers;
+        m << ": " << entries;
+        if (threads_matter)
+          m << ", run with fewer BLAS threads (OPENBLAS_NUM_THREADS=1"
             << (blas_env.empty() ? "" : " instead of " + blas_env)
             << ", BILAYER_BLAS_THREADS=1"
             << (own_env.empty() ? "" : " instead of " + own_env)
-            << ") or raise ulimit -v";
-        else
-          m << ": raise ulimit -v";
+            << ")";
+        m << " or raise ulimit -v";
       }
     else if (limit == Limit::cgroup)
       m << format_bytes(bytes) << " are available (the cgroup's memory.max)"
@@ -300,7 +304,8 @@ namespace bilayer
             << available.shortage(
                  "use fewer cells or cycles (Mesh/Cells along Sigma, Mesh/"
                  "Cells across each subdomain, Mesh/Number of cycles) or "
-                 "adaptive refinement");
+                 "adaptive refinement",
+                 estimate.memory);
     AssertThrow(false, dealii::ExcMessage(message.str()));
   }
 } // namespace bilayer

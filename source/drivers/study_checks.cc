@@ -138,7 +138,8 @@ namespace bilayer
               scene.mesh.refinement == Refinement::adaptive ?
                 "use fewer cycles (Mesh/Number of cycles) or a smaller "
                 "Mesh/Refinement fraction" :
-                "use fewer cycles (Mesh/Number of cycles) or cells");
+                "use fewer cycles (Mesh/Number of cycles) or cells",
+              need.memory);
     throw RunFailure(record.cycle, what.str());
   }
 
@@ -233,11 +234,14 @@ namespace bilayer
         what << "not finite: " << listed << "; ";
         if (std::isfinite(r.displacement_scale) && r.displacement_scale > 0)
           what << "the displacements reach " << r.displacement_scale
-               << ", and the energy and the residuals grow with the square "
-                  "of the loads' scale beyond double precision (1.8e308): "
-                  "scale the loads down (the Loads section: the problem is "
-                  "linear, the displacements scale with the loads, the "
-                  "energy with their square)";
+               << ", and the energy, the residuals and the error estimate "
+                  "(squares of the stresses) exceed double precision "
+                  "(1.8e308): choose units in which the moduli (Materials) "
+                  "and the loads (the Loads section) are nearer 1, e.g. GPa "
+                  "and mm (the problem is linear: the stresses scale with "
+                  "the loads, the displacements with the loads over the "
+                  "moduli, the energy with the loads' square over the "
+                  "moduli)";
         else
           what << "the solution itself is not finite: the loads' scale "
                   "(the Loads section) overflows double precision, or the "

@@ -59,6 +59,17 @@ namespace bilayer
       const Layer       layer   = static_cast<Layer>(l);
       const std::string n       = std::to_string(l + 1);
       const std::string section = "Materials/" + layer_subsection(l);
+      if (!materials.has_layer(layer))
+        {
+          // An absent layer's entries are not used (used_parameters.prm
+          // comments them out): nothing may depend on them.
+          for (const std::string name : {"E", "nu", "mu", "lambda"})
+            why_absent[name + n] = "a constant of layer " + n +
+                                   ", which is absent (Materials/Number of "
+                                   "layers = " +
+                                   std::to_string(materials.n_layers) + ")";
+          return;
+        }
       std::array<std::map<std::string, double>, 2> given;
       for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
         given[static_cast<unsigned int>(sd)] =

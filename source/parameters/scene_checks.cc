@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <bilayer/parameters/expressions.h>
 #include <bilayer/parameters/scene_checks.h>
 
 #include <string>
@@ -49,6 +50,11 @@ namespace bilayer
                              " must be '0; 0': layer 2 is absent "
                              "(Materials/Number of layers = 1)"));
     AssertThrow(materials.n_layers == 2 ||
+                  expressions::is_zero(loads.prescribed[1]),
+                ExcMessage("Loads/Layer 2/Prescribed displacement must be "
+                           "'0; 0': layer 2 is absent (Materials/Number of "
+                           "layers = 1)"));
+    AssertThrow(materials.n_layers == 2 ||
                   !loads.has_volume_load(Layer::second),
                 ExcMessage("Loads/Layer 2/Body force and Loads/Layer "
                            "2/Eigenstrain must be zero ('0; 0', '0; 0; 0'): "
@@ -93,11 +99,72 @@ namespace bilayer
     AssertThrow(fracture.growth != CrackGrowth::sweep || factors.size() == 1,
                 ExcMessage("Fracture/Crack growth = sweep needs one Loads/Load "
                            "factor (the load of every crack length)"));
+    // Factors that scale no load would repeat one state.
+    bool scaled = false;
+    for (const double lambda : factors)
+      scaled = scaled || lambda != 1;
+    const auto scales     = scene.loads.load_factor_scales;
+    const bool mechanical = has_mechanical_load(scene);
+    const bool thermal    = has_thermal_load(scene);
+    const bool nothing =
+      scales == LoadParameters::Scaled::mechanical ? !mechanical :
+      scales == LoadParameters::Scaled::thermal    ? !thermal :
+                                                     !mechanical && !thermal;
+    AssertThrow(!scaled || !nothing,
+                ExcMessage(
+                  std::string("Loads/Load factor scales = ") +
+                  (scales == LoadParameters::Scaled::mechanical ? "mechanical" :
+                   scales == LoadParameters::Scaled::thermal    ? "thermal" :
+                                                                  "all") +
+                  ": the scene has no such load, so the load factors change "
+                  "nothing; " +
+                  (scales == LoadParameters::Scaled::mechanical && thermal ?
+                     "set Loads/Load factor scales = thermal to scale the "
+                     "temperature change and eigenstrains" :
+                     "give the scene a load or choose what the factors "
+                     "scale")));
     for (unsigned int k = 1; k < factors.size(); ++k)
       AssertThrow(factors[k] > factors[k - 1],
                   ExcMessage("Loads/Load factor must increase with "
                              "Fracture/Crack growth = quasi-static, got " +
                              std::to_string(factors[k - 1]) + " then " +
                              std::to_string(factors[k])));
+  }
+
+
+  bool
+  has_thermal_load(const Scene &scene)
+  {
+    for (const Layer layer : {Layer::first, Layer::second})
+      if (scene.materials.has_layer(layer))
+        {
+          const unsigned int l = static_cast<unsigned int>(layer);
+          if (!expressions::is_zero(scene.loads.eigenstrain[l]))
+            return true;
+          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+            if (scene.loads.has_thermal_load(
+                  scene.materials.material(layer, sd)))
+              return true;
+        }
+    return false;
+  }
+
+
+  bool
+  has_mechanical_load(const Scene &scene)
+  {
+    const LoadParameters &loads = scene.loads;
+    for (const Layer layer : {Layer::first, Layer::second})
+      if (scene.materials.has_layer(layer))
+        {
+          const unsigned int l = static_cast<unsigned int>(layer);
+          if (!expressions::is_zero(loads.body_force[l]) ||
+              !expressions::is_zero(loads.prescribed[l]))
+            return true;
+          for (unsigned int i = 0; i < loads.parts.size(); ++i)
+            if (!loads.traction_is_zero(layer, i))
+              return true;
+        }
+    return false;
   }
 } // namespace bilayer

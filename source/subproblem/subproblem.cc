@@ -18,6 +18,21 @@
 
 namespace bilayer
 {
+
+  namespace
+  {
+    /// The stiffness matrix of subproblem @p name as a refusal names it:
+    /// where it is not positive definite, the law of the layer (@p entries)
+    /// is singular or nearly so, or nothing holds the subproblem.
+    std::string
+    stiffness_matrix_named(const std::string &name, const std::string &entries)
+    {
+      return "the stiffness matrix of subproblem " + name + " (" + entries +
+             ": a law that is singular or nearly so, or a side not held by "
+             "Geometry/Clamped sides)";
+    }
+  } // namespace
+
   using namespace dealii;
 
   ElasticSubproblem::ElasticSubproblem(const Layer             layer,
@@ -293,7 +308,7 @@ namespace bilayer
                                "(Loads) and the side lengths (Geometry) "
                                "leave the range of double; state them in "
                                "other units"));
-        const std::string what = "the stiffness matrix of subproblem " + name();
+        const std::string what = stiffness_matrix_named(name(), layer_entry);
         const std::vector<unsigned int> last =
           condense_on_sigma ? schur_dofs() : std::vector<unsigned int>();
         if (last.empty())

@@ -76,13 +76,14 @@ namespace bilayer
     bool openblas = false;
 
     /**
-     * The end of a refusal: what is available, what limits it and what to
-     * do (the memory each OpenBLAS thread maps and the variables to set,
-     * under an address-space limit; else @p entries), and the entry that
-     * overrides the refusal.
+     * The end of a refusal of @p needed bytes: what is available, what
+     * limits it and what to do: @p entries first; under an address-space
+     * limit also the memory each OpenBLAS thread maps, and the variables
+     * to set where fewer threads would leave room for @p needed; and the
+     * entry that overrides the refusal.
      */
     std::string
-    shortage(const std::string &entries) const;
+    shortage(const std::string &entries, const double needed) const;
   };
 
   /**

@@ -114,14 +114,7 @@ namespace bilayer
      */
     bool
     proportional_loading() const;
-    /// Whether a present layer has an eigenstrain or a temperature change
-    /// on a material that expands.
-    bool
-    has_preload() const;
-    /// Whether a present layer has a traction, body force or prescribed
-    /// displacement.
-    bool
-    has_mechanical_load() const;
+
 
     /**
      * The growth driver (Fracture/Crack growth = quasi-static or sweep,

@@ -21,6 +21,18 @@ namespace bilayer
   void
   check_growth_relations(const Scene &scene);
 
+  /// Whether a present layer of @p scene has an eigenstrain, or a
+  /// temperature change on a material that expands (the loads that
+  /// Loads/Load factor scales = thermal scales).
+  bool
+  has_thermal_load(const Scene &scene);
+
+  /// Whether a present layer of @p scene has a traction, a body force or a
+  /// prescribed displacement (those of Loads/Load factor scales =
+  /// mechanical).
+  bool
+  has_mechanical_load(const Scene &scene);
+
   /**
    * The loads of a rectangle scene sampled where they act (1001 points
    * along each side: the tractions on their sides, the prescribed
