@@ -196,6 +196,42 @@ namespace bilayer
     }
 
 
+    bool
+    NewtonIteration::repeats_rejection(const unsigned int k)
+    {
+      // A 2-cycle that the test of classify_active_set() does not see: the
+      // Newton step from an active set is rejected, the replacement step
+      // from its start mu_{k-1} leads back to an iterate with the same
+      // active set, and the same Newton step is rejected again. It happens
+      // where crack faces touch with almost no pressure: free contact
+      // multipliers a round-off above 0 whose jumps open the crack, which
+      // the Newton step drives below 0 (clipped: Phi falls), while the
+      // replacement steps, the reduced Newton steps among them (one more
+      // held multiplier per reduction, at most eight), gain next to
+      // nothing. (mask is the active set of mu_{k-1} at a rejected step.)
+      bool same = last_rejection > 0 && last_rejection + 2 == k &&
+                  accepted_residual > 0.1 * repeated_residual;
+      for (unsigned int i = 0; same && i < mask.size(); ++i)
+        same = mask(i) == rejected_start(i);
+      if (same)
+        ++n_repeated_rejections;
+      else
+        {
+          n_repeated_rejections = 0;
+          rejected_start        = mask;
+          repeated_residual     = accepted_residual;
+        }
+      last_rejection = k;
+      if (n_repeated_rejections == 1 && output.progress_interval > 0)
+        pcout << "    Newton steps " << k - 2 << " and " << k
+              << " start from the same active set and are both rejected: "
+                 "the reduced Newton steps hold every multiplier the step "
+                 "carries across a bound at once"
+              << std::endl;
+      return same;
+    }
+
+
     void
     NewtonIteration::replace_rejected_step(const unsigned int k)
     {
@@ -229,7 +265,7 @@ namespace bilayer
       const auto   truncated =
         best_on_segment(gradient * newton_direction, newton_curvature, a_max);
       const std::pair<double, double> on_face =
-        best_reduced_newton_step(best_face);
+        best_reduced_newton_step(best_face, n_repeated_rejections > 0);
       const char *kind = "projected-gradient";
       if (on_face.second > best_increase)
         {
@@ -267,7 +303,8 @@ namespace bilayer
 
 
     std::pair<double, double>
-    NewtonIteration::best_reduced_newton_step(BlockVector<double> &best_face)
+    NewtonIteration::best_reduced_newton_step(BlockVector<double> &best_face,
+                                              const bool           all_at_once)
     {
       // Reduced Newton steps (a primal active-set method from mu_k):
       // the free component that the direction d carries across a
@@ -278,6 +315,10 @@ namespace bilayer
       // until d stays inside the box or max_reductions components are
       // held; then the best point of the segment mu + a d, a in
       // [0, a_max] inside the box (4 solves for F d_H and F d).
+      // With all_at_once (the same Newton step rejected again) a reduction
+      // holds every free component that d carries across a bound, so that
+      // a contact zone whose many multipliers lie a round-off above 0 is
+      // released in a few reductions rather than one node per reduction.
       constexpr unsigned int max_reductions = 8;
       BlockVector<double>    reduced_mask(mask), face_step(mu), held(mu), Fd;
       held                              = 0;
@@ -304,6 +345,16 @@ namespace bilayer
             }
           if (first == mu.size() || reduction == max_reductions)
             break;
+          for (unsigned int i = 0; all_at_once && i < mu.size(); ++i)
+            if (i != first && reduced_mask(i) > 0 && face_step(i) != 0)
+              {
+                const double bound = set.bound_towards(i, face_step(i));
+                if ((bound - mu(i)) / face_step(i) < 1.)
+                  {
+                    reduced_mask(i) = 0;
+                    held(i)         = bound - mu(i);
+                  }
+              }
           hold_at_bound(first, reduced_mask, held, face_step, Fd);
         }
       return on_face;

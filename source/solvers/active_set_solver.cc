@@ -2,6 +2,7 @@
 
 #include <bilayer/core/progress.h>
 #include <bilayer/interface/interface_diagnostics.h>
+#include <bilayer/solvers/accelerated_solver.h>
 #include <bilayer/solvers/active_set_iteration.h>
 #include <bilayer/solvers/active_set_solver.h>
 #include <bilayer/solvers/feti_preconditioner.h>
@@ -136,6 +137,20 @@ namespace bilayer
             return message;
           if (reject)
             {
+              if (repeats_rejection(k) && stalled())
+                {
+                  // Back to the start of the rejected step, mu_{k-1}.
+                  mu = previous_mu;
+                  std::ostringstream msg;
+                  msg << "the Newton step from the active set of step " << k - 1
+                      << " was rejected " << max_repeated_rejections + 1
+                      << " times in a row (steps "
+                      << k - 2 * max_repeated_rejections << " to " << k
+                      << ") with KKT residual " << std::setprecision(3)
+                      << accepted_residual << " > Solver/Tolerance "
+                      << parameters.tolerance << " at its start";
+                  return msg.str();
+                }
               replace_rejected_step(k);
               continue;
             }
@@ -143,6 +158,7 @@ namespace bilayer
           message        = solve_newton_system(k, change);
           if (!message.empty())
             return message;
+          accepted_residual = kkt.value();
           take_newton_step(change);
         }
     }
@@ -388,10 +404,11 @@ namespace bilayer
                                       interface);
     result.setup_seconds = timer.wall_time();
     timer.restart();
-    const auto finish = [&](const std::string &message) {
+    const auto finish = [&](const std::string &message,
+                            const bool         whole_solutions) {
       // The iterations solved on Sigma: the whole solutions of the last
       // multipliers.
-      if (parameters.iterates_on_sigma())
+      if (parameters.iterates_on_sigma() && !whole_solutions)
         {
           solve_subproblems(subproblems, interface, mu, w);
           result.subdomain_solves += Layout::n_subproblems;
@@ -416,6 +433,37 @@ namespace bilayer
                                           mu,
                                           w,
                                           result);
-    return finish(iteration.run());
+
+    const std::string message = iteration.run();
+    if (!iteration.stalled())
+      return finish(message, false);
+    // The same Newton step rejected again and again (a degenerate contact
+    // zone, issue 45): the accelerated method from the multipliers where it
+    // starts, with theta = auto and the KKT rule of this method; it
+    // converges on the dual problem whatever its active sets. Its final
+    // solve gives the whole solutions.
+    SolverParameters accelerated = parameters;
+    accelerated.method           = SolverMethod::accelerated;
+    accelerated.auto_theta       = true;
+    accelerated.stopping_rule    = StoppingRule::kkt;
+    pcout << "    " << message
+          << ": continuing with the accelerated method (theta = auto, "
+             "stopping rule kkt) from there"
+          << std::endl;
+    const SolverResult first_order =
+      AcceleratedSolver(accelerated, output, pcout)
+        .solve(subproblems, interface, mu, w);
+    result.converged      = first_order.converged;
+    result.diverged       = first_order.diverged;
+    result.stopping_value = first_order.stopping_value;
+    result.subdomain_solves += first_order.subdomain_solves;
+    result.theta               = first_order.theta;
+    result.lambda_max          = first_order.lambda_max;
+    result.predicted_threshold = first_order.predicted_threshold;
+    result.setup_seconds += first_order.setup_seconds;
+    return finish(message + "; then the accelerated method (theta = " +
+                    "auto, stopping rule kkt) from there: " +
+                    first_order.message,
+                  true);
   }
 } // namespace bilayer

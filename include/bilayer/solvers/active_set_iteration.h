@@ -112,6 +112,20 @@ namespace bilayer
       std::string
       run();
 
+      /// Whether run() ended because the Newton step from one active set
+      /// was rejected max_repeated_rejections + 1 times in a row (mu is
+      /// then the iterate that step starts from): the caller continues
+      /// with the accelerated method.
+      bool
+      stalled() const
+      {
+        return n_repeated_rejections >= max_repeated_rejections;
+      }
+
+      /// The rejections in a row, after the first, of the Newton step from
+      /// one active set that end the Newton steps (stalled()).
+      static constexpr unsigned int max_repeated_rejections = 5;
+
     private:
       /// The full solve at the iterate of step @p k, its jumps g, the
       /// gradient D g of the dual function and the KKT residual.
@@ -143,15 +157,25 @@ namespace bilayer
                        const ActiveSetChange &change,
                        const bool             reject);
 
+      /// Whether the rejected Newton step @p k starts from the active set
+      /// of the rejected step k - 2 (the replacement step led back to it)
+      /// while the KKT residual there has not fallen tenfold: counts such
+      /// repetitions in n_repeated_rejections (0 for a new rejection).
+      bool
+      repeats_rejection(const unsigned int k);
+
       /// Back to the previous iterate and the best of the replacement
       /// steps from there, in place of the rejected Newton step @p k.
       void
       replace_rejected_step(const unsigned int k);
 
       /// The best reduced Newton step from mu: its direction in
-      /// @p best_face, its length and increase of the dual function.
+      /// @p best_face, its length and increase of the dual function. With
+      /// @p all_at_once each reduction holds every free multiplier that the
+      /// direction carries across a bound, not only the first.
       std::pair<double, double>
-      best_reduced_newton_step(dealii::BlockVector<double> &best_face);
+      best_reduced_newton_step(dealii::BlockVector<double> &best_face,
+                               const bool                   all_at_once);
 
       /// Holds component @p first of the face step @p face_step at the
       /// bound it crosses and solves the Newton step of the smaller face.
@@ -197,6 +221,14 @@ namespace bilayer
       double                      predicted_increase = 0, newton_curvature = 0;
       dealii::BlockVector<double> newton_direction;
       unsigned int                n_replaced = 0;
+      // Repeated rejections (a 2-cycle between an accepted active set and a
+      // rejected one): the active set that the last rejected Newton step
+      // started from and the step of that rejection, the KKT residuals of
+      // the last accepted iterate and of the first start of the
+      // repetitions, and their number.
+      dealii::BlockVector<double> rejected_start;
+      unsigned int                last_rejection = 0, n_repeated_rejections = 0;
+      double                      accepted_residual = 0, repeated_residual = 0;
       bool after_fallback = false, stale_preconditioner = false,
            no_ascent = false;
     };

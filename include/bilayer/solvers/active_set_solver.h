@@ -54,6 +54,15 @@ namespace bilayer
    * solution set: docs/problem.md §4.3 gives the argument. Where no step is
    * rejected the iterates are those of the plain method.
    *
+   * A Newton step rejected again from the active set of the rejected step
+   * before it (a 2-cycle through a rejection: free contact multipliers a
+   * round-off above 0 where the faces open, issue 45) makes the reduced
+   * Newton steps hold every multiplier the step carries across a bound at
+   * once; one rejected six times in a row ends the Newton steps, and the
+   * AcceleratedSolver (theta = auto, the KKT rule) continues from the
+   * multipliers where that step starts, as the terminal and the solver
+   * message say.
+   *
    * <h3>Linear solves</h3>
    * Conjugate gradients on F_II, preconditioned by the FetiPreconditioner
    * of Solver/Active set/Preconditioner (dirichlet, lumped or none), which
