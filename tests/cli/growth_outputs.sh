@@ -3,7 +3,10 @@
 # runs (docs/robustness.md, "Growth runs"):
 #  1. every file a growth run writes is its own: a growth scene (quasi-static
 #     and sweep) runs twice into one directory, exit 0 both times; a failed
-#     growth run's DIR.failed does not block the corrected run;
+#     growth run's DIR.failed does not block the corrected run (its message
+#     says that Maximum growth steps came before the load factors were
+#     done); a mode split length below the tip's cell is raised to the
+#     cell, with the length used in summary.json;
 #  2. SIGINT, SIGTERM and SIGHUP during the steps: exit 128 + signal, one
 #     line, no staging directory, lock or stopped copy left, DIR as it was;
 #     SIGKILL: the stale staging directory and lock do not block the next
@@ -59,9 +62,28 @@ verdict "Crack growth = sweep twice into one directory: exit 0 both" "$why"
 rc=$?
 why=""
 [[ $rc -eq 2 && -s f.failed/growth.csv && -s f.failed/summary.json ]] || why="exit $rc, $(ls f.failed 2> /dev/null | tr '\n' ' ')"
+# (Steps 0-2 are load steps below the onset: the message says the limit came
+# before the load factors were done, not that the crack still grows.)
+grep -qF "Fracture/Maximum growth steps = 3 steps reached before the load factors are done (the next: 2)" f.err ||
+  why="$why; message: $(cat f.err)"
 "$bilayer" "$prm" --set "Output/Output directory=f" > f.out 2> f.err || why="$why; the corrected run: exit $? $(cat f.err)"
 [[ -s f/growth.csv && ! -e f.failed ]] || why="$why; f.failed kept or f missing"
 verdict "a failed growth run's DIR.failed, then the corrected run: exit 0, DIR.failed gone" "$why"
+
+# A mode split length below the tip's cell is raised to the cell, and the
+# records carry the length used (summary.json mode_split_length and note).
+"$bilayer" "$scenes/partial_closure.prm" --set "Output/Output directory=m" --set "Output/Write VTU=false" \
+  --set "Mesh/Number of cycles=1" --set "Fracture/Mode split length=1e-3" > m.out 2> m.err
+rc=$?
+why=$(/usr/bin/python3 -c "
+import json
+tips = json.load(open('m/summary.json'))['cycles'][-1]['crack_tips']
+bad = [t for t in tips if not (t['mode_split_length'] > 1e-3 and 'is below the tip cell' in t['mode_split_note']
+                               and ('computed over %g' % t['mode_split_length']) in t['mode_split_note'])]
+print('%d of %d tips: %s' % (len(bad), len(tips), bad[:1]) if bad or not tips else '')
+" 2>&1)
+[[ $rc -eq 0 ]] || why="exit $rc; $why"
+verdict "a mode split length below the cell: raised to the cell, the length used recorded" "$why"
 
 # ---- 2. Signals and a full disk during the steps.
 "$bilayer" "$prm" --set "Output/Output directory=out" > out.log 2>&1 || verdict "set-up run" "exit $?"
