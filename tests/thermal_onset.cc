@@ -121,8 +121,7 @@ main()
                                         Pi -
                                       1));
         }
-      std::cout << "load factors " << factors << ": "
-                << growth.growth().size() << " steps, first kinds "
+      std::cout << "load factors " << factors << ": the first step: "
                 << growth.growth().front().kind << std::endl;
       check("  accepted", accepted);
       check("  onset load factor times dT = dT sqrt(G_c / G(dT)) (1e-8)",
