@@ -178,15 +178,11 @@ namespace
     // Loading starts at 0: with load factors whose first lies above the
     // first onset (2.5 > 1.7), the onset is found below it (the state at
     // 2.5 is never the first step) and every onset is that of 0.5:0.5:6.
-    Study above(scene_from_string(scene_text(loads,
-                                             "quasi-static",
-                                             "2.5, 6",
-                                             tips,
-                                             true,
-                                             g0,
-                                             "r_above"),
-                                  "crack_growth_onsets"),
-                quiet);
+    Study above(
+      scene_from_string(
+        scene_text(loads, "quasi-static", "2.5, 6", tips, true, g0, "r_above"),
+        "crack_growth_onsets"),
+      quiet);
     check("first load factor above the onset accepted", above.run_growth());
     std::vector<double> onsets_exact, onsets_above;
     for (const GrowthStep &s : exact.growth())
@@ -202,8 +198,7 @@ namespace
     check("first load factor above the onset: step 0 is the onset at "
           "sqrt(G_c / G(l_0; 1)) (1e-6)",
           start.kind == "onset" &&
-            std::abs(start.load_factor /
-                       critical[key(start.crack_length)] -
+            std::abs(start.load_factor / critical[key(start.crack_length)] -
                      1) < 1e-6);
     check("first load factor above the onset: the onsets of 0.5:0.5:6 "
           "(1e-9) and the same final crack length",

@@ -159,10 +159,13 @@ main()
     {
       const GrowthCriterion f = growth_criterion(pl, a, g, G_Ic, G_IIc);
       const double          c = critical_load_factor(f, lambda) / lambda;
-      below = below && !is_critical(growth_criterion(
-                         pl, a, scaled(g, c * (1 - 1e-8)), G_Ic, G_IIc));
-      at = at && is_critical(growth_criterion(
-                   pl, a, scaled(g, c * (1 - 1e-10)), G_Ic, G_IIc));
+      below =
+        below &&
+        !is_critical(
+          growth_criterion(pl, a, scaled(g, c * (1 - 1e-8)), G_Ic, G_IIc));
+      at = at &&
+           is_critical(
+             growth_criterion(pl, a, scaled(g, c * (1 - 1e-10)), G_Ic, G_IIc));
     }
   check("onset tolerance on the load: lambda_c (1 - 1e-8) below critical, "
         "lambda_c (1 - 1e-10) critical, a = 0.01 to 50",

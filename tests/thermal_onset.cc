@@ -66,7 +66,8 @@ namespace
   growth_text(const double G_c, const std::string &factors, const bool thermal)
   {
     std::ostringstream s;
-    s << std::setprecision(17) << "subsection Loads\n set Temperature change = -200\n"
+    s << std::setprecision(17)
+      << "subsection Loads\n set Temperature change = -200\n"
       << " set Load factor = " << factors << "\n"
       << (thermal ? " set Load factor scales = thermal\n" : "") << "end\n"
       << "subsection Fracture\n set Crack growth = quasi-static\n"
@@ -86,11 +87,11 @@ main()
 {
   std::ostringstream quiet;
   Study              base(scene_from_string(
-                 scene_text("subsection Loads\n set Temperature change = -200\n"
-                                         "end\nsubsection Fracture\n"
-                                         " set Energy release rate = true\nend\n"),
-                 "thermal_onset"),
-               quiet);
+               scene_text("subsection Loads\n set Temperature change = -200\n"
+                                       "end\nsubsection Fracture\n"
+                                       " set Energy release rate = true\nend\n"),
+               "thermal_onset"),
+             quiet);
   check("static run accepted", base.run());
   const CycleRecord &last = base.records().back();
   check("one crack tip", last.release.size() == 1);
@@ -103,7 +104,8 @@ main()
 
   for (const std::string factors : {"0.5:0.5:2", "1.5, 2"})
     {
-      Study growth(scene_from_string(scene_text(growth_text(G_c, factors, true)),
+      Study      growth(scene_from_string(scene_text(
+                                       growth_text(G_c, factors, true)),
                                      "thermal_onset"),
                    quiet);
       const bool accepted = growth.run_growth();
@@ -115,14 +117,15 @@ main()
           if (step.kind == "load" && step.step + 1 < growth.growth().size() &&
               growth.growth()[step.step + 1].kind != "growth" &&
               step.crack_length == 5)
-            worst = std::max(worst,
-                             std::abs(step.energy / (step.load_factor *
-                                                     step.load_factor) /
-                                        Pi -
-                                      1));
+            worst =
+              std::max(worst,
+                       std::abs(step.energy /
+                                  (step.load_factor * step.load_factor) / Pi -
+                                1));
         }
-      std::cout << "load factors " << factors << ": the first step: "
-                << growth.growth().front().kind << std::endl;
+      std::cout << "load factors " << factors
+                << ": the first step: " << growth.growth().front().kind
+                << std::endl;
       check("  accepted", accepted);
       check("  onset load factor times dT = dT sqrt(G_c / G(dT)) (1e-8)",
             std::abs(onset * dT / dT_c - 1) < 1e-8);
@@ -136,9 +139,9 @@ main()
   std::string refusal;
   try
     {
-      Study growth(scene_from_string(
-                     scene_text(growth_text(G_c, "0.9:0.05:1.2", false)),
-                     "thermal_onset"),
+      Study growth(scene_from_string(scene_text(
+                                       growth_text(G_c, "0.9:0.05:1.2", false)),
+                                     "thermal_onset"),
                    quiet);
       growth.run_growth();
     }

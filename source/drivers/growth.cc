@@ -118,8 +118,7 @@ namespace bilayer
     // the first load factor (found by a probe at that factor).
     const std::vector<double> &factors = scene.loads.load_factors;
     double                     lambda  = 0;
-    const auto                 step    = [&](const double       load,
-                            const std::string &kind) {
+    const auto step = [&](const double load, const std::string &kind) {
       CycleRecord record;
       return solve_growth_step(growth_steps.empty() ? first : record,
                                load,
@@ -224,7 +223,7 @@ namespace bilayer
           followed[tip.number - 1].stopped.empty())
         {
           followed[tip.number - 1].onset = tip.critical_load;
-          onset = std::min(onset, tip.critical_load);
+          onset                          = std::min(onset, tip.critical_load);
         }
     return onset;
   }
@@ -278,13 +277,13 @@ namespace bilayer
   Study::criterion_at(const EnergyReleaseRate &g) const
   {
     const FractureParameters &fracture = scene.fracture;
-    return growth_criterion(
-      fracture.mixed_mode_law,
-      fracture.mixed_mode_exponent,
-      g,
-      fracture.toughness_at(g.tip.point, g.tip.s),
-      fracture.mode_ii_toughness_at(g.tip.point, g.tip.s),
-      split_resolution(scene.solver.acceptance_tolerance));
+    return growth_criterion(fracture.mixed_mode_law,
+                            fracture.mixed_mode_exponent,
+                            g,
+                            fracture.toughness_at(g.tip.point, g.tip.s),
+                            fracture.mode_ii_toughness_at(g.tip.point, g.tip.s),
+                            split_resolution(
+                              scene.solver.acceptance_tolerance));
   }
 
 
@@ -330,10 +329,11 @@ namespace bilayer
         at << std::setprecision(8) << lambda;
         throw RunFailure(step,
                          kind == "growth" ?
-                           "the crack still grows (at load factor " +
-                             at.str() + ") after " + limit + " steps" :
-                           limit + " steps reached before the load factors "
-                                   "are done (the next: " +
+                           "the crack still grows (at load factor " + at.str() +
+                             ") after " + limit + " steps" :
+                           limit +
+                             " steps reached before the load factors "
+                             "are done (the next: " +
                              at.str() +
                              "): raise it, or give fewer Loads/Load factor");
       }
@@ -440,7 +440,7 @@ namespace bilayer
           !tip_may_grow(tip.number)     ? "held" :
           !followed_tip.stopped.empty() ? "stopped: " + followed_tip.stopped :
           tip.critical                  ? "critical" :
-                                                            "below critical";
+                                          "below critical";
         step.tips.push_back(tip);
       }
     return step;

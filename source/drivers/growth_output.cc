@@ -36,9 +36,9 @@ namespace bilayer
           // (all but the last until the end; a step is marked unstable when
           // the next one grows at its load): a constant number of bytes per
           // step. The rest is written once, at the end.
-          const std::size_t done =
-            final || growth_steps.empty() ? growth_steps.size() :
-                                            growth_steps.size() - 1;
+          const std::size_t  done     = final || growth_steps.empty() ?
+                                          growth_steps.size() :
+                                          growth_steps.size() - 1;
           const unsigned int n_tips   = followed.size();
           const unsigned int n_points = scene.output.displacement_points.size();
           if (!growth_head_written || growth_rows_written < done)

@@ -261,8 +261,7 @@ namespace bilayer
           m << ", run with fewer BLAS threads (OPENBLAS_NUM_THREADS=1"
             << (blas_env.empty() ? "" : " instead of " + blas_env)
             << ", BILAYER_BLAS_THREADS=1"
-            << (own_env.empty() ? "" : " instead of " + own_env)
-            << ")";
+            << (own_env.empty() ? "" : " instead of " + own_env) << ")";
         m << " or raise ulimit -v";
       }
     else if (limit == Limit::cgroup)

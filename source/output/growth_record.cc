@@ -46,10 +46,9 @@ namespace bilayer
                        const unsigned int n_tips,
                        const unsigned int n_points)
   {
-    out << step.step << ',' << json_number(step.load_factor) << ','
-        << step.kind << ',' << (step.unstable ? 1 : 0) << ','
-        << json_number(step.energy) << ','
-        << json_number(step.conjugate_displacement) << ','
+    out << step.step << ',' << json_number(step.load_factor) << ',' << step.kind
+        << ',' << (step.unstable ? 1 : 0) << ',' << json_number(step.energy)
+        << ',' << json_number(step.conjugate_displacement) << ','
         << json_number(step.crack_length);
     for (unsigned int p = 0; p < n_points; ++p)
       for (unsigned int d = 0; d < 2; ++d)

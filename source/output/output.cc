@@ -80,6 +80,33 @@ namespace bilayer
   }
 
 
+  namespace
+  {
+    /// Run @p writer on @p out and close it; a failure throws
+    /// @p failed("cannot write").
+    template <typename Failure>
+    void
+    write_and_close(std::ofstream                             &out,
+                    const std::function<void(std::ostream &)> &writer,
+                    const Failure                             &failed)
+    {
+      try
+        {
+          writer(out);
+        }
+      catch (const ExceptionBase &)
+        {
+          // deal.II's writers check the stream themselves (ExcIO).
+          out.setstate(std::ios::badbit);
+        }
+      out.flush();
+      AssertThrow(out, failed("cannot write"));
+      out.close();
+      AssertThrow(out, failed("cannot write"));
+    }
+  } // namespace
+
+
   void
   write_atomically(const std::string                         &path,
                    const std::function<void(std::ostream &)> &writer)
@@ -95,19 +122,7 @@ namespace bilayer
       errno = 0;
       std::ofstream out(temporary);
       AssertThrow(out, failed("cannot create"));
-      try
-        {
-          writer(out);
-        }
-      catch (const ExceptionBase &)
-        {
-          // deal.II's writers check the stream themselves (ExcIO).
-          out.setstate(std::ios::badbit);
-        }
-      out.flush();
-      AssertThrow(out, failed("cannot write"));
-      out.close();
-      AssertThrow(out, failed("cannot write"));
+      write_and_close(out, writer, failed);
     }
     std::error_code error;
     std::filesystem::rename(temporary, path, error);
@@ -137,18 +152,7 @@ namespace bilayer
     errno = 0;
     std::ofstream out(path, std::ios::app);
     AssertThrow(out, failed("cannot open"));
-    try
-      {
-        writer(out);
-      }
-    catch (const ExceptionBase &)
-      {
-        out.setstate(std::ios::badbit);
-      }
-    out.flush();
-    AssertThrow(out, failed("cannot write"));
-    out.close();
-    AssertThrow(out, failed("cannot write"));
+    write_and_close(out, writer, failed);
   }
 
 
@@ -598,7 +602,8 @@ namespace bilayer
 
 
   void
-  write_collections(const std::string &directory, const SolutionRecords &records)
+  write_collections(const std::string     &directory,
+                    const SolutionRecords &records)
   {
     if (!records.pvd.empty())
       write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {

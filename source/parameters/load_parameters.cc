@@ -275,12 +275,12 @@ namespace bilayer
     };
 
     prm.enter_subsection("Loads");
-    load_factors       = parse_load_factors(prm.get("Load factor"));
+    load_factors             = parse_load_factors(prm.get("Load factor"));
     const std::string scales = prm.get("Load factor scales");
-    load_factor_scales = scales == "thermal" ? Scaled::thermal :
-                         scales == "all"     ? Scaled::all :
-                                               Scaled::mechanical;
-    constants    = prm.get("Constants");
+    load_factor_scales       = scales == "thermal" ? Scaled::thermal :
+                               scales == "all"     ? Scaled::all :
+                                                     Scaled::mechanical;
+    constants                = prm.get("Constants");
     AssertThrow(constants.size() <= expressions::max_length,
                 ExcMessage("Loads/Constants: longer than " +
                            std::to_string(expressions::max_length) +

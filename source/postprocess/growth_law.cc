@@ -33,9 +33,9 @@ namespace bilayer
     {
       GrowthCriterion f;
       f.log_value = log_value;
-      f.value     = std::min(std::exp(log_value),
-                         std::numeric_limits<double>::max());
-      f.degree    = degree;
+      f.value =
+        std::min(std::exp(log_value), std::numeric_limits<double>::max());
+      f.degree = degree;
       return f;
     }
   } // namespace
@@ -68,14 +68,14 @@ namespace bilayer
     const auto resolved = [&](const double part) {
       return part > resolution * G ? part : 0.;
     };
-    const double G_I = resolved(std::max(g.G_I, 0.)),
+    const double G_I  = resolved(std::max(g.G_I, 0.)),
                  G_II = resolved(std::max(g.G_II, 0.));
     if (law == MixedModeLaw::power_law)
       {
         // ln f = ln((G_I / G_Ic)^a + (G_II / G_IIc)^a), in logs: no
         // overflow for a large a, no 0^a issue for a small one.
-        const double t_I = G_I > 0 ? exponent * (std::log(G_I) - std::log(G_c)) :
-                                     minus_infinity;
+        const double t_I =
+          G_I > 0 ? exponent * (std::log(G_I) - std::log(G_c)) : minus_infinity;
         const double t_II = G_II > 0 ?
                               exponent * (std::log(G_II) - std::log(G_IIc)) :
                               minus_infinity;

@@ -142,15 +142,15 @@ namespace bilayer
                                 "set Fracture/Mode split length";
             continue;
           }
-        const double cell  = t < tip_cell_sizes.size() ? tip_cell_sizes[t] : 0;
+        const double cell = t < tip_cell_sizes.size() ? tip_cell_sizes[t] : 0;
         // A closure length below the tip's cell is resolved by one cell
         // only (the nodal forces integrate over it): it is raised to the
         // cell, and the note and mode_split_length carry the length used.
-        const bool   raised = length > 0 && length < cell;
-        const double delta  = raised     ? cell :
-                              length > 0 ? length :
-                                           std::min(mode_split_cells * cell,
-                                                    0.5 * g.tip.free_distance);
+        const bool         raised = length > 0 && length < cell;
+        const double       delta  = raised     ? cell :
+                                    length > 0 ? length :
+                                                 std::min(mode_split_cells * cell,
+                                                   0.5 * g.tip.free_distance);
         std::ostringstream note;
         note << std::setprecision(6);
         if (raised)
@@ -159,8 +159,9 @@ namespace bilayer
                << ": the split is computed over " << delta;
         if (!(delta > 0) || delta > g.tip.free_distance)
           {
-            note << (note.str().empty() ? "" : "; ") << "the closure length " << delta
-                 << " does not fit in the free distance " << g.tip.free_distance
+            note << (note.str().empty() ? "" : "; ") << "the closure length "
+                 << delta << " does not fit in the free distance "
+                 << g.tip.free_distance
                  << " of the tip (Fracture/Mode split length)";
             g.mode_split_note = note.str();
             continue;
@@ -184,7 +185,8 @@ namespace bilayer
           {
             // Nothing released behind the tip, and G is round-off.
             g.G_I = g.G_II = 0;
-            note << (note.str().empty() ? "" : "; ") << "no crack-closure work and G at round-off: G_I = G_II = "
+            note << (note.str().empty() ? "" : "; ")
+                 << "no crack-closure work and G at round-off: G_I = G_II = "
                     "0, no phase angle";
             g.mode_split_note = note.str();
           }

@@ -17,7 +17,7 @@ namespace bilayer
   {
     load_factor_    = 1;
     preload_factor_ = 1;
-    has_preload_ = volume != nullptr && volume->has_eigenstrain();
+    has_preload_    = volume != nullptr && volume->has_eigenstrain();
     inhomogeneities.clear();
     for (const auto &line : constraints.get_lines())
       if (line.inhomogeneity != 0)

@@ -652,11 +652,11 @@ namespace bilayer
       (shared ? shared->load_product(w) : ordered_dot(load_vector, w));
     // (Without an eigenstrain exactly the sum above, bit for bit.)
     // (The eigenstrain energy of setup() is quadratic in the preload.)
-    return eigenstrain_energy_ == 0 ? energy :
+    return eigenstrain_energy_ == 0 ?
+             energy :
            preload_factor_ == 1 ?
-                                      energy + eigenstrain_energy_ :
-                                      energy + preload_factor_ * preload_factor_ *
-                                                 eigenstrain_energy_;
+             energy + eigenstrain_energy_ :
+             energy + preload_factor_ * preload_factor_ * eigenstrain_energy_;
   }
 
 
