@@ -182,25 +182,42 @@ namespace bilayer
       std::error_code       error;
       const Marker          m = read_marker(path);
       std::set<std::string> own(m.files.begin(), m.files.end());
-      for (fs::directory_iterator it(path, error), end; !error && it != end;
-           it.increment(error))
+      const auto            is_mine = [&](const fs::directory_entry &entry) {
+        const std::string name = entry.path().filename().string();
+        return (name == StagedDirectory::marker_name() ||
+                name == marker_temporary ||
+                (staging ? StagedDirectory::is_output_name(name, true) :
+                                      own.count(name) > 0 &&
+                             StagedDirectory::is_output_name(name, false))) &&
+               !fs::is_directory(fs::symlink_status(entry.path(), error));
+      };
+      // A staging directory discarded at a stop signal may still receive
+      // the file a writing thread had opened before the stop: files of
+      // output names that appear after a pass are this run's too, removed by
+      // the next pass (for up to a second), never those of other names.
+      for (unsigned int pass = 0;; ++pass)
         {
-          const std::string name = it->path().filename().string();
-          const bool        mine =
-            name == StagedDirectory::marker_name() ||
-            name == marker_temporary ||
-            (staging ? StagedDirectory::is_output_name(name, true) :
-                       own.count(name) > 0 &&
-                         StagedDirectory::is_output_name(name, false));
-          if (mine && !fs::is_directory(fs::symlink_status(it->path(), error)))
-            ::unlink(it->path().c_str());
+          for (fs::directory_iterator it(path, error), end; !error && it != end;
+               it.increment(error))
+            if (is_mine(*it))
+              ::unlink(it->path().c_str());
+          if (::rmdir(path.c_str()) == 0 || errno == ENOENT)
+            return "";
+          const int   why = errno;
+          std::string left;
+          bool        only_mine = staging && pass < 50;
+          for (fs::directory_iterator it(path, error), end; !error && it != end;
+               it.increment(error))
+            {
+              if (left.empty())
+                left = it->path().filename().string();
+              only_mine = only_mine && is_mine(*it);
+            }
+          if (!only_mine || left.empty())
+            return left.empty() ? "(" + std::string(std::strerror(why)) + ")" :
+                                  left;
+          ::usleep(20000);
         }
-      if (::rmdir(path.c_str()) == 0 || errno == ENOENT)
-        return "";
-      for (fs::directory_iterator it(path, error), end; !error && it != end;
-           it.increment(error))
-        return it->path().filename().string();
-      return "(" + std::string(std::strerror(errno)) + ")";
     }
 
 
