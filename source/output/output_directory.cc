@@ -315,8 +315,16 @@ namespace bilayer
         // Directory permissions do not stop root: write a file too.
         errno = 0;
         if (!write_marker(staging_path, identity(), staging_path, {}))
-          problem =
-            "cannot write into '" + staging_path + "': " + std::strerror(errno);
+          {
+            problem = "cannot write into '" + staging_path +
+                      "': " + std::strerror(errno);
+            // Neither marker nor attribute names the directory this run:
+            // it goes now, with the marker's temporary if that was made
+            // (rmdir removes only an empty directory).
+            ::unlink((staging_path + "/" + temporary_name()).c_str());
+            if (::rmdir(staging_path.c_str()) == 0)
+              staging_path.clear();
+          }
         seen = {marker_name()};
       }
     return problem;

@@ -12,7 +12,8 @@
 #     SIGKILL: the stale staging directory and lock do not block the next
 #     run, which removes them; a full file system (a 2 MiB tmpfs, where this
 #     machine lets the test mount one): one line, exit 1, the directory as it
-#     was, then a run elsewhere exit 0;
+#     was, then a run elsewhere exit 0; a file system out of inodes (4): one
+#     line, nothing left;
 #  3. growth output costs O(1) per step: the bytes the process writes
 #     (wchar of /proc/self/io, which counts a reaped child's writes) grow
 #     by the same amount per step from 20 to 40 to 80 steps (within 3 %),
@@ -26,6 +27,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/verdict.sh"
 work=$(mktemp -d)
 cleanup() {
   mountpoint -q "$work/small" 2> /dev/null && umount "$work/small"
+  mountpoint -q "$work/tiny" 2> /dev/null && umount "$work/tiny"
   rm -rf "$work"
 }
 trap cleanup EXIT
@@ -140,6 +142,20 @@ if mount -t tmpfs -o size=2m tmpfs small 2> /dev/null; then
   "$bilayer" "$prm" --set "Output/Output directory=small/keep/out" > full.out 2> full.err ||
     why="$why; the next run: exit $? $(cat full.err)"
   verdict "a full file system during growth steps: one line, the directory as it was, the next run exit 0" "$why"
+  # A file system out of inodes: the staging directory is made, its marker
+  # is not; the run still removes what it made.
+  mkdir tiny
+  if mount -t tmpfs -o size=2m,nr_inodes=4 tmpfs tiny 2> /dev/null; then
+    mkdir tiny/keep
+    before=$(find tiny | sort)
+    "$bilayer" "$prm" --set "Output/Output directory=tiny/out" > inode.out 2> inode.err
+    rc=$?
+    why=""
+    [[ $rc -eq 1 && $(wc -l < inode.err) -eq 1 ]] || why="exit $rc, $(head -3 inode.err)"
+    [[ "$(find tiny | sort)" == "$before" ]] || why="$why; left: $(ls -A tiny | tr '\n' ' ')"
+    umount tiny
+    verdict "a file system out of inodes: one line, nothing left" "$why"
+  fi
 else
   echo "(a full file system: no tmpfs can be mounted here; docs/robustness.md, scripts/fuzz_inputs)"
 fi
