@@ -182,14 +182,18 @@ namespace bilayer
       std::error_code       error;
       const Marker          m = read_marker(path);
       std::set<std::string> own(m.files.begin(), m.files.end());
-      const auto            is_mine = [&](const fs::directory_entry &entry) {
+      // (Its own error code: a file gone between the listing and the test
+      // must not end the listing's loop.)
+      const auto is_mine = [&](const fs::directory_entry &entry) {
+        std::error_code   status_error;
         const std::string name = entry.path().filename().string();
         return (name == StagedDirectory::marker_name() ||
                 name == marker_temporary ||
                 (staging ? StagedDirectory::is_output_name(name, true) :
-                                      own.count(name) > 0 &&
+                           own.count(name) > 0 &&
                              StagedDirectory::is_output_name(name, false))) &&
-               !fs::is_directory(fs::symlink_status(entry.path(), error));
+               !fs::is_directory(
+                 fs::symlink_status(entry.path(), status_error));
       };
       // A staging directory discarded at a stop signal may still receive
       // the file a writing thread had opened before the stop: files of
