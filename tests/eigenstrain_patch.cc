@@ -84,7 +84,7 @@ namespace
   double
   largest_stress(const ElasticSubproblem &sub, const Vector<double> &w)
   {
-    const StressPostprocessor        stresses(sub.law(), sub.volume_load());
+    const StressPostprocessor        stresses(sub.laws(), sub.volume_load());
     FEValues<2>                      fe_values(sub.mapping(),
                           sub.fe(),
                           QGauss<2>(sub.fe().degree + 1),

@@ -89,7 +89,7 @@ namespace
                 const Vector<double>    &w,
                 const double             szz)
   {
-    const StressPostprocessor        stresses(sub.law(), sub.volume_load());
+    const StressPostprocessor        stresses(sub.laws(), sub.volume_load());
     FEValues<2>                      fe_values(sub.mapping(),
                           sub.fe(),
                           QGauss<2>(sub.fe().degree + 1),

@@ -236,7 +236,7 @@ namespace
   double
   stress_error(const ElasticSubproblem &sub, const Vector<double> &w)
   {
-    const StressPostprocessor        stresses(sub.law(), sub.volume_load());
+    const StressPostprocessor        stresses(sub.laws(), sub.volume_load());
     FEValues<2>                      fe_values(sub.mapping(),
                           sub.fe(),
                           QGauss<2>(3),

@@ -103,7 +103,7 @@ namespace bilayer
             scene.output.terminal == TerminalOutput::full &&
               distribution.is_root())
     , rout(out, distribution.is_root())
-    , domain(scene.geometry, scene.mesh)
+    , domain(scene.geometry, scene.mesh, scene.materials.all_ply_heights())
     , coupling(scene.contact)
   {}
 
@@ -365,9 +365,12 @@ namespace bilayer
               const unsigned int i = Layout::index(layer, sd);
               // (The subproblem of the previous cycle, which referred to
               // it, is gone.)
+              const std::vector<LayerMaterial> plies =
+                scene.materials.ply_materials(layer, sd);
               auto load =
                 scene.loads.volume_load(layer,
-                                        scene.materials.material(layer, sd),
+                                        plies,
+                                        scene.materials.ply_heights[l],
                                         domain_diameter(domain));
               volume_loads[i] =
                 load ? std::make_unique<ScaledVolumeLoad>(std::move(load)) :
@@ -378,7 +381,8 @@ namespace bilayer
                 sd,
                 domain.triangulation(sd),
                 scene.mesh.degree(layer),
-                scene.materials.material(layer, sd),
+                plies,
+                scene.materials.ply_heights[l],
                 distribution);
               ElasticSubproblem *const target = sub.get();
               setups.add([&, target, l, i]() {

@@ -17,10 +17,12 @@ namespace bilayer
   using namespace dealii;
 
 
-  Geometry::Geometry(const GeometryParameters &geometry,
-                     const MeshParameters     &mesh)
+  Geometry::Geometry(const GeometryParameters  &geometry,
+                     const MeshParameters      &mesh,
+                     const std::vector<double> &ply_heights)
     : geometry(geometry)
     , mesh(mesh)
+    , ply_heights(ply_heights)
   {
     // The rectangle's Sigma: the horizontal segment, s = x, nu = (0, 1);
     // its ends lie on Gamma_D where the left or right side is clamped (a
@@ -90,7 +92,7 @@ namespace bilayer
               structured_cells_across(mesh, n_x, height, width, cycle));
             auto &tria = triangulations[static_cast<unsigned int>(s)];
             tria.clear();
-            make_subdomain(s, n_x, n_y, tria);
+            make_subdomain(s, n_x, n_y, cycle, tria);
           }
       }
 

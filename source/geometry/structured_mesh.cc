@@ -18,24 +18,75 @@ namespace bilayer
   Geometry::make_subdomain(const Subdomain    subdomain,
                            const unsigned int n_x,
                            const unsigned int n_y,
+                           const unsigned int cycle,
                            Triangulation<2>  &tria) const
   {
-    const Point<2> p1(geometry.x_min,
+    const Point<2>     p1(geometry.x_min,
                       subdomain == Subdomain::minus ? geometry.y_min :
-                                                      geometry.sigma_height);
-    const Point<2> p2(geometry.x_max,
+                                                          geometry.sigma_height);
+    const Point<2>     p2(geometry.x_max,
                       subdomain == Subdomain::minus ? geometry.sigma_height :
-                                                      geometry.y_max);
+                                                          geometry.y_max);
+    const unsigned int n_y0 = static_cast<unsigned int>(structured_cells_across(
+      mesh, n_x >> cycle, p2[1] - p1[1], geometry.x_max - geometry.x_min, 0));
+    const std::vector<double> rows   = ply_rows(p1[1], p2[1], n_y, n_y0, cycle);
+    const unsigned int        n_rows = rows.empty() ? n_y : rows.size() - 1;
     if (mesh.shape == ElementShape::quadrilateral)
-      GridGenerator::subdivided_hyper_rectangle(tria, {n_x, n_y}, p1, p2);
+      GridGenerator::subdivided_hyper_rectangle(tria, {n_x, n_rows}, p1, p2);
     else
       GridGenerator::subdivided_hyper_rectangle_with_simplices(tria,
-                                                               {n_x, n_y},
+                                                               {n_x, n_rows},
                                                                p1,
                                                                p2);
+    if (!rows.empty())
+      {
+        // Row i of the uniform mesh moves to the height rows[i] (the ends
+        // stay where they are).
+        const double step = (p2[1] - p1[1]) / n_rows;
+        GridTools::transform(
+          [&](const Point<2> &p) {
+            const long i = std::lround((p[1] - p1[1]) / step);
+            return Point<2>(p[0], rows[std::clamp<long>(i, 0, n_rows)]);
+          },
+          tria);
+      }
     if (mesh.fit_crack_tips && geometry.has_crack())
       fit_crack_tips(n_x, tria);
     assign_boundary_ids(tria);
+  }
+
+
+  std::vector<double>
+  Geometry::ply_rows(const double       y0,
+                     const double       y1,
+                     const unsigned int rows,
+                     const unsigned int rows0,
+                     const unsigned int cycle) const
+  {
+    const double        H      = y1 - y0;
+    const double        tol    = 1e-10 * H;
+    std::vector<double> knots  = {y0};
+    bool                fitted = true;
+    for (const double y : ply_heights)
+      if (y > y0 + tol && y < y1 - tol)
+        {
+          knots.push_back(y);
+          const double row = (y - y0) / H * rows;
+          fitted = fitted && std::abs(row - std::round(row)) * H / rows <= tol;
+        }
+    if (knots.size() == 1 || fitted)
+      return {};
+    knots.push_back(y1);
+    std::vector<double> heights = {y0};
+    for (unsigned int k = 1; k < knots.size(); ++k)
+      {
+        const double t = knots[k] - knots[k - 1];
+        const long   n = std::max(1l, std::lround(rows0 * t / H)) << cycle;
+        for (long i = 1; i < n; ++i)
+          heights.push_back(knots[k - 1] + t * i / n);
+        heights.push_back(knots[k]);
+      }
+    return heights;
   }
 
 

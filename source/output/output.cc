@@ -26,9 +26,9 @@ namespace bilayer
 {
   using namespace dealii;
 
-  StressPostprocessor::StressPostprocessor(const ElasticLaw &law,
+  StressPostprocessor::StressPostprocessor(const PlyLaws    &laws,
                                            const VolumeLoad *volume)
-    : law(law)
+    : laws(laws)
     , eigenstrain(volume != nullptr && volume->has_eigenstrain() ? volume :
                                                                    nullptr)
   {}
@@ -55,21 +55,33 @@ namespace bilayer
     const DataPostprocessorInputs::Vector<2> &inputs,
     std::vector<Vector<double>>              &computed_quantities) const
   {
+    // The cell's law; with plies, the eigenstrain of the cell's ply at a
+    // point on a ply height (a vertex) too: read at the point moved towards
+    // the cell's centre by 1e-9 of its diameter.
+    // (One ply: no cell needed, the inputs may come without one.)
+    const bool     plies = laws.size() > 1;
+    const Point<2> center =
+      plies ? inputs.template get_cell<2>()->center() : Point<2>();
+    const ElasticLaw &law =
+      plies ? laws.law(*inputs.template get_cell<2>()) : laws.law(0);
     for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
       {
+        const Point<2> x =
+          eigenstrain == nullptr ? Point<2>() :
+          plies                  ? inputs.evaluation_points[q] +
+                    1e-9 * (center - inputs.evaluation_points[q]) :
+                  inputs.evaluation_points[q];
         const auto           &grad = inputs.solution_gradients[q];
         SymmetricTensor<2, 2> strain;
         strain[0][0] = grad[0][0];
         strain[1][1] = grad[1][1];
         strain[0][1] = 0.5 * (grad[0][1] + grad[1][0]);
         if (eigenstrain != nullptr)
-          strain -= eigenstrain->eigenstrain(inputs.evaluation_points[q]);
+          strain -= eigenstrain->eigenstrain(x);
         const SymmetricTensor<2, 2> stress = law.stress(strain);
         const double                szz =
           law.out_of_plane_stress(strain) +
-          (eigenstrain != nullptr ?
-             eigenstrain->eigenstress_zz(inputs.evaluation_points[q]) :
-             0.);
+          (eigenstrain != nullptr ? eigenstrain->eigenstress_zz(x) : 0.);
         const double sxx = stress[0][0], syy = stress[1][1], sxy = stress[0][1];
         computed_quantities[q](0) = ElasticLaw::von_mises(stress, szz);
         computed_quantities[q](1) = sxx;
@@ -258,7 +270,7 @@ namespace bilayer
                                DataOut<2>::type_dof_data,
                                interpretation);
       output.stresses[s] =
-        std::make_unique<StressPostprocessor>(sub.law(), sub.volume_load());
+        std::make_unique<StressPostprocessor>(sub.laws(), sub.volume_load());
       data_out.add_data_vector(solution, *output.stresses[s]);
 
       const unsigned int n_cells =

@@ -7,6 +7,7 @@
 #include <bilayer/parameters/parameter_entries.h>
 #include <bilayer/parameters/thermal_volume_load.h>
 #include <bilayer/physics/elastic_law.h>
+#include <bilayer/physics/plies.h>
 
 #include <array>
 #include <cmath>
@@ -74,8 +75,27 @@ namespace bilayer
       for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
         given[static_cast<unsigned int>(sd)] =
           make_elastic_law(materials.material(layer, sd))->load_constants();
+      // A constant that a ply changes is no constant of the layer.
+      std::set<std::string> ply_differs;
+      for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+        for (const LayerMaterial &m : materials.ply_materials(layer, sd))
+          {
+            const auto  ply  = make_elastic_law(m)->load_constants();
+            const auto &side = given[static_cast<unsigned int>(sd)];
+            for (const std::string name : {"E", "nu", "mu", "lambda"})
+              if (ply.count(name) != side.count(name) ||
+                  (ply.count(name) && ply.at(name) != side.at(name)))
+                ply_differs.insert(name);
+          }
       for (const std::string name : {"E", "nu", "mu", "lambda"})
         {
+          if (ply_differs.count(name))
+            {
+              why_absent[name + n] =
+                "which differs between the plies of the layer (" + section +
+                "/Ply heights): write the value of one ply as a number";
+              continue;
+            }
           const bool minus = given[0].count(name) > 0;
           const bool plus  = given[1].count(name) > 0;
           if (minus && plus && given[0].at(name) == given[1].at(name))
@@ -388,6 +408,27 @@ namespace bilayer
                                                   "Loads/" +
                                                     layer_subsection(l),
                                                   length_scale);
+  }
+
+
+  std::unique_ptr<VolumeLoad>
+  LoadParameters::volume_load(const Layer                       layer,
+                              const std::vector<LayerMaterial> &plies,
+                              const std::vector<double>        &ply_heights,
+                              const double length_scale) const
+  {
+    if (plies.size() == 1)
+      return volume_load(layer, plies[0], length_scale);
+    std::vector<std::unique_ptr<VolumeLoad>> loads;
+    bool                                     any = false;
+    for (const LayerMaterial &m : plies)
+      {
+        loads.push_back(volume_load(layer, m, length_scale));
+        any = any || loads.back() != nullptr;
+      }
+    if (!any)
+      return nullptr;
+    return std::make_unique<PlyVolumeLoad>(std::move(loads), ply_heights);
   }
 
 

@@ -4,6 +4,7 @@
 #include <bilayer/parameters/material_parameters.h>
 #include <bilayer/parameters/parameter_entries.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -284,20 +285,13 @@ namespace bilayer
     const std::array<std::string, 2> side_subsections = {{"Omega-", "Omega+"}};
 
 
-    /**
-     * The subsection Materials/Layer k/Omega- or Omega+ (@p side) of the
-     * layer @p l, entered: the layer's material @p layer with the entries
-     * the side gives, checked; none if it gives none.
-     */
-    std::optional<LayerMaterial>
-    parse_side(const ParameterHandler &prm,
-               const unsigned int      l,
-               const unsigned int      side,
-               const LayerMaterial    &layer,
-               const EntryText        &layer_text)
+    /// The law entries that the subsection @p section (entered) gives, by
+    /// name, each checked against the pattern of @p layer_section's entry.
+    std::map<std::string, std::string>
+    given_entries(const ParameterHandler &prm,
+                  const std::string      &section,
+                  const std::string      &layer_section)
     {
-      const std::string layer_section = "Materials/" + layer_subsection(l);
-      const std::string section = layer_section + "/" + side_subsections[side];
       std::map<std::string, std::string> given;
       for (const std::string &name : law_entries)
         {
@@ -313,49 +307,144 @@ namespace bilayer
                                  " (empty: as the layer)"));
           given[name] = value;
         }
-      if (given.empty())
+      return given;
+    }
+
+
+    /// Entries given by a subsection, with the subsection's path.
+    struct GivenEntries
+    {
+      std::string                        section;
+      std::map<std::string, std::string> values;
+    };
+
+
+    /**
+     * The material @p layer with the entries of @p overrides, the last
+     * first (a ply's over its side's), checked; none if they give none.
+     * @p layer_text and @p layer_section: the layer's entries.
+     */
+    std::optional<LayerMaterial>
+    overridden(const LayerMaterial             &layer,
+               const EntryText                 &layer_text,
+               const std::string               &layer_section,
+               const std::vector<GivenEntries> &overrides)
+    {
+      const GivenEntries *innermost = nullptr;
+      for (const GivenEntries &o : overrides)
+        if (!o.values.empty())
+          innermost = &o;
+      if (innermost == nullptr)
         return {};
+      const auto source = [&](const std::string &name) -> const GivenEntries * {
+        for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
+          if (o->values.count(name))
+            return &*o;
+        return nullptr;
+      };
       LayerMaterial m = layer;
       read_law(
         m,
         [&](const std::string &name) {
-          return given.count(name) ? given.at(name) : layer_text(name);
+          const GivenEntries *o = source(name);
+          return o ? o->values.at(name) : layer_text(name);
         },
         [&](const std::string &name) {
-          return (given.count(name) ? section : layer_section) + "/" + name;
+          const GivenEntries *o = source(name);
+          return (o ? o->section : layer_section) + "/" + name;
         },
-        section + "/");
+        innermost->section + "/");
       return m;
     }
 
 
-    /// The subsections Omega- and Omega+ of the layer @p l (entered).
+    /// The subsection @p name of law entries that override the layer's
+    /// (a side or a ply) in @p where (entered).
     void
-    declare_sides(ParameterHandler &prm, const unsigned int l)
+    declare_overrides(ParameterHandler  &prm,
+                      const std::string &layer,
+                      const std::string &name,
+                      const std::string &where)
+    {
+      prm.enter_subsection(name);
+      for (const std::string &entry : law_entries)
+        prm.declare_entry(entry,
+                          "",
+                          Patterns::Anything(),
+                          "The layer's material on " + where +
+                            ": empty (the default) as " + layer + "/" + entry +
+                            ", else a value of that entry for this part "
+                            "alone. The plane state is the layer's.");
+      prm.leave_subsection();
+    }
+
+
+    /// The subsections Omega-, Omega+ and Ply 1 ... Ply @p n_plies of the
+    /// layer @p l (entered).
+    void
+    declare_parts(ParameterHandler  &prm,
+                  const unsigned int l,
+                  const unsigned int n_plies)
     {
       const std::string layer = "Materials/" + layer_subsection(l);
-      for (unsigned int s = 0; s < 2; ++s)
-        {
-          prm.enter_subsection(side_subsections[s]);
-          for (const std::string &name : law_entries)
-            prm.declare_entry(
-              name,
-              "",
-              Patterns::Anything(),
-              "The layer's material on " + side_subsections[s] +
-                (s == 0 ? " (below Sigma; a Gmsh scene's group Omega-)" :
-                          " (above Sigma; a Gmsh scene's group Omega+)") +
-                ": empty (the default) as " + layer + "/" + name +
-                ", else a value of that entry for this side alone. The "
-                "plane state is the layer's.");
-          prm.leave_subsection();
-        }
+      declare_overrides(prm,
+                        layer,
+                        side_subsections[0],
+                        "Omega- (below Sigma; a Gmsh scene's group Omega-)");
+      declare_overrides(prm,
+                        layer,
+                        side_subsections[1],
+                        "Omega+ (above Sigma; a Gmsh scene's group Omega+)");
+      for (unsigned int j = 0; j < n_plies; ++j)
+        declare_overrides(
+          prm,
+          layer,
+          "Ply " + std::to_string(j + 1),
+          "ply " + std::to_string(j + 1) +
+            " (the band of the plane between the ply heights " +
+            std::to_string(j) + " and " + std::to_string(j + 1) +
+            ", counted from the bottom; its entries win over a side's)");
+    }
+
+
+    /// The heights of the entry @p entry (Ply heights) of the text @p text.
+    std::vector<double>
+    parse_ply_heights(const std::string &text, const std::string &entry)
+    {
+      std::vector<double> heights;
+      if (Utilities::trim(text).empty())
+        return heights;
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        heights.push_back(to_double(item, entry));
+      for (unsigned int i = 1; i < heights.size(); ++i)
+        AssertThrow(heights[i] > heights[i - 1],
+                    ExcMessage(entry +
+                               " must be a list of heights y that increase "
+                               "strictly (the ply boundaries from the bottom), "
+                               "got '" +
+                               text + "'"));
+      return heights;
     }
   } // namespace
 
 
+  unsigned int
+  MaterialParameters::count_plies(const std::string &heights)
+  {
+    try
+      {
+        return parse_ply_heights(heights, "").size() + 1;
+      }
+    catch (...)
+      {
+        return 1;
+      }
+  }
+
+
   void
-  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  MaterialParameters::declare_parameters(ParameterHandler &prm,
+                                         const PlyCounts  &n_plies)
   {
     prm.enter_subsection("Materials");
     const MaterialParameters defaults;
@@ -420,7 +509,18 @@ namespace bilayer
           "anisotropic 'alpha_11, alpha_22, alpha_12', the plane eigenstrain "
           "per kelvin in the x-y frame as it enters the plane law (sigma_zz "
           "not defined).");
-        declare_sides(prm, l);
+        prm.declare_entry(
+          "Ply heights",
+          "",
+          Patterns::Anything(),
+          "The plies of the layer: the heights y_1 < y_2 < ... [length] at "
+          "which its material changes, a comma-separated list (empty, the "
+          "default: one ply). Ply j (subsection Ply j, from the bottom) is "
+          "the band y_(j-1) < y < y_j of the plane in every region it "
+          "crosses; its entries override the layer's and the side's. The "
+          "rectangle scenes fit a row of mesh vertices to each height inside "
+          "Omega; Gmsh scenes and mesh files are refused.");
+        declare_parts(prm, l, n_plies[l]);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -451,15 +551,75 @@ namespace bilayer
           text,
           [&](const std::string &name) { return where + name; },
           where);
+        const std::string layer_section = "Materials/" + layer_subsection(l);
+        ply_heights[l] =
+          parse_ply_heights(prm.get("Ply heights"), where + "Ply heights");
+        std::vector<GivenEntries> plies;
+        for (unsigned int j = 0; j < ply_heights[l].size() + 1; ++j)
+          {
+            const std::string name = "Ply " + std::to_string(j + 1);
+            prm.enter_subsection(name);
+            plies.push_back(
+              {layer_section + "/" + name,
+               given_entries(prm, layer_section + "/" + name, layer_section)});
+            prm.leave_subsection();
+          }
         for (unsigned int s = 0; s < 2; ++s)
           {
             prm.enter_subsection(side_subsections[s]);
-            side[l][s] = parse_side(prm, l, s, m, text);
+            const GivenEntries on_side = {
+              layer_section + "/" + side_subsections[s],
+              given_entries(prm,
+                            layer_section + "/" + side_subsections[s],
+                            layer_section)};
             prm.leave_subsection();
+            side[l][s] = overridden(m, text, layer_section, {on_side});
+            ply[l][s].clear();
+            for (const GivenEntries &p : plies)
+              ply[l][s].push_back(
+                p.values.empty() ?
+                  std::nullopt :
+                  overridden(m, text, layer_section, {on_side, p}));
           }
         prm.leave_subsection();
       }
     prm.leave_subsection();
+  }
+
+
+  std::vector<LayerMaterial>
+  MaterialParameters::ply_materials(const Layer l, const Subdomain s) const
+  {
+    std::vector<LayerMaterial> materials;
+    for (unsigned int j = 0; j < n_plies(l); ++j)
+      materials.push_back(material(l, s, j));
+    return materials;
+  }
+
+
+  std::vector<double>
+  MaterialParameters::all_ply_heights() const
+  {
+    std::vector<double> heights;
+    for (unsigned int l = 0; l < n_layers; ++l)
+      heights.insert(heights.end(),
+                     ply_heights[l].begin(),
+                     ply_heights[l].end());
+    std::sort(heights.begin(), heights.end());
+    heights.erase(std::unique(heights.begin(), heights.end()), heights.end());
+    return heights;
+  }
+
+
+  bool
+  MaterialParameters::has_ply_entries() const
+  {
+    for (const auto &layer_plies : ply)
+      for (const auto &side_plies : layer_plies)
+        for (const auto &p : side_plies)
+          if (p)
+            return true;
+    return false;
   }
 
 

@@ -28,7 +28,8 @@ namespace bilayer
                    const std::vector<std::string>                &overrides,
                    const std::filesystem::path                   &base,
                    std::string                                   &gmsh_file,
-                   const bool allow_gmsh_commands)
+                   const bool allow_gmsh_commands,
+                   PlyCounts &n_plies)
     {
       ParameterHandler first;
       first.enter_subsection("Geometry");
@@ -37,6 +38,15 @@ namespace bilayer
       first.enter_subsection("Mesh");
       first.declare_entry("Gmsh time limit", "600", Patterns::Anything());
       first.leave_subsection();
+      for (unsigned int l = 0; l < 2; ++l)
+        {
+          first.enter_subsection("Materials");
+          first.enter_subsection(entries::layer_subsection(l));
+          first.declare_entry("Ply heights", "", Patterns::Anything());
+          first.leave_subsection();
+          first.leave_subsection();
+        }
+      n_plies = {{1, 1}};
       try
         {
           parse(first);
@@ -45,6 +55,18 @@ namespace bilayer
         {
           // A broken file: the full parse reports it.
           return BoundaryParts();
+        }
+      // The plies name the subsections Materials/Layer k/Ply j.
+      for (unsigned int l = 0; l < 2; ++l)
+        {
+          first.enter_subsection("Materials");
+          first.enter_subsection(entries::layer_subsection(l));
+          n_plies[l] = MaterialParameters::count_plies(overridden_value(
+            overrides,
+            {"Materials", entries::layer_subsection(l), "Ply heights"},
+            first.get("Ply heights")));
+          first.leave_subsection();
+          first.leave_subsection();
         }
       first.enter_subsection("Geometry");
       gmsh_file = Utilities::trim(first.get("Gmsh file"));
@@ -86,6 +108,7 @@ namespace bilayer
     const std::vector<std::string> files = parameter_files(filename);
     const auto    base = std::filesystem::path(filename).parent_path();
     std::string   gmsh_file;
+    PlyCounts     n_plies;
     BoundaryParts parts = boundary_parts(
       [&](ParameterHandler &first) {
         first.parse_input(filename, "", true, false);
@@ -93,8 +116,9 @@ namespace bilayer
       overrides,
       base,
       gmsh_file,
-      allow_gmsh_commands);
-    Scene::declare_parameters(prm, parts);
+      allow_gmsh_commands,
+      n_plies);
+    Scene::declare_parameters(prm, parts, n_plies);
     try
       {
         prm.parse_input(filename, "", false, true);
@@ -123,6 +147,7 @@ namespace bilayer
   scene_from_string(const std::string &text, const std::string &name)
   {
     std::string         gmsh_file;
+    PlyCounts           n_plies;
     const BoundaryParts parts = boundary_parts(
       [&](ParameterHandler &first) {
         first.parse_input_from_string(text, "", true);
@@ -130,9 +155,10 @@ namespace bilayer
       {},
       "",
       gmsh_file,
-      false);
+      false,
+      n_plies);
     ParameterHandler prm;
-    Scene::declare_parameters(prm, parts);
+    Scene::declare_parameters(prm, parts, n_plies);
     prm.parse_input_from_string(text);
     Scene scene;
     scene.parse_parameters(prm, parts);

@@ -14,11 +14,13 @@ namespace bilayer
 
 
   void
-  Scene::declare_parameters(ParameterHandler &prm, const BoundaryParts &parts)
+  Scene::declare_parameters(ParameterHandler    &prm,
+                            const BoundaryParts &parts,
+                            const PlyCounts     &n_plies)
   {
     GeometryParameters::declare_parameters(prm, parts);
     MeshParameters::declare_parameters(prm);
-    MaterialParameters::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm, n_plies);
     LoadParameters::declare_parameters(prm, parts);
     ContactParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);

@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <bilayer/parameters/expressions.h>
+#include <bilayer/parameters/parameter_entries.h>
 #include <bilayer/parameters/scene_checks.h>
 
 #include <string>
@@ -69,7 +70,34 @@ namespace bilayer
             parts.traction_entry(i) + " must be '0; 0': " +
             (parts.gmsh ? parts.names[i] : "the " + parts.names[i] + " side") +
             " is clamped (Geometry/Clamped sides)"));
+    check_plies(scene, parts);
     check_growth_relations(scene);
+  }
+
+
+  void
+  check_plies(const Scene &scene, const BoundaryParts &parts)
+  {
+    const auto &geometry = scene.geometry;
+    for (unsigned int l = 0; l < scene.materials.n_layers; ++l)
+      {
+        const auto &heights = scene.materials.ply_heights[l];
+        if (heights.empty())
+          continue;
+        const std::string entry =
+          "Materials/Layer " + std::to_string(l + 1) + "/Ply heights";
+        AssertThrow(!parts.gmsh && scene.mesh.mesh_files.empty(),
+                    ExcMessage(entry +
+                               " states plies of the rectangle scene, whose "
+                               "meshes fit them; with Geometry/Gmsh file or "
+                               "Mesh/Mesh files it must be empty"));
+        for (const double y : heights)
+          AssertThrow(y > geometry.y_min && y < geometry.y_max,
+                      ExcMessage(entry + " must lie strictly inside Omega, " +
+                                 entries::number(geometry.y_min) + " < y < " +
+                                 entries::number(geometry.y_max) + ", got " +
+                                 entries::number(y)));
+      }
   }
 
 
@@ -142,9 +170,10 @@ namespace bilayer
           if (!expressions::is_zero(scene.loads.eigenstrain[l]))
             return true;
           for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
-            if (scene.loads.has_thermal_load(
-                  scene.materials.material(layer, sd)))
-              return true;
+            for (const LayerMaterial &m :
+                 scene.materials.ply_materials(layer, sd))
+              if (scene.loads.has_thermal_load(m))
+                return true;
         }
     return false;
   }

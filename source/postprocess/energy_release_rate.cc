@@ -165,7 +165,6 @@ namespace bilayer
       std::map<unsigned int, std::unique_ptr<FEValues<2>>> by_pieces;
       const SimilarityBreaker          fresh(sub.fe().reference_cell());
       const FEValuesExtractors::Vector displacement(0);
-      const ElasticLaw                &law    = sub.law();
       const VolumeLoad *const          volume = sub.volume_load();
       std::vector<Tensor<2, 2>>        grad_u;
       std::vector<Tensor<1, 2>>        u_values;
@@ -207,6 +206,7 @@ namespace bilayer
               u_values.resize(fe_values.n_quadrature_points);
               fe_values[displacement].get_function_values(u, u_values);
             }
+          const ElasticLaw &law = sub.law(*cell);
           for (unsigned int t = 0; t < n; ++t)
             if (tips[t].defined() && fields[t].reaches(center, diameter))
               integral(t) +=

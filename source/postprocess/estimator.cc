@@ -99,7 +99,7 @@ namespace bilayer
                   std::vector<SymmetricTensor<2, 2>>        &strain)
     {
       const FEValuesExtractors::Vector displacement(0);
-      const ElasticLaw                &law         = sub.law();
+      const ElasticLaw                &law         = sub.law(*cell);
       const VolumeLoad *const          eigenstrain = eigenstrain_of(sub);
       const double                     scale       = law.energy_norm_scale();
       fe_face.reinit(cell, f);
@@ -142,12 +142,12 @@ namespace bilayer
                               update_gradients | update_quadrature_points |
                                 update_normal_vectors | update_JxW_values);
       std::vector<SymmetricTensor<2, 2>> strain(face_quadrature.size());
-      const double                       scale = sub.law().energy_norm_scale();
       for (const auto &cell : sub.dof_handler().active_cell_iterators())
         for (const auto f : cell->face_indices())
           if (on_sigma(cell->face(f)))
             {
-              const double sum = face_residual(
+              const double scale = sub.law(*cell).energy_norm_scale();
+              const double sum   = face_residual(
                 sub, s, interface, w, mu, S, cell, f, fe_face, strain);
               double term = cell->face(f)->diameter() / 24. * sum;
               // Layer 1 on the crack: the complementarity of the segments
@@ -185,8 +185,6 @@ namespace bilayer
       const VolumeLoad *const volume = sub.volume_load();
       if (volume == nullptr)
         return;
-      const ElasticLaw                &law   = sub.law();
-      const double                     scale = law.energy_norm_scale();
       const FEValuesExtractors::Vector displacement(0);
       FEValues<2>                      fe_values(
         sub.mapping(),
@@ -201,7 +199,9 @@ namespace bilayer
           fresh.apply(fe_values);
           fe_values.reinit(cell);
           fe_values[displacement].get_function_hessians(w, hessians);
-          double sum = 0;
+          const ElasticLaw &law   = sub.law(*cell);
+          const double      scale = law.energy_norm_scale();
+          double            sum   = 0;
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               const Point<2> &x = fe_values.quadrature_point(q);
@@ -274,6 +274,22 @@ namespace bilayer
     }
 
 
+    /// The energy of the squared indicators @p eta2 of @p sub: each times
+    /// the energy-norm scale of its cell's law.
+    double
+    energy_of_indicators(const ElasticSubproblem &sub,
+                         const Vector<double>    &eta2)
+    {
+      if (sub.laws().uniform_energy_norm_scale())
+        return sub.laws().law(0).energy_norm_scale() * eta2.l1_norm();
+      double sum = 0;
+      for (const auto &cell : sub.dof_handler().active_cell_iterators())
+        sum += sub.law(*cell).energy_norm_scale() *
+               std::abs(eta2[cell->active_cell_index()]);
+      return sum;
+    }
+
+
     /// The indicators of each subdomain: the squared indicators of its
     /// subproblems, sent to all processes and summed in the order of the
     /// subproblems, square root times @p S; their energies are added to
@@ -299,8 +315,8 @@ namespace bilayer
                                       .get_triangulation()
                                       .n_active_cells());
                 subproblems[s]->processes().share(s, squared[s]);
-                energy_estimate += subproblems[s]->law().energy_norm_scale() *
-                                   squared[s].l1_norm();
+                energy_estimate +=
+                  energy_of_indicators(*subproblems[s], squared[s]);
                 if (sum.size() == 0)
                   sum = squared[s];
                 else

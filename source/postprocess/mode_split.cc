@@ -90,8 +90,8 @@ namespace bilayer
                                 *plus  = subproblems[pair[1]];
         if (minus == nullptr || plus == nullptr)
           continue;
-        const SymmetricTensor<4, 2> C_minus = minus->law().tangent(),
-                                    C_plus  = plus->law().tangent();
+        const SymmetricTensor<4, 2> C_minus = minus->sigma_law().tangent(),
+                                    C_plus  = plus->sigma_law().tangent();
         double largest = 0, difference = 0;
         for (unsigned int i = 0; i < 2; ++i)
           for (unsigned int j = 0; j < 2; ++j)
@@ -124,8 +124,8 @@ namespace bilayer
     const bool   agree = materials_agree_across_sigma(subproblems);
     const double stiffness =
       subproblems[Layout::u_minus] != nullptr ?
-        subproblems[Layout::u_minus]->law().energy_norm_scale() :
-        subproblems[Layout::u_plus]->law().energy_norm_scale();
+        subproblems[Layout::u_minus]->sigma_law().energy_norm_scale() :
+        subproblems[Layout::u_plus]->sigma_law().energy_norm_scale();
     for (unsigned int t = 0; t < release.size(); ++t)
       {
         EnergyReleaseRate &g = release[t];

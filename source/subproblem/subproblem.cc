@@ -35,22 +35,31 @@ namespace bilayer
 
   using namespace dealii;
 
-  ElasticSubproblem::ElasticSubproblem(const Layer             layer,
-                                       const Subdomain         subdomain,
-                                       const Triangulation<2> &triangulation,
-                                       const unsigned int      degree,
-                                       const LayerMaterial    &material,
-                                       const Distribution     &distribution)
+  ElasticSubproblem::ElasticSubproblem(
+    const Layer                       layer,
+    const Subdomain                   subdomain,
+    const Triangulation<2>           &triangulation,
+    const unsigned int                degree,
+    const std::vector<LayerMaterial> &materials,
+    const std::vector<double>        &ply_heights,
+    const Distribution               &distribution)
     : layer_(layer)
     , subdomain_(subdomain)
-    , law_(make_elastic_law(material))
+    , laws_(materials, ply_heights)
     , moduli_entries_(
-        material.law == MaterialLaw::orthotropic ? "E_1, E_2, E_3, G_12" :
-        material.law == MaterialLaw::anisotropic ? "Stiffness" :
-                                                   "Young's modulus")
+        materials[0].law == MaterialLaw::orthotropic ? "E_1, E_2, E_3, G_12" :
+        materials[0].law == MaterialLaw::anisotropic ? "Stiffness" :
+                                                       "Young's modulus")
     , distribution(distribution)
     , dofs(triangulation)
   {
+    if (materials.size() > 1)
+      moduli_entries_ += " of each ply";
+    // The ply along Sigma: the one of a cell with a face on it.
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == BoundaryIds::sigma)
+          sigma_ply = laws_.ply(*cell);
     if (triangulation.all_reference_cells_are_hyper_cube())
       fe_system = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 2);
     else
@@ -97,7 +106,7 @@ namespace bilayer
     public:
       CellSystem(const FiniteElement<2>                 &fe,
                  const Mapping<2>                       &mapping,
-                 const ElasticLaw                       &law,
+                 const PlyLaws                          &laws,
                  const std::vector<bool>                &clamped,
                  const std::vector<const Function<2> *> &traction,
                  const VolumeLoad                       *volume,
@@ -105,7 +114,7 @@ namespace bilayer
         : fe(fe)
         , clamped(clamped)
         , traction(traction)
-        , law(law)
+        , laws(laws)
         , volume(volume)
         , split(split)
         , fe_values(
@@ -141,6 +150,7 @@ namespace bilayer
         cell_preload         = 0;
         fresh.apply(fe_values);
         fe_values.reinit(cell);
+        const ElasticLaw &law = laws.law(*cell);
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             for (unsigned int i = 0; i < n; ++i)
@@ -198,7 +208,7 @@ namespace bilayer
       const FiniteElement<2>                 &fe;
       const std::vector<bool>                 clamped;
       const std::vector<const Function<2> *> &traction;
-      const ElasticLaw                       &law;
+      const PlyLaws                          &laws;
       const VolumeLoad *const                 volume;
       const bool                              split;
       FEValues<2>                             fe_values;
@@ -445,7 +455,7 @@ namespace bilayer
   {
     const bool split = shared == nullptr && has_preload_;
     CellSystem system(
-      *fe_system, mapping(), *law_, clamped, traction, volume, split);
+      *fe_system, mapping(), laws_, clamped, traction, volume, split);
     for (const auto &cell : dofs.active_cell_iterators())
       if (shared == nullptr)
         {
@@ -568,7 +578,7 @@ namespace bilayer
     const std::vector<bool>                no_loads;
     const std::vector<const Function<2> *> none;
     CellSystem                             system_of_cell(
-      *fe_system, mapping(), *law_, no_loads, none, nullptr);
+      *fe_system, mapping(), laws_, no_loads, none, nullptr);
     for (const auto &cell : dofs.active_cell_iterators())
       if (system->assembles(cell->active_cell_index()))
         {
@@ -636,7 +646,7 @@ namespace bilayer
         fresh.apply(fe_values);
         fe_values.reinit(cell);
         for (const unsigned int q : fe_values.quadrature_point_indices())
-          sum += law_->energy_density(
+          sum += laws_.law(*cell).energy_density(
                    volume_->eigenstrain(fe_values.quadrature_point(q))) *
                  fe_values.JxW(q);
       }

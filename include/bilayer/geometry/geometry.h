@@ -75,7 +75,12 @@ namespace bilayer
   class Geometry
   {
   public:
-    Geometry(const GeometryParameters &geometry, const MeshParameters &mesh);
+    /// The rectangle or Gmsh scene @p geometry, meshed by @p mesh; the
+    /// structured meshes fit a row of vertices to each of @p ply_heights
+    /// inside Omega (MaterialParameters::ply_heights).
+    Geometry(const GeometryParameters  &geometry,
+             const MeshParameters      &mesh,
+             const std::vector<double> &ply_heights = {});
 
     /// Build both meshes of refinement cycle @p cycle (cells along Sigma
     /// times 2^cycle).
@@ -161,11 +166,31 @@ namespace bilayer
                 const Subdomain                 subdomain,
                 const std::string              &file) const;
 
+    /// The structured mesh of @p subdomain: @p cells_along cells along
+    /// Sigma, @p cells_across across (refinement cycle @p cycle), its rows
+    /// fitted to the ply heights.
     void
     make_subdomain(const Subdomain           subdomain,
                    const unsigned int        cells_along,
                    const unsigned int        cells_across,
+                   const unsigned int        cycle,
                    dealii::Triangulation<2> &tria) const;
+
+    /**
+     * The heights of the vertex rows of the structured mesh of
+     * @p subdomain between @p y0 and @p y1 that fit the ply heights inside:
+     * each ply's band gets max(1, round(n0 t / H)) 2^cycle rows of equal
+     * height, t its thickness, H = y1 - y0, n0 the rows of cycle 0
+     * (@p rows0), so that the meshes of the cycles are nested. Empty where
+     * no ply height lies inside, or every one lies on a row of the uniform
+     * mesh of @p rows rows (then the uniform mesh fits, bit for bit).
+     */
+    std::vector<double>
+    ply_rows(const double       y0,
+             const double       y1,
+             const unsigned int rows,
+             const unsigned int rows0,
+             const unsigned int cycle) const;
 
     void
     read_subdomain(const Subdomain           subdomain,
@@ -196,6 +221,7 @@ namespace bilayer
 
     const GeometryParameters                geometry;
     const MeshParameters                    mesh;
+    const std::vector<double>               ply_heights;
     std::array<dealii::Triangulation<2>, 2> triangulations;
     InterfaceCurve                          curve;
     /// The Gmsh scene (null for the rectangle and mesh files).

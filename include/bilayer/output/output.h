@@ -7,6 +7,7 @@
 #include <bilayer/interface/interface_diagnostics.h>
 #include <bilayer/output/output_directory.h>
 #include <bilayer/physics/elastic_law.h>
+#include <bilayer/physics/plies.h>
 #include <bilayer/physics/volume_load.h>
 #include <bilayer/solvers/outer_solver.h>
 #include <bilayer/subproblem/subproblem.h>
@@ -32,7 +33,9 @@ namespace bilayer
   class StressPostprocessor : public dealii::DataPostprocessor<2>
   {
   public:
-    explicit StressPostprocessor(const ElasticLaw &law,
+    /// The stresses of the plies' @p laws (each cell its own) with the
+    /// eigenstrain of @p volume.
+    explicit StressPostprocessor(const PlyLaws    &laws,
                                  const VolumeLoad *volume = nullptr);
 
     void
@@ -47,7 +50,7 @@ namespace bilayer
     get_needed_update_flags() const override;
 
   private:
-    const ElasticLaw &law;
+    const PlyLaws &laws;
     /// The eigenstrain, or null where the layer has none.
     const VolumeLoad *eigenstrain;
   };

@@ -13,12 +13,19 @@
 
 /**
  * The subsection Materials: the number of layers, each layer's entries
- * (LayerMaterial, elastic_law.h: the law's own parameters) and, in its
- * subsections Omega- and Omega+, the law entries that differ on one side of
- * Sigma (empty: as the layer).
+ * (LayerMaterial, elastic_law.h: the law's own parameters), in its
+ * subsections Omega- and Omega+ the law entries that differ on one side of
+ * Sigma (empty: as the layer), and its plies: the cell groups of the
+ * regions, horizontal bands between the heights Ply heights, each with the
+ * law entries that differ in it (subsections Ply 1, Ply 2, ... from the
+ * bottom).
  */
 namespace bilayer
 {
+  /// The number of plies of each layer (the subsections Ply 1 ... Ply n
+  /// that Materials/Layer k declares): one more than its ply heights.
+  using PlyCounts = std::array<unsigned int, 2>;
+
   struct MaterialParameters
   {
     std::array<LayerMaterial, 2> layer = {{{200.0, 0.28}, {112.0, 0.32}}};
@@ -31,8 +38,24 @@ namespace bilayer
     std::array<std::array<std::optional<LayerMaterial>, 2>, 2> side;
     /// 2: the two-layer structure; 1: layer 2 absent (a single body).
     unsigned int n_layers = 2;
+    /**
+     * ply_heights[l]: Materials/Layer k/Ply heights, the heights
+     * y_1 < ... < y_{n-1} at which the material of layer l changes. Ply j
+     * (0-based; the entries' Ply j+1) is the band y_j < y < y_{j+1} of the
+     * plane (y_0 = -inf, y_n = +inf), in either region it crosses. Empty:
+     * one ply, the whole layer.
+     */
+    std::array<std::vector<double>, 2> ply_heights;
+    /**
+     * ply[l][s][j]: the material of ply j of layer l on the subdomain s
+     * where Materials/Layer k/Ply j+1 gives a law entry: the side's
+     * material with those entries; empty where the ply gives none (then
+     * the ply has the side's material, the very same object).
+     */
+    std::array<std::array<std::vector<std::optional<LayerMaterial>>, 2>, 2> ply;
 
-    /// The material of the layer @p l on the subdomain @p s.
+    /// The material of the layer @p l on the subdomain @p s outside its
+    /// plies' entries (the layer's with the side's entries).
     const LayerMaterial &
     material(const Layer l, const Subdomain s) const
     {
@@ -41,14 +64,52 @@ namespace bilayer
       return m ? *m : layer[static_cast<unsigned int>(l)];
     }
 
+    /// The material of ply @p j of the layer @p l on the subdomain @p s.
+    const LayerMaterial &
+    material(const Layer l, const Subdomain s, const unsigned int j) const
+    {
+      const auto &plies =
+        ply[static_cast<unsigned int>(l)][static_cast<unsigned int>(s)];
+      return j < plies.size() && plies[j] ? *plies[j] : material(l, s);
+    }
+
+    /// The number of plies of the layer @p l (1: no Ply heights).
+    unsigned int
+    n_plies(const Layer l) const
+    {
+      return ply_heights[static_cast<unsigned int>(l)].size() + 1;
+    }
+
+    /// The materials of the layer @p l on the subdomain @p s, by ply.
+    std::vector<LayerMaterial>
+    ply_materials(const Layer l, const Subdomain s) const;
+
+    /// The ply heights of the layers present, sorted, each once: the
+    /// heights that the meshes fit.
+    std::vector<double>
+    all_ply_heights() const;
+
+    /// Whether some ply of a layer gives a law entry of its own.
+    bool
+    has_ply_entries() const;
+
     bool
     has_layer(const Layer l) const
     {
       return l == Layer::first || n_layers == 2;
     }
 
+    /// Declare the entries, with the subsections Ply 1 ... Ply n of
+    /// @p n_plies plies in each layer.
     static void
-    declare_parameters(dealii::ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const PlyCounts          &n_plies = {{1, 1}});
+
+    /// The number of plies that the text @p heights of a Ply heights entry
+    /// states (one more than its items; 1 where it is empty or broken: the
+    /// full parse reports it).
+    static unsigned int
+    count_plies(const std::string &heights);
 
     /// The entries of a layer's law ("Law", "Young's modulus", ...,
     /// "Stiffness"), which its sides may override.

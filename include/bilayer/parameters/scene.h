@@ -40,10 +40,12 @@ namespace bilayer
     std::vector<std::string> input_files;
 
     /// Declare every entry; a Gmsh scene's boundary @p parts give the
-    /// entries of the Loads section.
+    /// entries of the Loads section, @p n_plies the subsections Ply j of
+    /// each layer.
     static void
     declare_parameters(dealii::ParameterHandler &prm,
-                       const BoundaryParts      &parts = BoundaryParts());
+                       const BoundaryParts      &parts   = BoundaryParts(),
+                       const PlyCounts          &n_plies = {{1, 1}});
     void
     parse_parameters(dealii::ParameterHandler &prm,
                      const BoundaryParts      &parts = BoundaryParts());

@@ -15,6 +15,11 @@ namespace bilayer
   void
   check_scene_relations(const Scene &scene, const BoundaryParts &parts);
 
+  /// Refuse ply heights outside Omega, or on a Gmsh scene or mesh files
+  /// (whose meshes are not fitted to them).
+  void
+  check_plies(const Scene &scene, const BoundaryParts &parts);
+
   /// The entries of Fracture/Crack growth against the rest of the scene
   /// (Loads/Load factor, friction, refinement); part of
   /// check_scene_relations().

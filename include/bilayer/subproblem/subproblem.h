@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <bilayer/physics/elastic_law.h>
+#include <bilayer/physics/plies.h>
 #include <bilayer/physics/volume_load.h>
 #include <bilayer/subproblem/cell_extents.h>
 #include <bilayer/subproblem/cholesky.h>
@@ -53,11 +54,30 @@ namespace bilayer
   class ElasticSubproblem
   {
   public:
+    /// The subproblem of one material (one ply).
     ElasticSubproblem(const Layer                     layer,
                       const Subdomain                 subdomain,
                       const dealii::Triangulation<2> &triangulation,
                       const unsigned int              degree,
                       const LayerMaterial            &material,
+                      const Distribution &distribution = Distribution::world())
+      : ElasticSubproblem(layer,
+                          subdomain,
+                          triangulation,
+                          degree,
+                          std::vector<LayerMaterial>{material},
+                          {},
+                          distribution)
+    {}
+
+    /// The subproblem of the plies of @p materials between @p ply_heights
+    /// (PlyLaws).
+    ElasticSubproblem(const Layer                       layer,
+                      const Subdomain                   subdomain,
+                      const dealii::Triangulation<2>   &triangulation,
+                      const unsigned int                degree,
+                      const std::vector<LayerMaterial> &materials,
+                      const std::vector<double>        &ply_heights,
                       const Distribution &distribution = Distribution::world());
 
     /**
@@ -333,11 +353,25 @@ namespace bilayer
     /// approximated to the element's order (isoparametric).
     const dealii::Mapping<2> &
     mapping() const;
-    /// The elastic law of the layer (the one code that knows its material).
+    /// The elastic law of @p cell (the one code that knows its material).
     const ElasticLaw &
-    law() const
+    law(const dealii::CellAccessor<2, 2> &cell) const
     {
-      return *law_;
+      return laws_.law(cell);
+    }
+
+    /// The elastic laws by ply.
+    const PlyLaws &
+    laws() const
+    {
+      return laws_;
+    }
+
+    /// The law of the cells along Sigma (their ply).
+    const ElasticLaw &
+    sigma_law() const
+    {
+      return laws_.law(sigma_ply);
     }
     unsigned int
     n_dofs() const
@@ -373,7 +407,8 @@ namespace bilayer
 
     const Layer                        layer_;
     const Subdomain                    subdomain_;
-    std::unique_ptr<const ElasticLaw>  law_;
+    PlyLaws                            laws_;
+    unsigned int                       sigma_ply = 0;
     std::string                        moduli_entries_; // named on overflow
     unsigned int                       factorisations = 0;
     const Distribution                &distribution;
