@@ -166,8 +166,19 @@ namespace bilayer
           factor;
         const double height = s == Subdomain::minus ? g.sigma_height - g.y_min :
                                                       g.y_max - g.sigma_height;
-        const double n_y =
+        const double n_uniform =
           structured_cells_across(mesh, n_x, height, width, cycle);
+        // (The rows fitted to the plies, as Geometry builds them.)
+        const double y0 = s == Subdomain::minus ? g.y_min : g.sigma_height;
+        const auto   rows =
+          ply_rows(scene.materials.all_ply_heights(),
+                   y0,
+                   y0 + height,
+                   static_cast<unsigned int>(n_uniform),
+                   static_cast<unsigned int>(structured_cells_across(
+                     mesh, n_x / factor, height, width, 0)),
+                   cycle);
+        const double n_y = rows.empty() ? n_uniform : rows.size() - 1.;
         // Triangles: two per quadrilateral.
         cells[static_cast<unsigned int>(s)] =
           n_x * n_y * (mesh.shape == ElementShape::triangle ? 2 : 1);

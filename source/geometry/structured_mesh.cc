@@ -29,8 +29,9 @@ namespace bilayer
                                                           geometry.y_max);
     const unsigned int n_y0 = static_cast<unsigned int>(structured_cells_across(
       mesh, n_x >> cycle, p2[1] - p1[1], geometry.x_max - geometry.x_min, 0));
-    const std::vector<double> rows   = ply_rows(p1[1], p2[1], n_y, n_y0, cycle);
-    const unsigned int        n_rows = rows.empty() ? n_y : rows.size() - 1;
+    const std::vector<double> rows =
+      ply_rows(ply_heights, p1[1], p2[1], n_y, n_y0, cycle);
+    const unsigned int n_rows = rows.empty() ? n_y : rows.size() - 1;
     if (mesh.shape == ElementShape::quadrilateral)
       GridGenerator::subdivided_hyper_rectangle(tria, {n_x, n_rows}, p1, p2);
     else
@@ -57,11 +58,12 @@ namespace bilayer
 
 
   std::vector<double>
-  Geometry::ply_rows(const double       y0,
-                     const double       y1,
-                     const unsigned int rows,
-                     const unsigned int rows0,
-                     const unsigned int cycle) const
+  ply_rows(const std::vector<double> &ply_heights,
+           const double               y0,
+           const double               y1,
+           const unsigned int         rows,
+           const unsigned int         rows0,
+           const unsigned int         cycle)
   {
     const double        H      = y1 - y0;
     const double        tol    = 1e-10 * H;

@@ -38,6 +38,23 @@ namespace bilayer
   }
 
   /**
+   * The heights of the vertex rows of a structured mesh between @p y0 and
+   * @p y1 that fit the @p ply_heights inside: each ply's band gets
+   * max(1, round(n0 t / H)) 2^cycle rows of equal height, t its thickness,
+   * H = y1 - y0, n0 the rows of cycle 0 (@p rows0), so that the meshes of
+   * the cycles are nested. Empty where no ply height lies inside, or every
+   * one lies on a row of the uniform mesh of @p rows rows (then the uniform
+   * mesh fits, bit for bit).
+   */
+  std::vector<double>
+  ply_rows(const std::vector<double> &ply_heights,
+           const double               y0,
+           const double               y1,
+           const unsigned int         rows,
+           const unsigned int         rows0,
+           const unsigned int         cycle);
+
+  /**
    * Whether a cell with the signed area @p area (counter-clockwise
    * positive) and the longest edge @p diameter is inverted or degenerate:
    * the rule of every mesh bilayer reads (mesh files, Gmsh scenes).
@@ -175,22 +192,6 @@ namespace bilayer
                    const unsigned int        cells_across,
                    const unsigned int        cycle,
                    dealii::Triangulation<2> &tria) const;
-
-    /**
-     * The heights of the vertex rows of the structured mesh of
-     * @p subdomain between @p y0 and @p y1 that fit the ply heights inside:
-     * each ply's band gets max(1, round(n0 t / H)) 2^cycle rows of equal
-     * height, t its thickness, H = y1 - y0, n0 the rows of cycle 0
-     * (@p rows0), so that the meshes of the cycles are nested. Empty where
-     * no ply height lies inside, or every one lies on a row of the uniform
-     * mesh of @p rows rows (then the uniform mesh fits, bit for bit).
-     */
-    std::vector<double>
-    ply_rows(const double       y0,
-             const double       y1,
-             const unsigned int rows,
-             const unsigned int rows0,
-             const unsigned int cycle) const;
 
     void
     read_subdomain(const Subdomain           subdomain,
