@@ -395,7 +395,8 @@ namespace bilayer
                         layer,
                         side_subsections[1],
                         "Omega+ (above Sigma; a Gmsh scene's group Omega+)");
-      for (unsigned int j = 0; j < n_plies; ++j)
+      // (One ply is the layer itself: no subsection Ply 1.)
+      for (unsigned int j = 0; n_plies > 1 && j < n_plies; ++j)
         declare_overrides(
           prm,
           layer,
@@ -515,9 +516,11 @@ namespace bilayer
           Patterns::Anything(),
           "The plies of the layer: the heights y_1 < y_2 < ... [length] at "
           "which its material changes, a comma-separated list (empty, the "
-          "default: one ply). Ply j (subsection Ply j, from the bottom) is "
+          "default: one ply, the layer itself). Ply j (from the bottom) is "
           "the band y_(j-1) < y < y_j of the plane in every region it "
-          "crosses; its entries override the layer's and the side's. The "
+          "crosses; with n heights the layer has the subsections Ply 1 ... "
+          "Ply n+1, which take the law entries of the layer (empty: as the "
+          "side) and override the layer's and the side's. The "
           "rectangle scenes fit a row of mesh vertices to each height inside "
           "Omega; Gmsh scenes and mesh files are refused.");
         declare_parts(prm, l, n_plies[l]);
@@ -555,7 +558,9 @@ namespace bilayer
         ply_heights[l] =
           parse_ply_heights(prm.get("Ply heights"), where + "Ply heights");
         std::vector<GivenEntries> plies;
-        for (unsigned int j = 0; j < ply_heights[l].size() + 1; ++j)
+        for (unsigned int j = 0;
+             !ply_heights[l].empty() && j < ply_heights[l].size() + 1;
+             ++j)
           {
             const std::string name = "Ply " + std::to_string(j + 1);
             prm.enter_subsection(name);

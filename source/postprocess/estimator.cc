@@ -233,6 +233,172 @@ namespace bilayer
     }
 
 
+    /**
+     * The part of Kelly's squared indicator of the cell of @p a from its
+     * face (or subface) @p a against the neighbour's @p b, as Kelly's
+     * (deal.II's cell_diameter_over_24: h_K / 24 int_F |[grad w n]|^2), and
+     * the same of the traction jump [sigma(w) n] / s, sigma(w) = C (eps(w) -
+     * eps* / S) with each side's law (@p la, @p lb) and eigenstrain, s the
+     * smaller energy-norm scale of the two: {gradient term, traction term}.
+     */
+    std::array<double, 2>
+    face_jumps(const FEFaceValuesBase<2> &a,
+               const FEFaceValuesBase<2> &b,
+               const ElasticLaw          &la,
+               const ElasticLaw          &lb,
+               const Vector<double>      &w,
+               const VolumeLoad          *eigenstrain,
+               const double               S)
+    {
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<2, 2>>        grad_a(a.n_quadrature_points),
+        grad_b(b.n_quadrature_points);
+      a[displacement].get_function_gradients(w, grad_a);
+      b[displacement].get_function_gradients(w, grad_b);
+      const double scale =
+        std::min(la.energy_norm_scale(), lb.energy_norm_scale());
+      // Each side's eigenstrain: read just inside its own cell.
+      const auto inside = [](const FEFaceValuesBase<2> &v, const Point<2> &p) {
+        return p + 1e-9 * (v.get_cell()->center() - p);
+      };
+      std::array<double, 2> sum = {{0, 0}};
+      for (const unsigned int q : a.quadrature_point_indices())
+        {
+          const Point<2> &x  = a.quadrature_point(q);
+          unsigned int    qb = 0;
+          for (const unsigned int r : b.quadrature_point_indices())
+            if (b.quadrature_point(r).distance(x) <
+                b.quadrature_point(qb).distance(x))
+              qb = r;
+          const Tensor<1, 2>   &n     = a.normal_vector(q);
+          SymmetricTensor<2, 2> eps_a = symmetrize(grad_a[q]),
+                                eps_b = symmetrize(grad_b[qb]);
+          if (eigenstrain != nullptr)
+            {
+              eps_a -= eigenstrain->eigenstrain(inside(a, x)) / S;
+              eps_b -= eigenstrain->eigenstrain(inside(b, x)) / S;
+            }
+          const Tensor<1, 2> gradient = (grad_a[q] - grad_b[qb]) * n;
+          const Tensor<1, 2> traction =
+            (la.stress(eps_a) * n - lb.stress(eps_b) * n) / scale;
+          sum[0] += (gradient * gradient) * a.JxW(q);
+          sum[1] += (traction * traction) * a.JxW(q);
+        }
+      return sum;
+    }
+
+
+    /**
+     * On the faces between plies of different laws, where the gradient of
+     * the solution jumps and its traction does not, Kelly's term is replaced
+     * by the same term of the traction jump (face_jumps()): the squared
+     * indicator of each cell with such a face becomes h_K / 24 times the
+     * sum over its interior faces of the traction term on those faces and
+     * Kelly's gradient term on the others (all in double precision:
+     * Kelly's own indicators are single precision). Elsewhere, and without
+     * such plies, @p eta2 stays as it is, bit for bit. The faces as Kelly
+     * takes them: a whole face against a neighbour of the same level, a
+     * subface against each finer neighbour, a face against the subface of a
+     * coarser neighbour.
+     */
+    void
+    replace_ply_face_terms(const ElasticSubproblem &sub,
+                           const Vector<double>    &w,
+                           const double             S,
+                           const Quadrature<1>     &quadrature,
+                           Vector<double>          &eta2)
+    {
+      const PlyLaws                 &laws = sub.laws();
+      const unsigned int             n    = laws.size();
+      std::vector<std::vector<bool>> differ(n, std::vector<bool>(n, false));
+      bool                           any = false;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            differ[i][j] = laws.law(i).tangent() != laws.law(j).tangent();
+            any          = any || differ[i][j];
+          }
+      if (!any)
+        return;
+      const UpdateFlags flags = update_gradients | update_quadrature_points |
+                                update_normal_vectors | update_JxW_values;
+      FEFaceValues<2> mine(sub.mapping(), sub.fe(), quadrature, flags),
+        theirs(sub.mapping(), sub.fe(), quadrature, flags);
+      const bool quads = sub.fe().reference_cell().is_hyper_cube();
+      std::unique_ptr<FESubfaceValues<2>> mine_sub, theirs_sub;
+      if (quads)
+        {
+          mine_sub   = std::make_unique<FESubfaceValues<2>>(sub.mapping(),
+                                                          sub.fe(),
+                                                          quadrature,
+                                                          flags);
+          theirs_sub = std::make_unique<FESubfaceValues<2>>(sub.mapping(),
+                                                            sub.fe(),
+                                                            quadrature,
+                                                            flags);
+        }
+      const VolumeLoad *const eigenstrain = eigenstrain_of(sub);
+      for (const auto &cell : sub.dof_handler().active_cell_iterators())
+        {
+          const unsigned int ply = laws.ply(*cell);
+          // Whether the cell has a face on a ply of another law.
+          bool touches = false;
+          for (const unsigned int f : cell->face_indices())
+            if (!cell->at_boundary(f))
+              {
+                if (quads && cell->face(f)->has_children())
+                  for (unsigned int c = 0; c < cell->face(f)->n_children(); ++c)
+                    touches =
+                      touches ||
+                      differ[ply]
+                            [laws.ply(*cell->neighbor_child_on_subface(f, c))];
+                else
+                  touches =
+                    touches || differ[ply][laws.ply(*cell->neighbor(f))];
+              }
+          if (!touches)
+            continue;
+          double     sum = 0;
+          const auto add = [&](const FEFaceValuesBase<2> &a,
+                               const FEFaceValuesBase<2> &b,
+                               const unsigned int         ply_b) {
+            const auto s = face_jumps(
+              a, b, laws.law(ply), laws.law(ply_b), w, eigenstrain, S);
+            sum += s[differ[ply][ply_b] ? 1 : 0];
+          };
+          for (const unsigned int f : cell->face_indices())
+            {
+              if (cell->at_boundary(f))
+                continue;
+              const auto neighbor = cell->neighbor(f);
+              if (quads && cell->face(f)->has_children())
+                for (unsigned int c = 0; c < cell->face(f)->n_children(); ++c)
+                  {
+                    const auto child = cell->neighbor_child_on_subface(f, c);
+                    mine_sub->reinit(cell, f, c);
+                    theirs.reinit(child, cell->neighbor_of_neighbor(f));
+                    add(*mine_sub, theirs, laws.ply(*child));
+                  }
+              else if (quads && cell->neighbor_is_coarser(f))
+                {
+                  const auto [face, subface] =
+                    cell->neighbor_of_coarser_neighbor(f);
+                  mine.reinit(cell, f);
+                  theirs_sub->reinit(neighbor, face, subface);
+                  add(mine, *theirs_sub, laws.ply(*neighbor));
+                }
+              else
+                {
+                  mine.reinit(cell, f);
+                  theirs.reinit(neighbor, cell->neighbor_of_neighbor(f));
+                  add(mine, theirs, laws.ply(*neighbor));
+                }
+            }
+          eta2[cell->active_cell_index()] = cell->diameter() / 24 * sum;
+        }
+    }
+
+
     /// The squared indicators of subproblem @p s, by active cell: Kelly's,
     /// with a VolumeLoad the cell residual, and with @p interface_terms the
     /// Sigma terms.
@@ -258,6 +424,7 @@ namespace bilayer
         sub.mapping(), sub.dof_handler(), face_quadrature, {}, w, kelly);
       for (unsigned int i = 0; i < kelly.size(); ++i)
         eta2[i] = double(kelly[i]) * kelly[i];
+      replace_ply_face_terms(sub, w, S, face_quadrature, eta2);
       add_cell_residuals(sub, w, S, eta2);
       if (!interface_terms)
         return;
