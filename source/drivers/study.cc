@@ -15,6 +15,7 @@
 #include <bilayer/parameters/thermal_volume_load.h>
 #include <bilayer/postprocess/estimator.h>
 #include <bilayer/postprocess/mode_split.h>
+#include <bilayer/solvers/coulomb_fixed_point.h>
 #include <bilayer/solvers/outer_solver.h>
 
 #include <cmath>
@@ -491,7 +492,14 @@ namespace bilayer
     const double        seconds_before = distribution.shared_seconds();
     if (scene.contact.friction == Friction::coulomb &&
         scene.contact.coulomb_method == CoulombMethod::fixed_point)
-      solve_coulomb(record);
+      {
+        FixedPointRecord fixed_point;
+        record.result =
+          CoulombFixedPoint(scene.solver, scene.contact, scene.output, pcout)
+            .solve(subproblem_views(), coupling, mu, w, fixed_point);
+        record.friction_iterations   = fixed_point.iterations;
+        record.friction_bound_change = fixed_point.bound_change;
+      }
     else
       record.result = create_outer_solver(scene.solver, scene.output, pcout)
                         ->solve(subproblem_views(), coupling, mu, w);
@@ -512,99 +520,6 @@ namespace bilayer
     record.processes      = distribution.n_processes();
     record.shared_values  = distribution.shared_values() - shared_before;
     record.shared_seconds = distribution.shared_seconds() - seconds_before;
-  }
-
-
-  void
-  Study::solve_coulomb(CycleRecord &record)
-  {
-    // Coulomb friction as a fixed point over Tresca problems: the bound of
-    // each crack node is F mu_c of the last solve (of the start multipliers
-    // first: zero, or a warm start), until the bounds change by at most
-    // max(Solver/Tolerance, 1e-12) relative to the largest one.
-    const double           F              = scene.contact.friction_coefficient;
-    const MultiplierSpace &space          = coupling.space();
-    const auto             coulomb_bounds = [&]() {
-      std::vector<double> bounds(space.n_nodes(Layout::across_sigma), 0.);
-      for (unsigned int a = 0; a < bounds.size(); ++a)
-        if (space.friction_node(a))
-          bounds[a] = F * std::max(space.contact_multiplier(mu, a), 0.);
-      return bounds;
-    };
-    const std::unique_ptr<OuterSolver> solver =
-      create_outer_solver(scene.solver, scene.output, pcout);
-    std::vector<double> bounds = coulomb_bounds();
-    SolverResult       &total  = record.result;
-    // The bounds come from Tresca solves accurate to their own round-off:
-    // changes below a few thousand machine epsilons are noise, not progress.
-    const double target          = std::max(scene.solver.tolerance, 1e-12);
-    double       previous_change = std::numeric_limits<double>::infinity();
-    for (unsigned int k = 1; k <= scene.contact.friction_iterations; ++k)
-      {
-        coupling.set_friction_bounds(bounds);
-        space.project(mu);
-        const SolverResult r =
-          solver->solve(subproblem_views(), coupling, mu, w);
-        const SolverResult sum = total;
-        total                  = r;
-        total.iterations += sum.iterations;
-        total.subdomain_solves += sum.subdomain_solves;
-        total.preconditioner_solves += sum.preconditioner_solves;
-        total.linear_iterations += sum.linear_iterations;
-        total.setup_seconds += sum.setup_seconds;
-        total.iteration_seconds += sum.iteration_seconds;
-        record.friction_iterations       = k;
-        const std::vector<double> next   = coulomb_bounds();
-        double                    change = 0, largest = 0;
-        for (unsigned int a = 0; a < next.size(); ++a)
-          {
-            change  = std::max(change, std::abs(next[a] - bounds[a]));
-            largest = std::max(largest, next[a]);
-          }
-        record.friction_bound_change = largest > 0 ? change / largest : change;
-        pcout << "  Coulomb fixed point " << k << ": bounds F mu_c changed by "
-              << record.friction_bound_change << " of the largest bound ("
-              << r.iterations << " " << r.solver << " iterations)" << std::endl;
-        if (!r.converged)
-          {
-            total.message =
-              "Coulomb fixed point " + std::to_string(k) + ": " + r.message;
-            return;
-          }
-        // The bounds F mu_c are only as accurate as the Tresca solves that
-        // give them (their KKT residual is Solver/Tolerance): changes that
-        // have stopped contracting within 100 times the tolerance are that
-        // noise, and the fixed point is met to it.
-        const bool stalled =
-          k >= 3 && record.friction_bound_change <= 100 * target &&
-          record.friction_bound_change >= 0.5 * previous_change;
-        if (record.friction_bound_change <= target || stalled)
-          {
-            if (stalled)
-              pcout << "  Coulomb fixed point: the changes no longer contract "
-                       "(at the accuracy of the Tresca solves): accepted"
-                    << std::endl;
-            return;
-          }
-        previous_change = record.friction_bound_change;
-        bounds          = next;
-      }
-    // In scientific notation: a change near Solver/Tolerance reads 0 in
-    // std::to_string's fixed six decimals.
-    std::ostringstream change;
-    change << std::setprecision(3) << std::scientific
-           << record.friction_bound_change;
-    total.converged = false;
-    total.message   = "the friction bounds F mu_c of Coulomb friction still "
-                      "changed by " +
-                    change.str() + " of the largest after " +
-                    std::to_string(scene.contact.friction_iterations) +
-                    " fixed-point iterations (Contact/Friction iterations); " +
-                    (record.friction_bound_change < 1e-8 ?
-                       "the changes are near the accuracy of the Tresca "
-                       "solves: a larger Solver/Tolerance ends it" :
-                       "a smaller Contact/Friction coefficient converges "
-                       "faster");
   }
 
 

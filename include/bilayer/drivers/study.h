@@ -332,10 +332,6 @@ namespace bilayer
     /// The outer solve, with its times and the MPI exchange.
     void
     solve(CycleRecord &record);
-    /// The outer solve of Coulomb friction: a fixed point over Tresca
-    /// problems (Contact/Friction iterations), into @p record.
-    void
-    solve_coulomb(CycleRecord &record);
     /// The energy, the residuals, the acceptance checks and (adaptive
     /// refinement) the error indicators of the next cycle.
     void
