@@ -223,10 +223,14 @@ namespace bilayer
     if (at != std::string::npos)
       {
         // (deal.II's text of this error leaves the file name's '<' open.)
+        const std::string missing =
+          Utilities::trim(message.substr(at + marker.size()));
+        // A ply beyond the layer's: the count comes from its Ply heights.
         const std::string closest =
-          did_you_mean(prm,
-                       Utilities::trim(message.substr(at + marker.size())),
-                       true);
+          missing.find(".Ply ") != std::string::npos ?
+            "; a layer with n Materials/Layer k/Ply heights has the "
+            "subsections Ply 1 ... Ply n+1 (none without heights)" :
+            did_you_mean(prm, missing, true);
         const auto file = message.find(" of file <");
         const auto end  = message.find(": There is", file);
         if (file != std::string::npos && end != std::string::npos &&

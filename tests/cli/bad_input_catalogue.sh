@@ -84,6 +84,7 @@ printf 'subsection Meshes\n  set Cells along Sigma = 8\nend\n' > unknown_subsect
 printf 'subsection Mesh\n  set Cells along Sigma = 8\n' > unterminated.prm
 printf 'subsection Solver\n  set Method = Active-Set\nend\n' > misspelled_value.prm
 printf 'subsection Contact\n  set Cohesive strength = 0.3\nend\n' > cohesive.prm
+printf 'subsection Materials\n subsection Layer 1\n  set Ply heights = 0.5\n  subsection Ply 3\n   set E_1 = 2\n  end\n end\nend\n' > ply3.prm
 printf 'include self.prm\n' > self.prm
 printf 'include b.prm\n' > a.prm
 printf 'include a.prm\n' > b.prm
@@ -103,6 +104,9 @@ check "entry of physics not modelled" "--set Fracture/Critical energy release ra
 check "entry of physics not modelled in a file" "No entry with name <Cohesive strength> was declared in the current subsection; what bilayer models and what not" cohesive.prm
 # Physics that bilayer models (friction) has entries: a name near one of
 # them is a misspelling.
+check "ply height outside Omega" "Materials/Layer 1/Ply heights must lie strictly inside Omega, -1 < y < 1, got 2" "$prm" --set "Materials/Layer 1/Ply heights=0.5, 2"
+check "ply heights not increasing" "Materials/Layer 1/Ply heights must be a list of heights y that increase strictly (the ply boundaries from the bottom), got '0.5, 0.2'" "$prm" --set "Materials/Layer 1/Ply heights=0.5, 0.2"
+check "ply beyond the layer's" "Line <4> of file <ply3.prm>: There is no such subsection to be entered: Materials.Layer 1.Ply 3; a layer with n Materials/Layer k/Ply heights has the subsections Ply 1 ... Ply n+1" ply3.prm
 check "misspelled friction entry" "no entry 'Contact/Friction coeficient' is declared; did you mean 'Contact/Friction coefficient'?" "$prm" --set "Contact/Friction coeficient=0.3"
 check "plausible misspelling in --set" "no entry 'Mesh/Polynomial degree layer 1' is declared; did you mean 'Mesh/Polynomial degree of layer 1'?" "$prm" --set "Mesh/Polynomial degree layer 1=2"
 check "choice far from every allowed one" "pattern <[Selection uzawa|accelerated|active set ]>" "$prm" --set "Solver/Method=newton"
