@@ -616,18 +616,6 @@ namespace bilayer
   }
 
 
-  bool
-  MaterialParameters::has_ply_entries() const
-  {
-    for (const auto &layer_plies : ply)
-      for (const auto &side_plies : layer_plies)
-        for (const auto &p : side_plies)
-          if (p)
-            return true;
-    return false;
-  }
-
-
   const std::vector<std::string> &
   MaterialParameters::law_entry_names()
   {

@@ -25,16 +25,6 @@ namespace bilayer
   }
 
 
-  double
-  PlyLaws::smallest_energy_norm_scale() const
-  {
-    double s = laws[0]->energy_norm_scale();
-    for (const auto &law : laws)
-      s = std::min(s, law->energy_norm_scale());
-    return s;
-  }
-
-
   bool
   PlyLaws::uniform_energy_norm_scale() const
   {

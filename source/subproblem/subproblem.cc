@@ -53,13 +53,21 @@ namespace bilayer
     , distribution(distribution)
     , dofs(triangulation)
   {
+    // With plies, the ply along Sigma: the one of a cell with a face on it
+    // (Sigma is a horizontal line of the rectangle, inside one ply).
     if (materials.size() > 1)
-      moduli_entries_ += " of each ply";
-    // The ply along Sigma: the one of a cell with a face on it.
-    for (const auto &cell : triangulation.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == BoundaryIds::sigma)
-          sigma_ply = laws_.ply(*cell);
+      {
+        moduli_entries_ += " of each ply";
+        bool found = false;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (!found && face->at_boundary() &&
+                face->boundary_id() == BoundaryIds::sigma)
+              {
+                sigma_ply = laws_.ply(*cell);
+                found     = true;
+              }
+      }
     if (triangulation.all_reference_cells_are_hyper_cube())
       fe_system = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 2);
     else

@@ -89,10 +89,6 @@ namespace bilayer
     std::vector<double>
     all_ply_heights() const;
 
-    /// Whether some ply of a layer gives a law entry of its own.
-    bool
-    has_ply_entries() const;
-
     bool
     has_layer(const Layer l) const
     {

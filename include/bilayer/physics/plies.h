@@ -62,11 +62,6 @@ namespace bilayer
       return *laws[ply(cell)];
     }
 
-    /// The smallest energy-norm scale of the plies
-    /// (ElasticLaw::energy_norm_scale()).
-    double
-    smallest_energy_norm_scale() const;
-
     /// Whether all plies have the same energy-norm scale.
     bool
     uniform_energy_norm_scale() const;
