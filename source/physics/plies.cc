@@ -25,6 +25,19 @@ namespace bilayer
   }
 
 
+  unsigned int
+  PlyLaws::ply_on_boundary(const Triangulation<2>  &tria,
+                           const types::boundary_id id) const
+  {
+    if (laws.size() > 1)
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == id)
+            return ply(*cell);
+    return 0;
+  }
+
+
   bool
   PlyLaws::uniform_energy_norm_scale() const
   {

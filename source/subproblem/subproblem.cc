@@ -46,6 +46,7 @@ namespace bilayer
     : layer_(layer)
     , subdomain_(subdomain)
     , laws_(materials, ply_heights)
+    , sigma_ply(laws_.ply_on_boundary(triangulation, BoundaryIds::sigma))
     , moduli_entries_(
         materials[0].law == MaterialLaw::orthotropic ? "E_1, E_2, E_3, G_12" :
         materials[0].law == MaterialLaw::anisotropic ? "Stiffness" :
@@ -53,21 +54,8 @@ namespace bilayer
     , distribution(distribution)
     , dofs(triangulation)
   {
-    // With plies, the ply along Sigma: the one of a cell with a face on it
-    // (Sigma is a horizontal line of the rectangle, inside one ply).
     if (materials.size() > 1)
-      {
-        moduli_entries_ += " of each ply";
-        bool found = false;
-        for (const auto &cell : triangulation.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (!found && face->at_boundary() &&
-                face->boundary_id() == BoundaryIds::sigma)
-              {
-                sigma_ply = laws_.ply(*cell);
-                found     = true;
-              }
-      }
+      moduli_entries_ += " of each ply";
     if (triangulation.all_reference_cells_are_hyper_cube())
       fe_system = std::make_unique<FESystem<2>>(FE_Q<2>(degree), 2);
     else

@@ -1,6 +1,7 @@
 #ifndef bilayer_plies_h
 #define bilayer_plies_h
 
+#include <deal.II/grid/tria.h>
 #include <deal.II/grid/tria_accessor.h>
 
 #include <bilayer/physics/elastic_law.h>
@@ -61,6 +62,15 @@ namespace bilayer
     {
       return *laws[ply(cell)];
     }
+
+    /**
+     * The ply of the cells with a face on the boundary part @p id of
+     * @p tria (Sigma: a horizontal line of the rectangle, inside one ply;
+     * that of the first such cell); 0 with one ply.
+     */
+    unsigned int
+    ply_on_boundary(const dealii::Triangulation<2>  &tria,
+                    const dealii::types::boundary_id id) const;
 
     /// Whether all plies have the same energy-norm scale.
     bool

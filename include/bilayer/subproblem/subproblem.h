@@ -408,7 +408,7 @@ namespace bilayer
     const Layer                        layer_;
     const Subdomain                    subdomain_;
     PlyLaws                            laws_;
-    unsigned int                       sigma_ply = 0;
+    const unsigned int                 sigma_ply;
     std::string                        moduli_entries_; // named on overflow
     unsigned int                       factorisations = 0;
     const Distribution                &distribution;
