@@ -227,7 +227,7 @@ main()
                 std::cout);
   doubled.run_cycle(0);
   double difference = 0, size = 0;
-  for (const unsigned int s : Layout::subproblems)
+  for (const unsigned int s : Layout::indices(Layout::n_subproblems(2)))
     {
       Vector<double> d = doubled.solutions()[s];
       d.add(-2., contact.solutions()[s]);

@@ -242,7 +242,7 @@ namespace
   affine_error(const Study &study, const Tensor<2, 2> &E)
   {
     double error = 0, size = 0;
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(Layout::n_subproblems(2)))
       {
         const auto &sub =
           study.subproblem(Layout::layer(s), Layout::subdomain(s));

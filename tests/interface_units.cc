@@ -414,7 +414,7 @@ namespace
     const auto mu                   = [&](const std::vector<double> &m,
                         const std::vector<double> &p,
                         const MultiplierMesh       rule) {
-      return MultiplierSpace::choose({{m, p}}, 2, 1, rule, tol);
+      return MultiplierSpace::choose({{m, p}}, {2, 1}, rule, tol);
     };
     const auto fine = mu(half, third, MultiplierMesh::finer_trace);
     std::cout << "  2:3 finer: " << str(fine[0].breakpoints) << "\n";
@@ -469,7 +469,7 @@ namespace
     MultiplierSpace           space;
     const std::vector<double> minus = {0, 0.5, 1, 1 + r2 / 2, 1 + r2},
                               plus  = {0, 1, 1 + r2};
-    space.reinit(curve, contact, {{minus, plus}}, 1, 1, {{true, false, false}});
+    space.reinit(curve, contact, {{minus, plus}}, {1, 1}, {true, false, false});
     std::cout << "  nodes per block: " << space.n_nodes(0) << " "
               << space.n_nodes(1) << " " << space.n_nodes(2) << "\n";
     check("mu_1 on the finer (Omega-) trace: 5 nodes; no layer 2: 0, 0",
@@ -538,9 +538,8 @@ namespace
     p2.reinit(line,
               contact,
               {{{0, 0.5, 1}, {0, 1. / 3, 2. / 3, 1}}},
-              2,
-              1,
-              {{true, true, true}});
+              {2, 1},
+              {true, true, true});
     std::cout << "  nodes per block: " << p2.n_nodes(0) << " " << p2.n_nodes(1)
               << " " << p2.n_nodes(2) << " degrees " << p2.degree(0) << " "
               << p2.degree(1) << " " << p2.degree(2) << "\n";
@@ -565,9 +564,8 @@ namespace
     ends.reinit(clamped,
                 contact,
                 {{{0, 0.5, 1}, {0, 1. / 3, 2. / 3, 1}}},
-                1,
-                1,
-                {{true, false, false}});
+                {1, 1},
+                {true, false, false});
     std::cout << "  rows " << ends.row(0, 0) << " " << ends.row(1, 0) << " "
               << ends.row(2, 0) << " " << ends.row(3, 0) << " D "
               << ends.node_weight(1, 0) << " free " << ends.n_free() << "\n";
@@ -582,9 +580,8 @@ namespace
     matching.reinit(clamped,
                     contact,
                     {{{0, 0.5, 1}, {0, 0.5, 1}}},
-                    1,
-                    1,
-                    {{true, false, false}});
+                    {1, 1},
+                    {true, false, false});
     check("matching traces: no modification (row 0 = 0, D_0 = 1/4)",
           matching.row(0, 0) == 0 && close(matching.node_weight(1, 0), 0.5) &&
             close(matching.node_weight(0, 0), 0.25));
@@ -735,7 +732,7 @@ namespace
 
     // C_s column by column: differences() with a unit w on one side.
     const std::vector<double>         common = {0, 1. / 3, 0.5, 2. / 3, 1};
-    const PerSubproblem<unsigned int> index  = {{0, 1, 0, 0}};
+    const PerSubproblem<unsigned int> index  = {0, 1, 0, 0};
     double                            worst = 0, worst_adjoint = 0;
     std::vector<std::vector<double>>  sums(2, std::vector<double>(2 * n, 0.));
     std::map<std::tuple<int, unsigned int, unsigned int>, double> printed;
@@ -747,7 +744,7 @@ namespace
         std::vector<int>           component;
         Vector<double>             linear;
         sigma_dofs(sp, x, component, linear);
-        Solutions w;
+        Solutions w(Layout::n_subproblems(2));
         w[Layout::u_minus].reinit(sub[0]->n_dofs());
         w[Layout::u_plus].reinit(sub[1]->n_dofs());
         BlockVector<double> column;

@@ -63,6 +63,7 @@
 #include <string>
 #include <vector>
 
+#include "quiet_output.h"
 #include "verdict.h"
 
 using namespace bilayer;
@@ -86,15 +87,9 @@ namespace
   run(const std::string &text, const unsigned int n_tips = 1)
   {
     std::ostringstream sink;
-    Study              study(scene_from_string(
-                  text +
-                    "subsection Output\n set Output directory = results\n"
-                                 " set Write VTU = false\n set Write interface CSV = false\n"
-                                 " set Progress interval = 0\n"
-                                 " set Terminal output = checks\nend\n",
-                  "laminate_plies"),
+    Study   study(scene_from_string(text + quiet_output(), "laminate_plies"),
                 sink);
-    Outcome            o;
+    Outcome o;
     o.accepted = study.run();
     if (!o.accepted)
       return o;

@@ -13,8 +13,9 @@
 // preconditioner (Schur complements on the owners), three adaptive cycles
 // (the estimator's indicators are computed by the owners, the meshes
 // refine alike on every process, non-matching traces, warm start), a
-// one-layer scene (two subproblems: with 4 processes two have none) and
-// P2 triangles with the consistent coupling.
+// one-layer scene (two subproblems: with 4 processes two have none), a
+// three-layer scene (six subproblems; not with 6 processes, which it
+// refuses) and P2 triangles with the consistent coupling.
 //
 // With 6 processes (.mpirun=6) u- and u+ are shared by two processes each
 // (DistributedSystem: METIS partition, Trilinos matrices, MUMPS; KLU in an
@@ -230,6 +231,19 @@ main(int argc, char **argv)
           "subsection Solver\n set Stopping rule = relative\n"
           " set Tolerance = 1e-9\nend\n" +
             example1);
+  if (!shared)
+    // Three layers (six subproblems round the processes; more than four
+    // processes are refused for more than two layers).
+    compare("three_layers",
+            "subsection Mesh\n set Cells along Sigma = 8\nend\n"
+            "subsection Materials\n set Number of layers = 3\n"
+            " subsection Layer 3\n  set Young's modulus = 70\n"
+            "  set Poisson's ratio = 0.33\n end\nend\n"
+            "subsection Loads\n subsection Layer 3\n"
+            "  set Traction on top side = 1e-3; 0\n end\nend\n"
+            "subsection Solver\n set Method = active set\n"
+            " set Tolerance = 1e-10\nend\n" +
+              example1);
   compare("p2_triangles_consistent",
           "subsection Mesh\n set Element shape = triangles\n"
           " set Cells along Sigma = 4\n set Polynomial degree of layer 1 = 2\n"

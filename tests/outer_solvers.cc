@@ -142,13 +142,15 @@ main()
               interface.space().restrict_to_free(mu);
               Solutions loads, w;
               interface.apply(mu, loads);
-              Subproblems subproblems;
-              for (const unsigned int s : Layout::subproblems)
+              Subproblems subproblems(Layout::n_subproblems(2));
+              for (const unsigned int s :
+                   Layout::indices(Layout::n_subproblems(2)))
                 subproblems[s] =
                   &study->subproblem(Layout::layer(s), Layout::subdomain(s));
               solve_homogeneous_subproblems(subproblems, interface, mu, w);
               double error = 0, norm = 0;
-              for (const unsigned int s : Layout::subproblems)
+              for (const unsigned int s :
+                   Layout::indices(Layout::n_subproblems(2)))
                 {
                   Vector<double> reaction;
                   InterfaceStiffness(*subproblems[s], true)

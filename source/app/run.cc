@@ -358,7 +358,7 @@ namespace bilayer
       // and its lock, says so in one line and ends by its signal instead.
       watch_stop_signals(reporter);
       const Distribution &processes = Distribution::world();
-      // The four subproblems are factorised and solved as parallel tasks,
+      // The subproblems are factorised and solved as parallel tasks,
       // each calling the BLAS: a threaded BLAS gets this process's threads
       // divided among them (one each on a machine with fewer than eight
       // cores), so that the two kinds of threads do not compete for the
@@ -368,8 +368,9 @@ namespace bilayer
       unsigned int blas_threads = 1;
       try
         {
-          blas_threads = fit_blas_threads(MultithreadInfo::n_threads(),
-                                          Layout::n_subproblems);
+          blas_threads =
+            fit_blas_threads(MultithreadInfo::n_threads(),
+                             Layout::n_subproblems(scene.materials.n_layers));
         }
       catch (const ExceptionBase &e)
         {

@@ -93,7 +93,7 @@ namespace bilayer
     bool scaled = false;
     for (const double lambda : scene.loads.load_factors)
       scaled = scaled || lambda != 1;
-    if (scaled && distribution.n_processes() > 4)
+    if (scaled && distribution.n_processes() > Distribution::max_groups)
       throw CollectiveError(
         "Loads/Load factor other than 1 needs at most four MPI processes "
         "(a subproblem shared by a group keeps the load of its set-up), got " +
@@ -570,9 +570,8 @@ namespace bilayer
   {
     // The work of the unit proportional loads, and layer 1's displacement
     // at the named points, each from the owner of its subproblem.
-    PerSubproblem<double> work;
-    work.fill(0.);
-    for (const unsigned int s : Layout::subproblems)
+    PerSubproblem<double> work(subproblems.size(), 0.);
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       if (subproblems[s] && distribution.owns(s))
         work[s] = subproblems[s]->load_work(w[s]);
     distribution.share(work);
@@ -584,9 +583,8 @@ namespace bilayer
       {
         const unsigned int    s = point_subproblems[i];
         Vector<double>        u(2);
-        PerSubproblem<double> ux, uy;
-        ux.fill(0.);
-        uy.fill(0.);
+        PerSubproblem<double> ux(subproblems.size(), 0.),
+          uy(subproblems.size(), 0.);
         if (distribution.owns(s))
           {
             VectorTools::point_value(subproblems[s]->mapping(),

@@ -20,7 +20,7 @@ namespace bilayer
                 ExcMessage("Study::set_load_factor: the load factor must be "
                            "a finite number"));
     // (Refused before anything changes, on every process alike.)
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       AssertThrow(new_lambda == 1 || subproblems[s] == nullptr ||
                     distribution.group_size(s) <= 1,
                   ExcMessage("Study::set_load_factor: subproblem " +

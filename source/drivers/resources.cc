@@ -122,7 +122,7 @@ namespace bilayer
   {
     ResourceEstimate estimate;
     estimate.memory = base_memory;
-    for (const Layer layer : {Layer::first, Layer::second})
+    for (const Layer layer : scene.materials.layers())
       if (scene.materials.has_layer(layer))
         for (const double cells : {cells_minus, cells_plus})
           {
@@ -212,7 +212,7 @@ namespace bilayer
         a.address_space = double(limit.rlim_cur);
         a.mapped        = self_status("VmSize");
         a.blas_buffers  = a.openblas ?
-                            std::min<double>(Layout::n_subproblems,
+                            std::min<double>(Layout::n_subproblems(2),
                                             MultithreadInfo::n_threads()) *
                              openblas_buffer :
                             0.;

@@ -100,11 +100,13 @@ namespace bilayer
     : scene(scene)
     , out(out)
     , distribution(distribution)
+    , volume_loads(Layout::n_subproblems(scene.materials.n_layers))
     , pcout(out,
             scene.output.terminal == TerminalOutput::full &&
               distribution.is_root())
     , rout(out, distribution.is_root())
     , domain(scene.geometry, scene.mesh, scene.materials.all_ply_heights())
+    , subproblems(Layout::n_subproblems(scene.materials.n_layers))
     , coupling(scene.contact)
   {}
 
@@ -122,6 +124,15 @@ namespace bilayer
                "meshes of the rectangle only; a Gmsh scene meshes its crack "
                "tips as vertices of its own"
             << std::endl;
+    // More layers than two go round at most four processes: a group of
+    // processes shares only the subproblems of two layers.
+    if (scene.materials.n_layers > Layout::min_layers &&
+        distribution.n_processes() > Distribution::max_groups)
+      throw CollectiveError(
+        "Materials/Number of layers = " +
+        std::to_string(scene.materials.n_layers) + " runs on at most " +
+        std::to_string(Distribution::max_groups) + " MPI processes, got " +
+        std::to_string(distribution.n_processes()));
     const IterationClock clock;
     std::vector<double>  seconds, dofs;
     for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
@@ -278,8 +289,8 @@ namespace bilayer
   PerSubproblem<const ElasticSubproblem *>
   Study::subproblem_views() const
   {
-    PerSubproblem<const ElasticSubproblem *> views;
-    for (const unsigned int s : Layout::subproblems)
+    PerSubproblem<const ElasticSubproblem *> views(subproblems.size());
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       views[s] = subproblems[s].get();
     return views;
   }
@@ -341,15 +352,14 @@ namespace bilayer
   {
     // The loads of each layer, then the set-ups (assembly and
     // factorisation) as parallel tasks.
-    std::array<decltype(scene.loads.prescribed_function(Layer::first)),
-               Layout::n_layers>
-      prescribed;
-    std::array<std::vector<std::unique_ptr<FunctionParser<2>>>,
-               Layout::n_layers>
-      traction_owners;
-    std::array<std::vector<const Function<2> *>, Layout::n_layers> traction;
-    Tasks                                                          setups;
-    for (const Layer layer : {Layer::first, Layer::second})
+    const unsigned int n_slots = Layout::n_slots(scene.materials.n_layers);
+    std::vector<decltype(scene.loads.prescribed_function(Layer::first))>
+      prescribed(n_slots);
+    std::vector<std::vector<std::unique_ptr<FunctionParser<2>>>>
+                                                  traction_owners(n_slots);
+    std::vector<std::vector<const Function<2> *>> traction(n_slots);
+    Tasks                                         setups;
+    for (const Layer layer : scene.materials.layers())
       if (scene.materials.has_layer(layer))
         {
           const unsigned int l = static_cast<unsigned int>(layer);
@@ -402,7 +412,7 @@ namespace bilayer
     if (!expressions::is_zero(scene.loads.temperature_change))
       try
         {
-          for (const Layer layer : {Layer::first, Layer::second})
+          for (const Layer layer : scene.materials.layers())
             for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
               if (scene.materials.has_layer(layer) &&
                   subproblems[Layout::index(layer, sd)])
@@ -532,7 +542,8 @@ namespace bilayer
       share_values(subproblem_views(), [&](const unsigned int s) {
         return subproblems[s]->energy(w[s]);
       });
-    for (const unsigned int s : Layout::subproblems)
+    record.layer_energy.assign(Layout::n_slots(scene.materials.n_layers), 0.);
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       {
         record.energy += energies[s];
         record.layer_energy[static_cast<unsigned int>(Layout::layer(s))] +=

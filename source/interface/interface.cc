@@ -16,14 +16,16 @@ namespace bilayer
     curve_                = curve;
     const double   tol    = curve.tolerance();
     const auto    &traces = coupling_.locate_traces(subs, curve_);
-    PerBlock<bool> active;
-    for (const unsigned int b : Layout::blocks)
+    PerBlock<bool> active(Layout::n_blocks(subs.size() / 2));
+    for (const unsigned int b : Layout::indices(active.size()))
       active[b] = coupling_.active(b);
-    // Layer 2's degree only matters where layer 2 exists.
-    const unsigned int degree_first = subs[Layout::u_minus]->fe().degree;
-    const unsigned int degree_second =
-      subs[Layout::v_minus] ? subs[Layout::v_minus]->fe().degree : degree_first;
-    space_.reinit(curve_, contact, traces, degree_first, degree_second, active);
+    // The degree of each layer's elements (an absent layer's only matters
+    // where it exists: that of layer 1).
+    std::vector<unsigned int> degrees;
+    for (unsigned int s = 0; s < subs.size(); s += Layout::n_subdomains)
+      degrees.push_back(subs[s] ? subs[s]->fe().degree :
+                                  subs[Layout::u_minus]->fe().degree);
+    space_.reinit(curve_, contact, traces, degrees, active);
     coupling_.reinit(space_, contact.coupling, tol);
   }
 
@@ -34,7 +36,7 @@ namespace bilayer
     const bool weighted = contact.sampling == JumpSampling::weighted;
     space_.initialize(g);
     coupling_.differences(w, weighted, g);
-    for (const unsigned int b : Layout::blocks)
+    for (const unsigned int b : Layout::indices(space_.n_blocks()))
       if (active(b))
         for (unsigned int i = 0; i < g.block(b).size(); ++i)
           g.block(b)(i) =
@@ -53,7 +55,7 @@ namespace bilayer
   {
     Tensor<1, 2>        t;
     std::vector<double> values;
-    for (const unsigned int b : Layout::blocks)
+    for (const unsigned int b : Layout::indices(space_.n_blocks()))
       for (unsigned int j = 0; j < 2; ++j)
         if ((j == 0 ? Layout::coupled(b).first : Layout::coupled(b).second) ==
               s &&

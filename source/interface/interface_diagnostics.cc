@@ -15,13 +15,13 @@ namespace bilayer
 
   namespace
   {
-    /// The traces of all four subproblems at the nodes of mu_1; without
+    /// The traces of all subproblems at the nodes of mu_1; without
     /// layer 2 its traces are those of layer 1 (no layer gap).
     PerSubproblem<Vector<double>>
     traces_at_nodes(const Interface &interface, const Solutions &w)
     {
-      PerSubproblem<Vector<double>> t;
-      for (const unsigned int s : Layout::subproblems)
+      PerSubproblem<Vector<double>> t(interface.n_subproblems());
+      for (const unsigned int s : Layout::indices(t.size()))
         {
           const unsigned int source =
             interface.present(s) ? s : Layout::first_layer_partner(s);
@@ -62,7 +62,7 @@ namespace bilayer
   {
     double         scale = 0;
     Vector<double> trace;
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(interface.n_subproblems()))
       if (interface.present(s))
         {
           interface.coupling().trace_at_nodes(s, w[s], trace);
@@ -189,7 +189,7 @@ namespace bilayer
       space.initialize(nodal);
       coupling.differences(w, false, nodal);
       double largest = 0;
-      for (const unsigned int b : Layout::blocks)
+      for (const unsigned int b : Layout::indices(interface.n_blocks()))
         if (interface.active(b))
           for (unsigned int i = 0; i < nodal.block(b).size(); ++i)
             {
@@ -230,8 +230,8 @@ namespace bilayer
 
     // The integral (12) and the pointwise penetration at the Gauss points.
     // Without layer 2 its traces are those of layer 1 (no layer gap).
-    PerSubproblem<Vector<double>> t;
-    for (const unsigned int s : Layout::subproblems)
+    PerSubproblem<Vector<double>> t(interface.n_subproblems());
+    for (const unsigned int s : Layout::indices(t.size()))
       {
         const unsigned int source =
           interface.present(s) ? s : Layout::first_layer_partner(s);
@@ -258,9 +258,12 @@ namespace bilayer
                 if (contact.non_penetration)
                   density += std::max(jump_1, 0.);
               }
-            density += std::abs(t[Layout::u_minus](i) - t[Layout::v_minus](i));
-            density += std::abs(t[Layout::u_plus](i) - t[Layout::v_plus](i));
-            for (const unsigned int s : Layout::subproblems)
+            // The gluing of the layers on each side (lambda-, lambda+, and
+            // the gluing of layer k to layer k - 1).
+            for (unsigned int b = 1; b < interface.n_blocks(); ++b)
+              density += std::abs(t[Layout::coupled(b).first](i) -
+                                  t[Layout::coupled(b).second](i));
+            for (const unsigned int s : Layout::indices(t.size()))
               if (interface.present(s))
                 size += wq[q] * std::abs(t[s](i));
           }
@@ -385,7 +388,8 @@ namespace bilayer
             n.mu_minus[c] = space.value(mu, Layout::glue_minus, n.s, c);
             n.mu_plus[c]  = space.value(mu, Layout::glue_plus, n.s, c);
           }
-        for (const unsigned int s : Layout::subproblems)
+        n.trace.resize(t.size());
+        for (const unsigned int s : Layout::indices(t.size()))
           n.trace[s] = Tensor<1, 2>({t[s](x), t[s](y)});
         n.normal_traction = n.on_crack ? n.mu_c : n.mu_g[Layout::normal];
         n.frictional      = interface.contact_parameters().frictional();
@@ -429,14 +433,19 @@ namespace bilayer
                       const std::vector<InterfaceNode> &nodes,
                       const std::vector<std::string>   &notes)
   {
-    using Layout::u_minus, Layout::u_plus, Layout::v_minus, Layout::v_plus;
     for (const std::string &note : notes)
       out << "# " << note << '\n';
+    // The traces of every subproblem: u_minus, u_plus, v_minus, v_plus and,
+    // with more layers, w3_minus, ...
+    const unsigned int n_traces =
+      nodes.empty() ? Layout::n_subproblems(2) : nodes.front().trace.size();
     out << "x,on_crack,jump_normal,jump_tangential,mu_c,mu_g_x,mu_g_y,"
            "mu_minus_x,mu_minus_y,mu_plus_x,mu_plus_y,gap_minus_x,"
-           "gap_minus_y,gap_plus_x,gap_plus_y,u_minus_x,u_minus_y,u_plus_x,"
-           "u_plus_y,v_minus_x,v_minus_y,v_plus_x,v_plus_y,s,y,normal_x,"
-           "normal_y,contact_pressure,normal_traction,state";
+           "gap_minus_y,gap_plus_x,gap_plus_y";
+    for (const unsigned int s : Layout::indices(n_traces))
+      out << ',' << Layout::field_name(s) << "_x," << Layout::field_name(s)
+          << "_y";
+    out << ",s,y,normal_x,normal_y,contact_pressure,normal_traction,state";
     const bool frictional = !nodes.empty() && nodes.front().frictional;
     out << (frictional ? ",tangential_force,friction_bound,friction_state\n" :
                          "\n");
@@ -448,11 +457,13 @@ namespace bilayer
             << ',' << n.mu_g[1];
         for (const Tensor<1, 2> &m : {n.mu_minus, n.mu_plus})
           out << ',' << m[0] << ',' << m[1];
-        for (const auto &[layer_1, layer_2] :
-             {std::pair(u_minus, v_minus), std::pair(u_plus, v_plus)})
+        // Layer 1 against layer 2 on each side.
+        for (const unsigned int b : {Layout::glue_minus, Layout::glue_plus})
           for (const unsigned int c : {0u, 1u})
-            out << ',' << n.trace[layer_1][c] - n.trace[layer_2][c];
-        for (const unsigned int s : Layout::subproblems)
+            out << ','
+                << n.trace[Layout::coupled(b).first][c] -
+                     n.trace[Layout::coupled(b).second][c];
+        for (const unsigned int s : Layout::indices(n.trace.size()))
           out << ',' << n.trace[s][0] << ',' << n.trace[s][1];
         // (+ 0. turns a negative zero into a positive one.)
         out << ',' << n.s << ',' << n.point[1] << ',' << n.normal[0] + 0. << ','

@@ -28,12 +28,11 @@ namespace bilayer
 
   PerBlock<MultiplierSpace::BlockChoice>
   MultiplierSpace::choose(const std::array<std::vector<double>, 2> &traces,
-                          const unsigned int   degree_first,
-                          const unsigned int   degree_second,
-                          const MultiplierMesh rule,
-                          const double         tol)
+                          const std::vector<unsigned int>          &degrees,
+                          const MultiplierMesh                      rule,
+                          const double                              tol)
   {
-    PerBlock<BlockChoice> choice;
+    PerBlock<BlockChoice> choice(Layout::n_blocks(degrees.size()));
     // mu_1, degree p1: per macro segment between shared points, the trace
     // with more (coarser trace: fewer) segments, Omega- on a tie.
     const auto         &t0 = traces[0], &t1 = traces[1];
@@ -64,12 +63,18 @@ namespace bilayer
             j = j1;
           }
       }
-    choice[Layout::across_sigma] = {mesh, degree_first};
-    // lambda-+: each side's trace, slave layer 2, the smaller degree.
-    for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
-      choice[Layout::gluing_block(sd)] = {traces[static_cast<unsigned int>(sd)],
-                                          std::min(degree_first,
-                                                   degree_second)};
+    choice[Layout::across_sigma] = {mesh, degrees[0]};
+    // The gluing of layer k to layer k - 1 on a side: the layers share the
+    // side's mesh, so its trace, with the smaller of the two degrees.
+    for (unsigned int b = 1; b < choice.size(); ++b)
+      {
+        const auto [lower, upper] = Layout::coupled(b);
+        const auto sd = static_cast<unsigned int>(Layout::subdomain(lower));
+        choice[b]     = {
+              traces[sd],
+              std::min(degrees[static_cast<unsigned int>(Layout::layer(lower))],
+                   degrees[static_cast<unsigned int>(Layout::layer(upper))])};
+      }
     return choice;
   }
 
@@ -129,17 +134,17 @@ namespace bilayer
   MultiplierSpace::reinit(const InterfaceCurve                     &curve,
                           const ContactParameters                  &contact,
                           const std::array<std::vector<double>, 2> &traces,
-                          const unsigned int    degree_first,
-                          const unsigned int    degree_second,
-                          const PerBlock<bool> &active)
+                          const std::vector<unsigned int>          &degrees,
+                          const PerBlock<bool>                     &active)
   {
     const double tol = curve.tolerance();
 
     // The meshes: the slave's trace of each block, Gauss-Lobatto nodes of
     // the block's degree on each segment.
     const PerBlock<BlockChoice> choice =
-      choose(traces, degree_first, degree_second, contact.mesh, tol);
-    for (const unsigned int b : Layout::blocks)
+      choose(traces, degrees, contact.mesh, tol);
+    meshes.resize(choice.size());
+    for (const unsigned int b : Layout::indices(choice.size()))
       {
         Mesh &mesh  = meshes[b];
         mesh.degree = choice[b].degree;
@@ -152,7 +157,7 @@ namespace bilayer
         else
           mesh.breakpoints.clear();
         place_nodes(b, curve);
-        find_nodal_sides(b, traces, degree_first, degree_second, tol);
+        find_nodal_sides(b, traces, degrees, tol);
         compute_dual_basis(*mesh.fe, mesh.degree, mesh.dual);
       }
 
@@ -215,8 +220,7 @@ namespace bilayer
   MultiplierSpace::find_nodal_sides(
     const unsigned int                        b,
     const std::array<std::vector<double>, 2> &traces,
-    const unsigned int                        degree_first,
-    const unsigned int                        degree_second,
+    const std::vector<unsigned int>          &degrees,
     const double                              tol)
   {
     Mesh              &mesh = meshes[b];
@@ -229,7 +233,7 @@ namespace bilayer
         const auto        &trace =
           traces[static_cast<unsigned int>(Layout::subdomain(s))];
         const unsigned int degree_s =
-          Layout::layer(s) == Layer::first ? degree_first : degree_second;
+          degrees[static_cast<unsigned int>(Layout::layer(s))];
         bool        inside = degree_s <= mesh.degree;
         std::size_t k      = 0;
         for (const double x : trace)
@@ -258,7 +262,7 @@ namespace bilayer
     set_.reinit(sizes);
     crack_nodes.assign(n_nodes(Layout::across_sigma), false);
     corner_nodes.assign(n_nodes(Layout::across_sigma), false);
-    for (const unsigned int b : Layout::blocks)
+    for (const unsigned int b : Layout::indices(meshes.size()))
       for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
         {
           const double x        = meshes[b].node_x[a];
@@ -313,7 +317,7 @@ namespace bilayer
     // The mortar modification at the ends on Gamma_D of blocks with a side
     // that is not nodal: the end's basis function joins the other vertex of
     // its segment.
-    for (const unsigned int b : Layout::blocks)
+    for (const unsigned int b : Layout::indices(meshes.size()))
       {
         Mesh              &mesh = meshes[b];
         const unsigned int n    = mesh.node_x.size();
@@ -477,7 +481,9 @@ namespace bilayer
   MultiplierSpace::functions(const BlockVector<double> &mu) const
   {
     Functions f;
-    for (const unsigned int b : Layout::blocks)
+    f.degree.resize(meshes.size());
+    f.breakpoints.resize(meshes.size());
+    for (const unsigned int b : Layout::indices(meshes.size()))
       {
         f.degree[b]      = meshes[b].degree;
         f.breakpoints[b] = meshes[b].breakpoints;
@@ -492,9 +498,9 @@ namespace bilayer
                                BlockVector<double> &mu) const
   {
     initialize(mu);
-    if (old.values.n_blocks() != Layout::n_blocks)
+    if (old.values.n_blocks() != meshes.size())
       return;
-    for (const unsigned int b : Layout::blocks)
+    for (const unsigned int b : Layout::indices(meshes.size()))
       if (!meshes[b].node_x.empty() && old.breakpoints[b].size() >= 2)
         {
           const FE_Q<1> fe_old(QGaussLobatto<1>(old.degree[b] + 1));

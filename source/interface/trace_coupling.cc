@@ -79,8 +79,14 @@ namespace bilayer
     // Coupling (lumped or consistent) and evaluation at the nodes of each
     // block, traces at the nodes of mu_1, and the Gauss points of the
     // common refinement of the two traces.
+    const unsigned int n_blocks = space.n_blocks();
+    // (Fresh matrices: a sparse matrix cannot be copied over one in use.)
+    coupling                = decltype(coupling)(n_blocks);
+    evaluation              = decltype(evaluation)(n_blocks);
+    node_traces             = decltype(node_traces)(subs.size());
+    gauss_traces            = decltype(gauss_traces)(subs.size());
     unsigned int max_degree = 0;
-    for (const unsigned int b : Layout::blocks)
+    for (const unsigned int b : Layout::indices(n_blocks))
       max_degree = std::max(max_degree, space.degree(b));
     for (const auto *sub : subs)
       if (sub != nullptr)
@@ -117,7 +123,7 @@ namespace bilayer
       }
 
     std::vector<double> values;
-    for (const unsigned int b : Layout::blocks)
+    for (const unsigned int b : Layout::indices(n_blocks))
       if (active(b))
         {
           const unsigned int n       = space.n_nodes(b);
@@ -156,7 +162,7 @@ namespace bilayer
               build_point_matrix(s, nodal(b), node_frames(b), evaluation[b][j]);
             }
         }
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(subs.size()))
       if (present(s))
         build_point_matrix(s,
                            nodal(Layout::across_sigma),
@@ -173,7 +179,7 @@ namespace bilayer
     std::vector<std::tuple<unsigned int, double, double>> at_gauss;
     for (unsigned int q = 0; q < gauss_x.size(); ++q)
       at_gauss.emplace_back(q, gauss_x[q], 1.0);
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(subs.size()))
       if (present(s))
         {
           // The Gauss points' frames: the curve's normal there.
@@ -253,12 +259,13 @@ namespace bilayer
   TraceCoupling::apply_transpose(const BlockVector<double> &mu,
                                  Solutions                 &loads) const
   {
-    for (const unsigned int s : Layout::subproblems)
+    loads.resize(subproblems.size());
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       loads[s].reinit(present(s) ? subproblems[s]->n_dofs() : 0);
     // Added into the loads directly (the first subproblem of a block with
     // -mu): no vector of the subproblem's size per block.
     Vector<double> negative;
-    for (const unsigned int b : Layout::blocks)
+    for (const unsigned int b : Layout::indices(coupling.size()))
       if (active(b))
         {
           negative = mu.block(b);
@@ -278,7 +285,7 @@ namespace bilayer
   {
     const auto    &op = weighted ? coupling : evaluation;
     Vector<double> first, second;
-    for (const unsigned int b : Layout::blocks)
+    for (const unsigned int b : Layout::indices(coupling.size()))
       if (active(b))
         {
           const unsigned int n = result.block(b).size();
@@ -317,19 +324,19 @@ namespace bilayer
                       SparsityPattern           &pattern,
                       SparseMatrix<double>      &gram) const
   {
-    PerBlock<unsigned int> offset = {{0, 0, 0}};
-    for (unsigned int b = 1; b < Layout::n_blocks; ++b)
+    PerBlock<unsigned int> offset(coupling.size(), 0);
+    for (unsigned int b = 1; b < coupling.size(); ++b)
       offset[b] = offset[b - 1] + mask.block(b - 1).size();
     const unsigned int                                      n = mask.size();
     std::map<std::pair<unsigned int, unsigned int>, double> entries;
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       {
         // The columns of the signed coupling of s: (global row, value) per
         // dof of s.
         std::map<types::global_dof_index,
                  std::vector<std::pair<unsigned int, double>>>
           columns;
-        for (const unsigned int b : Layout::blocks)
+        for (const unsigned int b : Layout::indices(coupling.size()))
           for (unsigned int j = 0; j < 2; ++j)
             if ((j == 0 ? Layout::coupled(b).first :
                           Layout::coupled(b).second) == s &&

@@ -213,12 +213,22 @@ namespace bilayer
     /// The DataOut objects of one cycle's pieces and what they refer to.
     struct SolutionPieces
     {
+      /// The pieces of @p n subproblems.
+      explicit SolutionPieces(const std::size_t n)
+        : stresses(n)
+        , data_outs(n)
+        , layers(n)
+        , subdomains(n)
+        , piece_of(n)
+        , simplex(n, false)
+      {}
+
       // Declared before the DataOut objects that subscribe to them.
       PerSubproblem<std::unique_ptr<StressPostprocessor>> stresses;
       PerSubproblem<DataOut<2>>                           data_outs;
       PerSubproblem<Vector<float>>                        layers, subdomains;
       PerSubproblem<std::string>                          piece_of;
-      PerSubproblem<bool>                                 simplex{};
+      PerSubproblem<bool>                                 simplex;
     };
 
 
@@ -232,12 +242,12 @@ namespace bilayer
                 PerSubproblem<std::string>                     &piece_of)
     {
       std::vector<std::string> pieces;
-      for (const unsigned int s : Layout::subproblems)
+      for (const unsigned int s : Layout::indices(subproblems.size()))
         if (subproblems[s] != nullptr)
           {
             const ElasticSubproblem &sub = *subproblems[s];
             piece_of[s] =
-              stem + "-" + std::string(1, sub.name()[0]) +
+              stem + "-" + Layout::layer_letter(sub.layer()) +
               (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus");
             // A subproblem shared by a group of processes is written in one
             // piece per process of the group (its cells of the partition).
@@ -345,7 +355,7 @@ namespace bilayer
       SolutionPieces                                 &output)
     {
       std::vector<std::pair<unsigned int, std::string>> grids;
-      for (const unsigned int s : Layout::subproblems)
+      for (const unsigned int s : Layout::indices(subproblems.size()))
         if (subproblems[s] != nullptr && subproblems[s]->owned())
           {
             const ElasticSubproblem   &sub      = *subproblems[s];
@@ -453,14 +463,14 @@ namespace bilayer
     std::ostringstream stem;
     stem << "solution-" << std::setw(2) << std::setfill('0') << cycle;
 
-    SolutionPieces                 output;
+    SolutionPieces                 output(subproblems.size());
     const DataOutBase::VtkFlags    flags = vtk_flags(parameters.compression);
     const std::vector<std::string> pieces =
       name_pieces(stem.str(), subproblems, processes, output.piece_of);
 
     // The patches of the pieces, and their VTU files, as parallel tasks.
     Tasks tasks;
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       if (subproblems[s] != nullptr && subproblems[s]->owned())
         tasks.add([&, s]() {
           build_piece(*subproblems[s],
@@ -530,14 +540,16 @@ namespace bilayer
           return double(n.friction_state);
         });
       }
-    const std::vector<std::pair<std::string, Field>> vectors = {
+    std::vector<std::pair<std::string, Field>> vectors = {
       {"mu_g", [](const auto &n) { return n.mu_g; }},
       {"mu_minus", [](const auto &n) { return n.mu_minus; }},
-      {"mu_plus", [](const auto &n) { return n.mu_plus; }},
-      {"u_minus", [](const auto &n) { return n.trace[Layout::u_minus]; }},
-      {"u_plus", [](const auto &n) { return n.trace[Layout::u_plus]; }},
-      {"v_minus", [](const auto &n) { return n.trace[Layout::v_minus]; }},
-      {"v_plus", [](const auto &n) { return n.trace[Layout::v_plus]; }}};
+      {"mu_plus", [](const auto &n) { return n.mu_plus; }}};
+    // The traces of every subproblem (u_minus, u_plus, v_minus, ...).
+    for (const unsigned int s :
+         Layout::indices(nodes.empty() ? Layout::n_subproblems(2) :
+                                         nodes.front().trace.size()))
+      vectors.emplace_back(Layout::field_name(s),
+                           [s](const auto &n) { return n.trace[s]; });
 
     std::vector<std::string> names;
     std::vector<

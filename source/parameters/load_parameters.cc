@@ -179,7 +179,8 @@ namespace bilayer
 
   void
   LoadParameters::declare_parameters(ParameterHandler    &prm,
-                                     const BoundaryParts &parts)
+                                     const BoundaryParts &parts,
+                                     const unsigned int   n_layer_slots)
   {
     prm.enter_subsection("Loads");
     prm.declare_entry(
@@ -221,7 +222,7 @@ namespace bilayer
       "eigenstrains (the mechanical loads are the preload: lambda is a "
       "factor of dT, e.g. the critical temperature drop of a film); 'all' "
       "every load. A growth run whose factors scale no load is refused.");
-    for (unsigned int l = 0; l < 2; ++l)
+    for (unsigned int l = 0; l < n_layer_slots; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
         for (unsigned int i = 0; i < parts.size(); ++i)
@@ -264,6 +265,16 @@ namespace bilayer
 
 
   void
+  LoadParameters::resize_layers(const unsigned int n_slots)
+  {
+    traction.resize(n_slots);
+    prescribed.resize(n_slots, "0; 0");
+    body_force.resize(n_slots, "0; 0");
+    eigenstrain.resize(n_slots, "0; 0; 0");
+  }
+
+
+  void
   LoadParameters::parse_parameters(ParameterHandler         &prm,
                                    const MaterialParameters &materials,
                                    const BoundaryParts      &boundary_parts)
@@ -277,7 +288,9 @@ namespace bilayer
     // names it is refused (why_absent).
     std::set<std::string>              materials_constants;
     std::map<std::string, std::string> why_absent;
-    for (unsigned int l = 0; l < 2; ++l)
+    const unsigned int                 n_slots = materials.layer.size();
+    resize_layers(n_slots);
+    for (unsigned int l = 0; l < n_slots; ++l)
       {
         std::map<std::string, double> values;
         layer_constants(materials, l, values, why_absent);
@@ -345,7 +358,7 @@ namespace bilayer
     refuse_absent("Loads/Temperature change", temperature_change);
     expressions::function(
       temperature_change, 1, "dT", constant_values, "Loads/Temperature change");
-    for (unsigned int l = 0; l < 2; ++l)
+    for (unsigned int l = 0; l < n_slots; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
         traction[l].assign(parts.size(), "0; 0");
@@ -366,7 +379,7 @@ namespace bilayer
     prm.leave_subsection();
 
     // Evaluate every expression once now, so that errors name the entry.
-    for (const Layer layer : {Layer::first, Layer::second})
+    for (const Layer layer : materials.layers())
       {
         prescribed_function(layer);
         for (unsigned int i = 0; i < parts.size(); ++i)

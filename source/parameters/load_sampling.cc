@@ -34,7 +34,7 @@ namespace bilayer
     const auto &loads     = scene.loads;
     // Every load must be finite where it acts: tractions on their sides,
     // the prescribed displacement on the clamped sides (1001 points each).
-    for (const Layer layer : {Layer::first, Layer::second})
+    for (const Layer layer : materials.layers())
       for (const Side side : all_sides)
         {
           const unsigned int s = static_cast<unsigned int>(side);

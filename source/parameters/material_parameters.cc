@@ -451,13 +451,18 @@ namespace bilayer
     const MaterialParameters defaults;
     prm.declare_entry("Number of layers",
                       "2",
-                      Patterns::Integer(1, 2),
+                      Patterns::Integer(1, max_layers),
                       "2: the two glued layers of the paper; 1: layer 2 is "
                       "absent, a single elastic body with a through crack "
                       "(only the layer-1 subproblems and the crack and "
                       "gluing multipliers are built; Materials/Layer 2 and "
-                      "Loads/Layer 2 are not used) [-].");
-    for (unsigned int l = 0; l < 2; ++l)
+                      "Loads/Layer 2 are not used); N > 2: N layers stacked "
+                      "through the thickness, each glued along Sigma to the "
+                      "one below it on both sides (layer 1 carries the "
+                      "crack's contact; the subsections Layer 3 ... Layer N "
+                      "of Materials and Loads appear, with layer 2's "
+                      "defaults) [-].");
+    for (unsigned int l = 0; l < n_plies.size(); ++l)
       {
         prm.enter_subsection(layer_subsection(l));
         prm.declare_entry(
@@ -478,18 +483,18 @@ namespace bilayer
           "(sigma_zz not defined).");
         prm.declare_entry("Young's modulus",
                           Patterns::Tools::to_string(
-                            defaults.layer[l].youngs_modulus),
+                            defaults.layer[std::min(l, 1u)].youngs_modulus),
                           Patterns::Double(0),
                           "Law = isotropic: Young's modulus E of the layer "
                           "[stress, e.g. GPa; tractions use the same unit].");
         prm.declare_entry("Poisson's ratio",
                           Patterns::Tools::to_string(
-                            defaults.layer[l].poisson_ratio),
+                            defaults.layer[std::min(l, 1u)].poisson_ratio),
                           Patterns::Double(-1, 0.5),
                           "Law = isotropic: Poisson's ratio nu of the layer "
                           "[-], in (-1, 0.5) in plane strain, (-1, 0.5] in "
                           "plane stress.");
-        declare_orthotropic(prm, defaults.layer[l]);
+        declare_orthotropic(prm, defaults.layer[std::min(l, 1u)]);
         prm.declare_entry(
           "Stiffness",
           "250, 100, 0, 250, 0, 75",
@@ -534,8 +539,13 @@ namespace bilayer
   MaterialParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Materials");
-    n_layers = prm.get_integer("Number of layers");
-    for (unsigned int l = 0; l < 2; ++l)
+    n_layers                   = prm.get_integer("Number of layers");
+    const unsigned int n_slots = Layout::n_slots(n_layers);
+    layer.resize(n_slots, layer.back());
+    side.resize(n_slots);
+    ply_heights.resize(n_slots);
+    ply.resize(n_slots);
+    for (unsigned int l = 0; l < n_slots; ++l)
       {
         prm.enter_subsection(layer_subsection(l));
         const std::string where = "Materials/" + layer_subsection(l) + "/";

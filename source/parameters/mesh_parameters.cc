@@ -47,7 +47,9 @@ namespace bilayer
     prm.declare_entry("Polynomial degree of layer 2",
                       "1",
                       Patterns::Integer(1, 4),
-                      "Degree of the Lagrange elements of layer 2 (v) [-].");
+                      "Degree of the Lagrange elements of layer 2 (v) and "
+                      "of the layers above it (Materials/Number of layers "
+                      "> 2) [-].");
     prm.declare_entry(
       "Mesh files",
       "",

@@ -38,15 +38,16 @@ namespace bilayer
       first.enter_subsection("Mesh");
       first.declare_entry("Gmsh time limit", "600", Patterns::Anything());
       first.leave_subsection();
-      for (unsigned int l = 0; l < 2; ++l)
+      first.enter_subsection("Materials");
+      first.declare_entry("Number of layers", "2", Patterns::Anything());
+      for (unsigned int l = 0; l < MaterialParameters::max_layers; ++l)
         {
-          first.enter_subsection("Materials");
           first.enter_subsection(entries::layer_subsection(l));
           first.declare_entry("Ply heights", "", Patterns::Anything());
           first.leave_subsection();
-          first.leave_subsection();
         }
-      n_plies = {{1, 1}};
+      first.leave_subsection();
+      n_plies = {1, 1};
       try
         {
           parse(first);
@@ -56,8 +57,28 @@ namespace bilayer
           // A broken file: the full parse reports it.
           return BoundaryParts();
         }
-      // The plies name the subsections Materials/Layer k/Ply j.
-      for (unsigned int l = 0; l < 2; ++l)
+      // The layers name the subsections Materials/Layer k and Loads/Layer
+      // k, the plies Materials/Layer k/Ply j (a number of layers out of
+      // range: the full parse reports it).
+      first.enter_subsection("Materials");
+      const std::string layers =
+        Utilities::trim(overridden_value(overrides,
+                                         {"Materials", "Number of layers"},
+                                         first.get("Number of layers")));
+      first.leave_subsection();
+      unsigned int n_layers = 2;
+      try
+        {
+          std::size_t end = 0;
+          const int   n   = std::stoi(layers, &end);
+          if (end == layers.size() && n >= 1 &&
+              n <= static_cast<int>(MaterialParameters::max_layers))
+            n_layers = n;
+        }
+      catch (...)
+        {}
+      n_plies.assign(Layout::n_slots(n_layers), 1);
+      for (unsigned int l = 0; l < n_plies.size(); ++l)
         {
           first.enter_subsection("Materials");
           first.enter_subsection(entries::layer_subsection(l));

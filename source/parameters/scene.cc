@@ -21,7 +21,7 @@ namespace bilayer
     GeometryParameters::declare_parameters(prm, parts);
     MeshParameters::declare_parameters(prm);
     MaterialParameters::declare_parameters(prm, n_plies);
-    LoadParameters::declare_parameters(prm, parts);
+    LoadParameters::declare_parameters(prm, parts, n_plies.size());
     ContactParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
     FractureParameters::declare_parameters(prm);

@@ -228,16 +228,16 @@ namespace bilayer
       std::vector<EnergyReleaseRate>                 &result)
     {
       const unsigned int            n = tips.size();
-      PerSubproblem<Vector<double>> integrals;
+      PerSubproblem<Vector<double>> integrals(subproblems.size());
       Tasks                         tasks;
-      for (const unsigned int s : Layout::subproblems)
+      for (const unsigned int s : Layout::indices(subproblems.size()))
         if (subproblems[s] != nullptr && subproblems[s]->owned())
           tasks.add([&, s]() {
             subproblem_integrals(
               *subproblems[s], w[s], tips, fields, integrals[s]);
           });
       tasks.join_all();
-      for (const unsigned int s : Layout::subproblems)
+      for (const unsigned int s : Layout::indices(subproblems.size()))
         if (subproblems[s] != nullptr)
           {
             if (!subproblems[s]->owned())

@@ -23,7 +23,7 @@ namespace bilayer
   {
     double              largest   = 0;
     const Distribution *processes = nullptr;
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       if (subproblems[s] != nullptr)
         {
           processes = &subproblems[s]->processes();
@@ -472,8 +472,9 @@ namespace bilayer
       for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
         {
           Vector<double> sum;
-          for (const unsigned int s : {Layout::index(Layer::first, sd),
-                                       Layout::index(Layer::second, sd)})
+          for (unsigned int s = Layout::index(Layer::first, sd);
+               s < subproblems.size();
+               s += Layout::n_subdomains)
             if (subproblems[s] != nullptr)
               {
                 if (!subproblems[s]->owned())
@@ -524,13 +525,13 @@ namespace bilayer
     // The squared indicator of each subproblem, evaluated by its owner
     // (the whole solution is needed) and sent to all processes, then
     // summed per subdomain in the order of the subproblems.
-    PerSubproblem<Vector<double>>     squared;
+    PerSubproblem<Vector<double>>     squared(subproblems.size());
     const std::vector<ContactSegment> contact =
       interface_terms ? contact_residual(interface, w, mu) :
                         std::vector<ContactSegment>();
     // The subproblems as parallel tasks (each writes its own squared[s]).
     Tasks tasks;
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       if (subproblems[s] != nullptr && subproblems[s]->owned())
         tasks.add([&, s]() {
           squared_indicators(*subproblems[s],

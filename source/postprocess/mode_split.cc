@@ -81,13 +81,11 @@ namespace bilayer
   materials_agree_across_sigma(
     const PerSubproblem<const ElasticSubproblem *> &subproblems)
   {
-    const std::array<std::array<unsigned int, 2>, 2> pairs = {
-      {{{Layout::u_minus, Layout::u_plus}},
-       {{Layout::v_minus, Layout::v_plus}}}};
-    for (const auto &pair : pairs)
+    // Each layer's two sides.
+    for (unsigned int s = 0; s < subproblems.size(); s += Layout::n_subdomains)
       {
-        const ElasticSubproblem *minus = subproblems[pair[0]],
-                                *plus  = subproblems[pair[1]];
+        const ElasticSubproblem *minus = subproblems[s],
+                                *plus  = subproblems[s + 1];
         if (minus == nullptr || plus == nullptr)
           continue;
         const SymmetricTensor<4, 2> C_minus = minus->sigma_law().tangent(),

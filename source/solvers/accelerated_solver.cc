@@ -64,7 +64,7 @@ namespace bilayer
           {
             const bool accept = accept_projected(
               subproblems, interface, projected, mu, w, result);
-            extra_solves += Layout::n_subproblems;
+            extra_solves += subproblems.size();
             if (accept)
               {
                 result.converged = true;
@@ -127,7 +127,7 @@ namespace bilayer
                       w_projected,
                       parameters.iterates_on_sigma() ? SolveExtent::sigma :
                                                        SolveExtent::whole);
-    result.subdomain_solves += Layout::n_subproblems;
+    result.subdomain_solves += subproblems.size();
     bool accept = true;
     if (parameters.stopping_rule == StoppingRule::kkt)
       {

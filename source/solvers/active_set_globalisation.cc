@@ -64,7 +64,7 @@ namespace bilayer
         if (!(t > 0) || !std::isfinite(t))
           {
             apply_dual_operator(subproblems, interface, step, Fs);
-            solves += Layout::n_subproblems;
+            solves += subproblems.size();
             t = (step * step) / (step * Fs);
             if (!(t > 0) || !std::isfinite(t))
               {
@@ -76,7 +76,7 @@ namespace bilayer
         interface.space().project(step);
         step -= mu;
         apply_dual_operator(subproblems, interface, step, Fs);
-        solves += Layout::n_subproblems;
+        solves += subproblems.size();
         const double slope = gradient * step, curvature = step * Fs;
         const double a = curvature > 0 ? std::min(1., slope / curvature) : 1.;
         if (!(a > 0))
@@ -333,7 +333,7 @@ namespace bilayer
             {
               // The line search of the face step of this reduction.
               apply_dual_operator(subproblems, interface, face_step, Fd);
-              result.subdomain_solves += Layout::n_subproblems;
+              result.subdomain_solves += subproblems.size();
               const auto candidate = best_on_segment(gradient * face_step,
                                                      face_step * Fd,
                                                      first_hit);
@@ -373,7 +373,7 @@ namespace bilayer
       held(first) = set.bound_towards(first, face_step(first)) - mu(first);
       BlockVector<double> rhs(gradient), face_delta;
       apply_dual_operator(subproblems, interface, held, Fd);
-      result.subdomain_solves += Layout::n_subproblems;
+      result.subdomain_solves += subproblems.size();
       rhs -= Fd;
       rhs.scale(reduced_mask);
       preconditioner.reinit(reduced_mask);

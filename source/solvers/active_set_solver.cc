@@ -70,7 +70,7 @@ namespace bilayer
               return outcome;
             }
           solve_homogeneous_subproblems(subproblems, interface, p, homogeneous);
-          outcome.subdomain_solves += Layout::n_subproblems;
+          outcome.subdomain_solves += subproblems.size();
           interface.jumps(homogeneous, q);
           interface.space().scale_by_weights(q);
           q *= -1.; // F p
@@ -173,7 +173,7 @@ namespace bilayer
                         w,
                         parameters.iterates_on_sigma() ? SolveExtent::sigma :
                                                          SolveExtent::whole);
-      result.subdomain_solves += Layout::n_subproblems;
+      result.subdomain_solves += subproblems.size();
       result.iterations = k;
       interface.jumps(w, g);
       const KKTResidual kkt = kkt_residual(interface, w, g, mu);
@@ -411,7 +411,7 @@ namespace bilayer
       if (parameters.iterates_on_sigma() && !whole_solutions)
         {
           solve_subproblems(subproblems, interface, mu, w);
-          result.subdomain_solves += Layout::n_subproblems;
+          result.subdomain_solves += subproblems.size();
         }
       result.message = message;
       if (preconditioner.n_degraded_steps() > 0)

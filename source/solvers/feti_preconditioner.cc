@@ -14,8 +14,9 @@ namespace bilayer
   {
     if (type == DualPreconditioner::none)
       return;
+    stiffness.resize(subproblems.size());
     Tasks tasks;
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       if (subproblems[s] != nullptr && subproblems[s]->owned())
         tasks.add([&, s]() {
           stiffness[s] = std::make_unique<InterfaceStiffness>(
@@ -50,10 +51,10 @@ namespace bilayer
         return 0;
       }
     solve_gram(z);
-    Solutions loads, reactions;
+    Solutions loads, reactions(subproblems.size());
     interface.apply(z, loads); // -B^T G^{-1} r
     Tasks tasks;
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(stiffness.size()))
       if (stiffness[s] != nullptr)
         tasks.add([&, s]() {
           if (type == DualPreconditioner::dirichlet)
@@ -68,7 +69,9 @@ namespace bilayer
     z *= -1.;
     z.scale(mask);
     solve_gram(z);
-    return type == DualPreconditioner::dirichlet ? Layout::n_subproblems : 0;
+    return type == DualPreconditioner::dirichlet ?
+             static_cast<unsigned int>(subproblems.size()) :
+             0;
   }
 
 

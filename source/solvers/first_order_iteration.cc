@@ -320,7 +320,7 @@ namespace bilayer
     if (parameters.iterates_on_sigma())
       {
         solve_subproblems(subproblems, interface, mu, w);
-        result.subdomain_solves += Layout::n_subproblems;
+        result.subdomain_solves += subproblems.size();
       }
     result.iteration_seconds = timer.wall_time();
     return result;
@@ -346,7 +346,7 @@ namespace bilayer
                       parameters.iterates_on_sigma() ? SolveExtent::sigma :
                                                        SolveExtent::whole);
     result.iterations       = k;
-    result.subdomain_solves = extra_solves + Layout::n_subproblems * (k + 1ul);
+    result.subdomain_solves = extra_solves + subproblems.size() * (k + 1ul);
     interface.jumps(w, g);
     const double value =
       k >= 1 ?

@@ -56,7 +56,7 @@ namespace bilayer
     for (unsigned int k = 0; k < max_iterations; ++k)
       {
         solve_homogeneous_subproblems(subproblems, interface, x, w);
-        estimate.subdomain_solves += Layout::n_subproblems;
+        estimate.subdomain_solves += subproblems.size();
         estimate.iterations = k + 1;
         interface.jumps(w, g);
         g *= -1.; // S x
@@ -145,7 +145,7 @@ namespace bilayer
                          const unsigned int max_iterations)
   {
     DualSpectrum result;
-    for (const unsigned int b : Layout::blocks)
+    for (const unsigned int b : Layout::indices(interface.n_blocks()))
       {
         const auto &bp = interface.space().breakpoints(b);
         for (unsigned int e = 0; e + 1 < bp.size(); ++e)
@@ -182,7 +182,7 @@ namespace bilayer
         result.lambda_max = eigenvalues.back();
       }
     result.iterations       = control.last_step();
-    result.subdomain_solves = op.products * Layout::n_subproblems;
+    result.subdomain_solves = op.products * subproblems.size();
     return result;
   }
 } // namespace bilayer

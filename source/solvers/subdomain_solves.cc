@@ -21,8 +21,9 @@ namespace bilayer
     {
       Solutions loads;
       interface.apply(multipliers, loads);
+      solutions.resize(subproblems.size());
       Tasks tasks;
-      for (const unsigned int s : Layout::subproblems)
+      for (const unsigned int s : Layout::indices(subproblems.size()))
         if (subproblems[s] != nullptr && subproblems[s]->owned())
           tasks.add([&, s]() {
             if (!whole && subproblems[s]->condensed())
@@ -43,7 +44,7 @@ namespace bilayer
   void
   share_traces(const Subproblems &subproblems, Solutions &solutions)
   {
-    for (const unsigned int s : Layout::subproblems)
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       if (subproblems[s] != nullptr)
         subproblems[s]->share_trace(solutions[s]);
   }
@@ -53,8 +54,8 @@ namespace bilayer
   share_values(const Subproblems                         &subproblems,
                const std::function<double(unsigned int)> &value)
   {
-    PerSubproblem<double> values{};
-    for (const unsigned int s : Layout::subproblems)
+    PerSubproblem<double> values(subproblems.size(), 0.);
+    for (const unsigned int s : Layout::indices(subproblems.size()))
       if (subproblems[s] != nullptr && subproblems[s]->owned())
         values[s] = value(s);
     // Layer 1 is always present.

@@ -213,7 +213,7 @@ namespace bilayer
         {
           mu.add(t, step.direction);
           g.add(-t, step.s_direction);
-          for (const unsigned int s : Layout::subproblems)
+          for (const unsigned int s : Layout::indices(w.size()))
             {
               w[s] = step.w_trial[s];
               w[s].sadd(t, 1. - t, w_old[s]);
@@ -318,7 +318,7 @@ namespace bilayer
         // Bookkeeping of iteration k + 1 as in evaluate().
         result.iterations = k + 1;
         result.subdomain_solves =
-          spectrum_solves + Layout::n_subproblems * (k + 2ul);
+          spectrum_solves + subproblems.size() * (k + 2ul);
         value = stopping_value(
           parameters, subproblems, interface, w, w_old, g, mu, last_increment);
         result.stopping_value = value;

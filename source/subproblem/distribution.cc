@@ -24,13 +24,12 @@ namespace bilayer
     , n_processes_(Utilities::MPI::n_mpi_processes(communicator))
     , process_(Utilities::MPI::this_mpi_process(communicator))
   {
-    if (n_processes_ > Layout::n_subproblems)
+    if (n_processes_ > max_groups)
       {
-        const int ierr =
-          MPI_Comm_split(communicator_,
-                         static_cast<int>(process_ % Layout::n_subproblems),
-                         static_cast<int>(process_),
-                         &group_communicator_);
+        const int ierr = MPI_Comm_split(communicator_,
+                                        static_cast<int>(process_ % max_groups),
+                                        static_cast<int>(process_),
+                                        &group_communicator_);
         AssertThrowMPI(ierr);
         own_group_communicator = true;
       }
@@ -61,9 +60,8 @@ namespace bilayer
   bool
   Distribution::owns(const unsigned int s) const
   {
-    return n_processes_ <= Layout::n_subproblems ?
-             s % n_processes_ == process_ :
-             process_ % Layout::n_subproblems == s;
+    return n_processes_ <= max_groups ? s % n_processes_ == process_ :
+                                        process_ % max_groups == s;
   }
 
 
@@ -71,10 +69,9 @@ namespace bilayer
   Distribution::group_size(const unsigned int s) const
   {
     // The processes p with p mod n_subproblems = s.
-    return n_processes_ <= Layout::n_subproblems ?
+    return n_processes_ <= max_groups ?
              1 :
-             (n_processes_ - s + Layout::n_subproblems - 1) /
-               Layout::n_subproblems;
+             (n_processes_ - s + max_groups - 1) / max_groups;
   }
 
 
@@ -118,8 +115,8 @@ namespace bilayer
   {
     if (!parallel())
       return;
-    PerSubproblem<double> own{};
-    for (const unsigned int s : Layout::subproblems)
+    PerSubproblem<double> own(values.size(), 0.);
+    for (const unsigned int s : Layout::indices(values.size()))
       if (process_ == root(s))
         own[s] = values[s];
     // Exactly one non-zero contribution per entry: the sum is exact.

@@ -85,6 +85,7 @@ printf 'subsection Mesh\n  set Cells along Sigma = 8\n' > unterminated.prm
 printf 'subsection Solver\n  set Method = Active-Set\nend\n' > misspelled_value.prm
 printf 'subsection Contact\n  set Cohesive strength = 0.3\nend\n' > cohesive.prm
 printf 'subsection Materials\n subsection Layer 1\n  set Ply heights = 0.5\n  subsection Ply 3\n   set E_1 = 2\n  end\n end\nend\n' > ply3.prm
+printf 'subsection Materials\n subsection Layer 3\n  set Poisson'"'"'s ratio = 0.3\n end\nend\n' > layer3.prm
 printf 'include self.prm\n' > self.prm
 printf 'include b.prm\n' > a.prm
 printf 'include a.prm\n' > b.prm
@@ -107,6 +108,8 @@ check "entry of physics not modelled in a file" "No entry with name <Cohesive st
 check "ply height outside Omega" "Materials/Layer 1/Ply heights must lie strictly inside Omega, -1 < y < 1, got 2" "$prm" --set "Materials/Layer 1/Ply heights=0.5, 2"
 check "ply heights not increasing" "Materials/Layer 1/Ply heights must be a list of heights y that increase strictly (the ply boundaries from the bottom), got '0.5, 0.2'" "$prm" --set "Materials/Layer 1/Ply heights=0.5, 0.2"
 check "ply beyond the layer's" "Line <4> of file <ply3.prm>: There is no such subsection to be entered: Materials.Layer 1.Ply 3; a layer with n Materials/Layer k/Ply heights has the subsections Ply 1 ... Ply n+1" ply3.prm
+check "layer beyond the stack" "Line <2> of file <layer3.prm>: There is no such subsection to be entered: Materials.Layer 3; Materials/Number of layers = N gives the subsections Layer 1 ... Layer max(2, N) of Materials and Loads" layer3.prm
+check "too many layers" "Materials/Number of layers=65: The string <65> does not match the given pattern <[Integer range 1...64 (inclusive)]>" "$prm" --set "Materials/Number of layers=65"
 check "misspelled friction entry" "no entry 'Contact/Friction coeficient' is declared; did you mean 'Contact/Friction coefficient'?" "$prm" --set "Contact/Friction coeficient=0.3"
 check "plausible misspelling in --set" "no entry 'Mesh/Polynomial degree layer 1' is declared; did you mean 'Mesh/Polynomial degree of layer 1'?" "$prm" --set "Mesh/Polynomial degree layer 1=2"
 check "choice far from every allowed one" "pattern <[Selection uzawa|accelerated|active set ]>" "$prm" --set "Solver/Method=newton"

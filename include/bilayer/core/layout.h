@@ -9,16 +9,21 @@
 
 /**
  * @file
- * The layout of the problem: two layers on two sides of Sigma give four
- * subproblems, coupled by three multiplier blocks, and the crack is a set of
- * pieces of Sigma. Every loop over subproblems or blocks, every index into a
- * per-subproblem array and every "is this point of Sigma on the crack" goes
- * through the names defined here.
+ * The layout of the problem: N layers stacked through the thickness (the
+ * paper's two, u and v, or more), each cut along Sigma into its parts on the
+ * two regions Omega- and Omega+, give 2N subproblems, coupled by 2N - 1
+ * multiplier blocks: layer 1 across Sigma (contact on the crack), and on each
+ * region each layer k >= 2 glued to layer k - 1 along Sigma. The crack is a
+ * set of pieces of Sigma. Every loop over subproblems or blocks, every index
+ * into a per-subproblem array and every "is this point of Sigma on the
+ * crack" goes through the names defined here. A scene with one layer keeps
+ * the slots of layer 2 (absent: null subproblems, blocks without nodes).
  */
 namespace bilayer
 {
-  /// The two layers: layer 1 (displacement u, cracked), layer 2 (v).
-  enum class Layer
+  /// A layer, by its position from the bottom of the stack: layer 1
+  /// (displacement u, cracked), layer 2 (v), layer k (Layer(k - 1)).
+  enum class Layer : unsigned int
   {
     first  = 0,
     second = 1
@@ -31,7 +36,8 @@ namespace bilayer
     plus  = 1
   };
 
-  /// The three multiplier blocks (docs/problem.md §3).
+  /// The first multiplier blocks (docs/problem.md §3); a stack of N layers
+  /// has the blocks 0 ... 2N - 2 (Layout::gluing_block()).
   enum class MultiplierBlock
   {
     /// mu_1: layer 1 across Sigma (u- against u+), contact on the crack.
@@ -44,15 +50,43 @@ namespace bilayer
 
   namespace Layout
   {
-    constexpr unsigned int n_layers      = 2;
-    constexpr unsigned int n_subdomains  = 2;
-    constexpr unsigned int n_subproblems = n_layers * n_subdomains;
-    constexpr unsigned int n_blocks      = 3;
+    /// The fewest layers the decomposition holds slots for: a one-layer
+    /// scene keeps layer 2's slots absent.
+    constexpr unsigned int min_layers   = 2;
+    constexpr unsigned int n_subdomains = 2;
     /// Space dimension and the components of a displacement or multiplier.
     constexpr unsigned int n_components = 2;
 
+    /// The number of slots of the layers of a scene with @p layers layers.
+    constexpr unsigned int
+    n_slots(const unsigned int layers)
+    {
+      return layers < min_layers ? min_layers : layers;
+    }
+
+    /// The subproblems of a stack of @p layers layers (slots: at least 2).
+    constexpr unsigned int
+    n_subproblems(const unsigned int layers)
+    {
+      return n_subdomains * n_slots(layers);
+    }
+
+    /// The multiplier blocks of a stack of @p layers layers.
+    constexpr unsigned int
+    n_blocks(const unsigned int layers)
+    {
+      return 2 * n_slots(layers) - 1;
+    }
+
+    /// The layer k (1-based) as a Layer.
+    constexpr Layer
+    layer_number(const unsigned int k)
+    {
+      return static_cast<Layer>(k - 1);
+    }
+
     /// Position of subproblem (layer, subdomain) in every per-subproblem
-    /// array: u- = 0, u+ = 1, v- = 2, v+ = 3.
+    /// array: u- = 0, u+ = 1, v- = 2, v+ = 3, layer k on Omega-: 2(k - 1).
     constexpr unsigned int
     index(const Layer layer, const Subdomain subdomain)
     {
@@ -81,18 +115,41 @@ namespace bilayer
 
     constexpr unsigned int u_minus = index(Layer::first, Subdomain::minus);
     constexpr unsigned int u_plus  = index(Layer::first, Subdomain::plus);
-    constexpr unsigned int v_minus = index(Layer::second, Subdomain::minus);
-    constexpr unsigned int v_plus  = index(Layer::second, Subdomain::plus);
 
-    /// All subproblem indices, for range-based loops.
-    constexpr std::array<unsigned int, n_subproblems> subproblems = {
-      {u_minus, u_plus, v_minus, v_plus}};
+    /// The indices 0 ... n - 1, for range-based loops over the subproblems
+    /// or blocks of a per-subproblem or per-block array of size n.
+    inline std::vector<unsigned int>
+    indices(const std::size_t n)
+    {
+      std::vector<unsigned int> all(n);
+      for (unsigned int i = 0; i < n; ++i)
+        all[i] = i;
+      return all;
+    }
 
-    /// "u-", "u+", "v-" or "v+".
+    /// The letter of layer @p layer in names: u (layer 1), v (layer 2),
+    /// w3, w4, ... (layer k >= 3).
+    inline std::string
+    layer_letter(const Layer layer)
+    {
+      const unsigned int l = static_cast<unsigned int>(layer);
+      return l == 0 ? "u" : l == 1 ? "v" : "w" + std::to_string(l + 1);
+    }
+
+    /// "u_minus", "u_plus", "v_minus", ..., "w3_plus": the subproblem in
+    /// the names of output fields and columns.
+    inline std::string
+    field_name(const unsigned int subproblem)
+    {
+      return layer_letter(layer(subproblem)) +
+             (subdomain(subproblem) == Subdomain::minus ? "_minus" : "_plus");
+    }
+
+    /// "u-", "u+", "v-", "v+", "w3-", ...
     inline std::string
     name(const unsigned int subproblem)
     {
-      return std::string(layer(subproblem) == Layer::first ? "u" : "v") +
+      return layer_letter(layer(subproblem)) +
              (subdomain(subproblem) == Subdomain::minus ? "-" : "+");
     }
 
@@ -106,29 +163,38 @@ namespace bilayer
     constexpr unsigned int glue_minus   = index(MultiplierBlock::glue_minus);
     constexpr unsigned int glue_plus    = index(MultiplierBlock::glue_plus);
 
-    /// All block indices, for range-based loops.
-    constexpr std::array<unsigned int, n_blocks> blocks = {
-      {across_sigma, glue_minus, glue_plus}};
+    /// The block that glues the layer @p layer (layer 2 or above) to the
+    /// layer below it on @p subdomain.
+    constexpr unsigned int
+    gluing_block(const Layer layer, const Subdomain subdomain)
+    {
+      return 1 + n_subdomains * (static_cast<unsigned int>(layer) - 1) +
+             static_cast<unsigned int>(subdomain);
+    }
 
-    /// The block that glues the two layers on @p subdomain.
+    /// The block that glues layer 2 to layer 1 on @p subdomain.
     constexpr unsigned int
     gluing_block(const Subdomain subdomain)
     {
-      return subdomain == Subdomain::minus ? glue_minus : glue_plus;
+      return gluing_block(Layer::second, subdomain);
     }
 
     /**
      * The two subproblems that block @p b couples, (first, second): the jump
      * of block b is first - second, the multiplier acts on first with the
-     * sign -1 and on second with +1. mu_1: (u-, u+); lambda-: (u-, v-);
-     * lambda+: (u+, v+).
+     * sign -1 and on second with +1. mu_1: (u-, u+); the gluing block of
+     * layer k on a side: (layer k - 1, layer k) on that side, so lambda-:
+     * (u-, v-), lambda+: (u+, v+).
      */
     constexpr std::pair<unsigned int, unsigned int>
     coupled(const unsigned int b)
     {
-      return b == across_sigma ? std::make_pair(u_minus, u_plus) :
-             b == glue_minus   ? std::make_pair(u_minus, v_minus) :
-                                 std::make_pair(u_plus, v_plus);
+      if (b == across_sigma)
+        return std::make_pair(u_minus, u_plus);
+      const unsigned int upper = (b - 1) / n_subdomains + 1;
+      const Subdomain    side  = static_cast<Subdomain>((b - 1) % n_subdomains);
+      return std::make_pair(index(static_cast<Layer>(upper - 1), side),
+                            index(static_cast<Layer>(upper), side));
     }
 
     /// Entry of component @p c of node @p a in a multiplier block.
@@ -144,13 +210,15 @@ namespace bilayer
     constexpr unsigned int normal     = 1;
   } // namespace Layout
 
-  /// One value per subproblem, indexed by Layout::index().
+  /// One value per subproblem, indexed by Layout::index(): sized
+  /// Layout::n_subproblems(layers).
   template <typename T>
-  using PerSubproblem = std::array<T, Layout::n_subproblems>;
+  using PerSubproblem = std::vector<T>;
 
-  /// One value per multiplier block, indexed by Layout::index(block).
+  /// One value per multiplier block, indexed by Layout::index(block): sized
+  /// Layout::n_blocks(layers).
   template <typename T>
-  using PerBlock = std::array<T, Layout::n_blocks>;
+  using PerBlock = std::vector<T>;
 
   /**
    * The crack gamma_c as a set of open pieces of Sigma, each an interval of

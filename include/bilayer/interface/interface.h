@@ -120,6 +120,19 @@ namespace bilayer
       coupling_.gram(mask, pattern, gram);
     }
 
+    /// The number of subproblems (2 per layer slot) and of multiplier
+    /// blocks (2 per layer slot, less one).
+    unsigned int
+    n_subproblems() const
+    {
+      return coupling_.n_subproblems();
+    }
+    unsigned int
+    n_blocks() const
+    {
+      return space_.n_blocks();
+    }
+
     /// Whether subproblem @p s exists (layer 2 may be absent).
     bool
     present(const unsigned int s) const

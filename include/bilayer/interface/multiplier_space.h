@@ -25,7 +25,8 @@ namespace bilayer
 
   /**
    * The multiplier spaces on Sigma (docs/problem.md §3, docs/multipliers.md):
-   * for each of the three blocks (Layout::blocks) a mesh of Sigma, continuous
+   * for each multiplier block (2N - 1 of them for N layers, Layout::coupled())
+   * a mesh of Sigma, continuous
    * Lagrange elements of a degree of its own on it whose nodes are the
    * Gauss-Lobatto points of each segment, the lumped mass D (one weight per
    * node), and the admissible set of the multipliers (MultiplierSet). A vector
@@ -60,6 +61,11 @@ namespace bilayer
    *    degree min(p1, p2), slave v- (layer 2), whose trace of degree
    *    p2 >= min(p1, p2) is onto the multipliers' nodal values.
    *  - lambda+: likewise on Omega+, slave v+.
+   *  - With N > 2 layers, the gluing of layer k to layer k - 1 on a side:
+   *    the side's trace, degree min(p_(k-1), p_k), slave layer k. The rule:
+   *    the slave of a gluing block is its upper layer, the one farther from
+   *    the cracked layer 1, so every layer k >= 2 is the slave of exactly
+   *    one block per side and the slaves' dofs stay distinct.
    * On matching meshes with p1 = p2 the three meshes are the common trace
    * and every degree is p1 (the spaces of the paper). A block whose
    * subproblems are not both present (no layer 2) has no nodes.
@@ -90,18 +96,19 @@ namespace bilayer
     /**
      * The mortar choice of the class documentation for the traces'
      * break points @p trace_breakpoints (Omega-, Omega+; points closer than
-     * @p tol are shared) and the degrees of the two layers.
+     * @p tol are shared) and the degrees of the layers' elements
+     * (@p degrees, one per layer slot: Layout::n_blocks(degrees.size())
+     * blocks).
      */
     static PerBlock<BlockChoice>
     choose(const std::array<std::vector<double>, 2> &trace_breakpoints,
-           const unsigned int                        degree_first,
-           const unsigned int                        degree_second,
+           const std::vector<unsigned int>          &degrees,
            const MultiplierMesh                      rule,
            const double                              tol);
 
     /**
      * Build the meshes from the break points of the Omega- and Omega+ traces
-     * on Sigma (sorted coordinates along Sigma) and the degrees of the two
+     * on Sigma (sorted coordinates along Sigma) and the degrees of the
      * layers' elements, by choose(); the crack pieces and the ends on
      * Gamma_D come from @p curve; @p active[b] says whether both
      * subproblems of block b exist.
@@ -110,9 +117,15 @@ namespace bilayer
     reinit(const InterfaceCurve                     &curve,
            const ContactParameters                  &contact,
            const std::array<std::vector<double>, 2> &trace_breakpoints,
-           const unsigned int                        degree_first,
-           const unsigned int                        degree_second,
+           const std::vector<unsigned int>          &degrees,
            const PerBlock<bool>                     &active);
+
+    /// The number of multiplier blocks (0 before reinit()).
+    unsigned int
+    n_blocks() const
+    {
+      return meshes.size();
+    }
 
     /// Degree of the multipliers of block @p b.
     unsigned int
@@ -432,7 +445,7 @@ namespace bilayer
      */
     struct Functions
     {
-      PerBlock<unsigned int>        degree = {{0, 0, 0}};
+      PerBlock<unsigned int>        degree;
       PerBlock<std::vector<double>> breakpoints;
       dealii::BlockVector<double>   values;
     };
@@ -474,8 +487,7 @@ namespace bilayer
     void
     find_nodal_sides(const unsigned int                        b,
                      const std::array<std::vector<double>, 2> &traces,
-                     const unsigned int                        degree_first,
-                     const unsigned int                        degree_second,
+                     const std::vector<unsigned int>          &degrees,
                      const double                              tol);
 
     /// The multiplier set of all blocks and the crack and corner nodes of

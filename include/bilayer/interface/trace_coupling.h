@@ -17,7 +17,7 @@
 
 namespace bilayer
 {
-  /// The four subproblem solutions (or loads), indexed by Layout::index().
+  /// The subproblem solutions (or loads), indexed by Layout::index().
   using Solutions = PerSubproblem<dealii::Vector<double>>;
 
   /**
@@ -65,6 +65,13 @@ namespace bilayer
     reinit(const MultiplierSpace   &space,
            const MultiplierCoupling coupling,
            const double             tolerance);
+
+    /// The number of subproblems (2 per layer slot).
+    unsigned int
+    n_subproblems() const
+    {
+      return subproblems.size();
+    }
 
     /// Whether subproblem @p s exists (layer 2 may be absent).
     bool

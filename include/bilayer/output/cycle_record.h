@@ -45,9 +45,10 @@ namespace bilayer
     /// steps; zero when not estimated).
     DualSpectrum spectrum;
     double       energy = 0;
-    /// The energy of each layer (both subdomains; its strain energy minus
-    /// the work of its own loads): energy = their sum.
-    std::array<double, 2> layer_energy = {{0, 0}};
+    /// The energy of each layer slot (both subdomains; its strain energy
+    /// minus the work of its own loads): energy = their sum. The records
+    /// report layers 1 and 2 (energy_of).
+    std::vector<double> layer_energy = {0, 0};
     /// The global a-posteriori error estimate in the energy norm
     /// (estimate_error(), estimator.h), [energy^1/2]: compare with
     /// (2 |Pi_h - Pi|)^1/2.

@@ -33,13 +33,13 @@ namespace bilayer
     /// The boundary parts the tractions refer to.
     BoundaryParts parts;
     /// traction[layer][part], "f_x; f_y"
-    std::array<std::vector<std::string>, Layout::n_layers> traction;
+    std::vector<std::vector<std::string>> traction{2};
     /// prescribed[layer], "u_x; u_y", on the clamped sides
-    std::array<std::string, 2> prescribed = {{"0; 0", "0; 0"}};
+    std::vector<std::string> prescribed = {"0; 0", "0; 0"};
     /// body_force[layer], "f_x; f_y" [stress / length]
-    std::array<std::string, 2> body_force = {{"0; 0", "0; 0"}};
+    std::vector<std::string> body_force = {"0; 0", "0; 0"};
     /// eigenstrain[layer], "eps11; eps22; eps12" [-]
-    std::array<std::string, 2> eigenstrain = {{"0; 0; 0", "0; 0; 0"}};
+    std::vector<std::string> eigenstrain = {"0; 0; 0", "0; 0; 0"};
     /// Loads/Temperature change, dT(x, y) [K] (every layer)
     std::string temperature_change = "0";
     /// Loads/Load factor: the factors lambda of the proportional loads
@@ -75,13 +75,19 @@ namespace bilayer
 
     LoadParameters();
 
+    /// Declare the entries, with the subsections Layer 1 ... Layer
+    /// @p n_layer_slots.
     static void
     declare_parameters(dealii::ParameterHandler &prm,
-                       const BoundaryParts      &parts = BoundaryParts());
+                       const BoundaryParts      &parts = BoundaryParts(),
+                       const unsigned int        n_layer_slots = 2);
     void
     parse_parameters(dealii::ParameterHandler &prm,
                      const MaterialParameters &materials,
                      const BoundaryParts      &parts);
+    /// The per-layer entries of @p n_slots layer slots (new ones "0").
+    void
+    resize_layers(const unsigned int n_slots);
 
     std::unique_ptr<dealii::FunctionParser<2>>
     traction_function(const Layer layer, const unsigned int part) const;

@@ -23,21 +23,30 @@
 namespace bilayer
 {
   /// The number of plies of each layer (the subsections Ply 1 ... Ply n
-  /// that Materials/Layer k declares): one more than its ply heights.
-  using PlyCounts = std::array<unsigned int, 2>;
+  /// that Materials/Layer k declares): one more than its ply heights; one
+  /// per layer slot (at least two: Layer 1 and Layer 2 are always
+  /// declared), so its size also says how many Layer k subsections the
+  /// Materials and Loads sections declare.
+  using PlyCounts = std::vector<unsigned int>;
 
   struct MaterialParameters
   {
-    std::array<LayerMaterial, 2> layer = {{{200.0, 0.28}, {112.0, 0.32}}};
+    /// The material of each layer slot (Materials/Layer k; layers k >= 3
+    /// default to layer 2's material).
+    std::vector<LayerMaterial> layer = {{200.0, 0.28}, {112.0, 0.32}};
     /**
      * side[l][s]: the material of layer l on the subdomain s (0: Omega-,
      * 1: Omega+) where Materials/Layer k/Omega- or Omega+ gives a law entry:
      * the layer's material with those entries; empty where the side gives
      * none (then the side has the layer's material, the very same object).
      */
-    std::array<std::array<std::optional<LayerMaterial>, 2>, 2> side;
-    /// 2: the two-layer structure; 1: layer 2 absent (a single body).
+    std::vector<std::array<std::optional<LayerMaterial>, 2>> side{2};
+    /// 2: the two-layer structure; 1: layer 2 absent (a single body);
+    /// N > 2: N layers stacked through the thickness, each glued along
+    /// Sigma to the layer below it.
     unsigned int n_layers = 2;
+    /// The most layers a scene may stack.
+    static constexpr unsigned int max_layers = 64;
     /**
      * ply_heights[l]: Materials/Layer k/Ply heights, the heights
      * y_1 < ... < y_{n-1} at which the material of layer l changes. Ply j
@@ -45,14 +54,15 @@ namespace bilayer
      * plane (y_0 = -inf, y_n = +inf), in either region it crosses. Empty:
      * one ply, the whole layer.
      */
-    std::array<std::vector<double>, 2> ply_heights;
+    std::vector<std::vector<double>> ply_heights{2};
     /**
      * ply[l][s][j]: the material of ply j of layer l on the subdomain s
      * where Materials/Layer k/Ply j+1 gives a law entry: the side's
      * material with those entries; empty where the ply gives none (then
      * the ply has the side's material, the very same object).
      */
-    std::array<std::array<std::vector<std::optional<LayerMaterial>>, 2>, 2> ply;
+    std::vector<std::array<std::vector<std::optional<LayerMaterial>>, 2>> ply{
+      2};
 
     /// The material of the layer @p l on the subdomain @p s outside its
     /// plies' entries (the layer's with the side's entries).
@@ -92,14 +102,26 @@ namespace bilayer
     bool
     has_layer(const Layer l) const
     {
-      return l == Layer::first || n_layers == 2;
+      return l == Layer::first || static_cast<unsigned int>(l) < n_layers;
     }
 
-    /// Declare the entries, with the subsections Ply 1 ... Ply n of
-    /// @p n_plies plies in each layer.
+    /// The layer slots (Layer 1, Layer 2, ... Layer max(2, N)): a scene
+    /// with one layer keeps the slot of layer 2 (has_layer() false).
+    std::vector<Layer>
+    layers() const
+    {
+      std::vector<Layer> all;
+      for (unsigned int l = 0; l < layer.size(); ++l)
+        all.push_back(static_cast<Layer>(l));
+      return all;
+    }
+
+    /// Declare the entries, with the subsections Layer 1 ... Layer n
+    /// (n = n_plies.size() >= 2) and in layer l the subsections Ply 1 ...
+    /// Ply n_plies[l].
     static void
     declare_parameters(dealii::ParameterHandler &prm,
-                       const PlyCounts          &n_plies = {{1, 1}});
+                       const PlyCounts          &n_plies = {1, 1});
 
     /// The number of plies that the text @p heights of a Ply heights entry
     /// states (one more than its items; 1 where it is empty or broken: the

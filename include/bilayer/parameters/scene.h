@@ -45,7 +45,7 @@ namespace bilayer
     static void
     declare_parameters(dealii::ParameterHandler &prm,
                        const BoundaryParts      &parts   = BoundaryParts(),
-                       const PlyCounts          &n_plies = {{1, 1}});
+                       const PlyCounts          &n_plies = {1, 1});
     void
     parse_parameters(dealii::ParameterHandler &prm,
                      const BoundaryParts      &parts = BoundaryParts());

@@ -16,13 +16,15 @@
 namespace bilayer
 {
   /**
-   * How the four subproblems of the decomposition (u-, u+, v-, v+, in the
+   * How the subproblems of the decomposition (u-, u+, v-, v+, ..., in the
    * order of Layout::index()) are distributed over the processes of an
    * MPI job.
    *
    * Subproblem s belongs to process s mod R for R <= 4 processes (R = 4: one
-   * each; R = 2: u- and v- on process 0, u+ and v+ on process 1). For
-   * R > 4, subproblem s belongs to the group of processes r with
+   * each of two layers; R = 2: u- and v- on process 0, u+ and v+ on
+   * process 1; more layers go round the processes the same way). For
+   * R > 4 (two layers: scene_checks refuses more layers there), subproblem
+   * s belongs to the group of processes r with
    * r mod 4 = s, which share its matrix and its factorisation (a METIS
    * partition of the cells, Trilinos distributed matrices and a parallel
    * direct solver: see ElasticSubproblem); the first process of the group
@@ -44,6 +46,10 @@ namespace bilayer
   class Distribution
   {
   public:
+    /// The most groups of processes: the four subproblems of two layers. A
+    /// job of more processes shares each of them among a group.
+    static constexpr unsigned int max_groups = 4;
+
     /// One process owns everything; no MPI calls.
     Distribution();
 
@@ -94,7 +100,7 @@ namespace bilayer
     unsigned int
     root(const unsigned int s) const
     {
-      return n_processes_ <= 4 ? s % n_processes_ : s;
+      return n_processes_ <= max_groups ? s % n_processes_ : s;
     }
 
     /// Number of processes that share subproblem @p s.
