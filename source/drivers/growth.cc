@@ -103,9 +103,7 @@ namespace bilayer
     // once for all steps.
     Timer       total;
     CycleRecord first;
-    first.cycle = scene.mesh.n_cycles - 1;
-    build_meshes(first);
-    first.cycle = 0;
+    build_meshes(first, scene.mesh.n_cycles - 1);
     check_memory(first);
     set_up_subproblems();
     count_subproblems(first);
@@ -345,19 +343,7 @@ namespace bilayer
       previous = coupling.space().functions(mu);
     record.cycle = step;
     if (step > 0)
-      {
-        const CycleRecord &front   = cycle_records.front();
-        record.minus               = front.minus;
-        record.plus                = front.plus;
-        record.P                   = front.P;
-        record.M                   = front.M;
-        record.memory_estimate_mib = front.memory_estimate_mib;
-        for (const auto &sub : subproblems)
-          if (sub)
-            record.dofs += sub->n_dofs();
-        tips_found = false;
-        update_tips(record);
-      }
+      reuse_meshes(record);
     const bool accepted =
       solve_state(record, warm ? &previous : nullptr, step > 0 ? timer : total)
         .accepted();
@@ -536,7 +522,7 @@ namespace bilayer
           tip.stopped = stop;
       }
     if (moved)
-      domain.set_crack(crack);
+      set_crack(crack);
     return moved;
   }
 

@@ -211,7 +211,7 @@ namespace bilayer
     const MultiplierSpace::Functions previous =
       warm ? coupling.space().functions(mu) : MultiplierSpace::Functions();
 
-    build_meshes(record);
+    build_meshes(record, cycle);
     check_memory(record);
     set_up_subproblems();
     count_subproblems(record);
@@ -254,9 +254,8 @@ namespace bilayer
         record.cycle = k;
         if (k == 0)
           {
-            build_meshes(record);
-            domain.set_crack(cracks[0]);
-            tips_found = false;
+            build_meshes(record, 0);
+            set_crack(cracks[0]);
             update_tips(record);
             check_memory(record);
             set_up_subproblems();
@@ -266,18 +265,8 @@ namespace bilayer
           {
             // The meshes and subproblems of state 0; the crack alone
             // changes, and with it the tips.
-            domain.set_crack(cracks[k]);
-            tips_found   = false;
-            record.minus = cycle_records.front().minus;
-            record.plus  = cycle_records.front().plus;
-            record.P     = cycle_records.front().P;
-            record.M     = cycle_records.front().M;
-            record.memory_estimate_mib =
-              cycle_records.front().memory_estimate_mib;
-            update_tips(record);
-            for (const auto &sub : subproblems)
-              if (sub)
-                record.dofs += sub->n_dofs();
+            set_crack(cracks[k]);
+            reuse_meshes(record);
           }
         if (!solve_state(record, nullptr, total).accepted())
           return false;
@@ -297,9 +286,8 @@ namespace bilayer
 
 
   void
-  Study::build_meshes(CycleRecord &record)
+  Study::build_meshes(CycleRecord &record, const unsigned int cycle)
   {
-    const unsigned int cycle = record.cycle;
     for (auto &sub : subproblems)
       sub.reset();
     if (cycle > 0 && scene.mesh.refinement == Refinement::adaptive)
@@ -325,6 +313,30 @@ namespace bilayer
     record.plus  = domain.statistics(Subdomain::plus);
     record.P     = domain.n_sigma_vertices();
     record.M     = domain.n_outer_vertices();
+    update_tips(record);
+  }
+
+
+  void
+  Study::set_crack(const CrackSet &crack)
+  {
+    domain.set_crack(crack);
+    tips_found = false;
+  }
+
+
+  void
+  Study::reuse_meshes(CycleRecord &record)
+  {
+    const CycleRecord &front   = cycle_records.front();
+    record.minus               = front.minus;
+    record.plus                = front.plus;
+    record.P                   = front.P;
+    record.M                   = front.M;
+    record.memory_estimate_mib = front.memory_estimate_mib;
+    for (const auto &sub : subproblems)
+      if (sub)
+        record.dofs += sub->n_dofs();
     update_tips(record);
   }
 

@@ -148,10 +148,7 @@ namespace bilayer
   normal_opening(const Interface &interface, const Solutions &w)
   {
     Vector<double> tm, tp;
-    interface.coupling().trace_at_nodes(Layout::u_minus,
-                                        w[Layout::u_minus],
-                                        tm);
-    interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
+    interface.coupling().crack_face_traces(w, tm, tp);
     std::vector<double> result(interface.space().n_nodes());
     for (unsigned int a = 0; a < interface.space().n_nodes(); ++a)
       {
@@ -292,10 +289,7 @@ namespace bilayer
     const MultiplierSpace &space  = interface.space();
     const unsigned int     degree = space.degree();
     Vector<double>         tm, tp;
-    interface.coupling().trace_at_nodes(Layout::u_minus,
-                                        w[Layout::u_minus],
-                                        tm);
-    interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
+    interface.coupling().crack_face_traces(w, tm, tp);
     // Normal jump and contact multiplier at node a (the traces' components
     // are in the node's frame (tangent, normal)); at a crack corner the
     // pair of the constraint of the segment's own piece: component

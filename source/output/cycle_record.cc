@@ -173,6 +173,8 @@ namespace bilayer
           .in("energy_of"),
         record_field("layer_2", [](const R &r) { return r.layer_energy[1]; })
           .in("energy_of"),
+        record_field("layers", [](const R &r) { return r.layer_energy; })
+          .in("energy_of"),
         record_field("constraint_violation",
                      [](const R &r) { return r.report.constraint_violation; })
           .csv(18, "constraint_violation").column("violation", 2, true),

@@ -287,7 +287,8 @@ namespace bilayer
         sub.dof_handler().get_triangulation().n_active_cells();
       output.layers[s].reinit(n_cells);
       output.subdomains[s].reinit(n_cells);
-      output.layers[s]     = sub.layer() == Layer::first ? 1.f : 2.f;
+      output.layers[s] =
+        static_cast<float>(static_cast<unsigned int>(sub.layer()) + 1);
       output.subdomains[s] = sub.subdomain() == Subdomain::minus ? -1.f : 1.f;
       data_out.add_data_vector(output.layers[s],
                                "layer",

@@ -270,12 +270,7 @@ namespace bilayer
           const MultiplierSpace &space = interface.space();
           const InterfaceCurve  &curve = interface.curve();
           Vector<double>         tm, tp;
-          interface.coupling().trace_at_nodes(Layout::u_minus,
-                                              w[Layout::u_minus],
-                                              tm);
-          interface.coupling().trace_at_nodes(Layout::u_plus,
-                                              w[Layout::u_plus],
-                                              tp);
+          interface.coupling().crack_face_traces(w, tm, tp);
           const auto         &bp = space.breakpoints(Layout::across_sigma);
           const QGauss<1>     gauss(space.degree() + 2);
           std::vector<double> shape;
@@ -338,12 +333,7 @@ namespace bilayer
       const InterfaceCurve  &curve = interface.curve();
       constexpr unsigned int mu_1  = Layout::across_sigma;
       Vector<double>         tm, tp;
-      interface.coupling().trace_at_nodes(Layout::u_minus,
-                                          w[Layout::u_minus],
-                                          tm);
-      interface.coupling().trace_at_nodes(Layout::u_plus,
-                                          w[Layout::u_plus],
-                                          tp);
+      interface.coupling().crack_face_traces(w, tm, tp);
       const auto mu_t = [&](const unsigned int a) {
         return space.friction_bound(a) > 0 ?
                  mu.block(mu_1)(Layout::entry(a, Layout::tangential)) :

@@ -27,10 +27,7 @@ namespace bilayer
     constexpr unsigned int mu_1  = Layout::across_sigma;
     const unsigned int     n_t = Layout::tangential, n_n = Layout::normal;
     Vector<double>         tm, tp;
-    interface.coupling().trace_at_nodes(Layout::u_minus,
-                                        w[Layout::u_minus],
-                                        tm);
-    interface.coupling().trace_at_nodes(Layout::u_plus, w[Layout::u_plus], tp);
+    interface.coupling().crack_face_traces(w, tm, tp);
     // The jump of layer 1 at node a in its frame: 0 on the glued part (the
     // tip), the opening of a crack node 0 where the faces touch (mu_c > 0,
     // complementarity) or penetrate.

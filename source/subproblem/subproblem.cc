@@ -297,7 +297,7 @@ namespace bilayer
         // divergence of the outer solver.
         const std::string layer_entry =
           "Materials/Layer " +
-          std::string(layer() == Layer::first ? "1" : "2") + "/" +
+          std::to_string(static_cast<unsigned int>(layer()) + 1) + "/" +
           moduli_entries_;
         // Row sums, not only entries: the factorisation adds them up.
         AssertThrow(std::isfinite(system_matrix.linfty_norm()),

@@ -299,9 +299,19 @@ namespace bilayer
                           const bool         interface_csv);
     // The steps of run_cycle(), in this order.
 
-    /// The meshes of the cycle (created or refined) and their sizes.
+    /// The meshes of mesh cycle @p cycle (created, or refined from the
+    /// last cycle's), their sizes in @p record, and the tips.
     void
-    build_meshes(CycleRecord &record);
+    build_meshes(CycleRecord &record, const unsigned int cycle);
+    /// A state on the meshes and subproblems of the first record: their
+    /// sizes, memory estimate and dofs in @p record, and the tips (of the
+    /// present crack) checked on those meshes.
+    void
+    reuse_meshes(CycleRecord &record);
+    /// The crack of the geometry on the present meshes; the tips are found
+    /// again (the one place where the crack changes).
+    void
+    set_crack(const CrackSet &crack);
     /// Refuses a cycle that would not fit into the memory (the estimate
     /// goes into @p record).
     void

@@ -25,7 +25,7 @@ namespace bilayer
    * solution and the CSV writer are in interface_diagnostics.h.
    *
    * <h3>Discrete problem and update</h3>
-   * The multiplier terms of the four subproblems (docs/problem.md §4, step 2)
+   * The multiplier terms of the subproblems (docs/problem.md §4, step 2)
    * are u-: -C^T (mu_1 + mu-),  u+: C^T (mu_1 - mu+),  v-: C^T mu-, v+: C^T
    * mu+. The jumps are g_1 = D^{-1} (C u- - C u+), g- = D^{-1} (C u- - C v-),
    * g+ = D^{-1} (C u+ - C v+) ("weighted": the gradient of the Lagrangian in
@@ -84,7 +84,7 @@ namespace bilayer
       return contact;
     }
 
-    /// The multiplier terms of the four subproblems' loads.
+    /// The multiplier terms of the subproblems' loads.
     void
     apply(const dealii::BlockVector<double> &multipliers,
           Solutions                         &loads) const
@@ -107,7 +107,7 @@ namespace bilayer
 
     /**
      * The Gram matrix G = B B^T of the signed coupling B (the map from the
-     * four subproblems' dofs to the multiplier space whose transpose is
+     * subproblems' dofs to the multiplier space whose transpose is
      * -apply(); B w = D g for weighted jumps), restricted to the components
      * i with mask(i) != 0: TraceCoupling::gram(). Scales the FETI-type
      * preconditioners of the dual problem.

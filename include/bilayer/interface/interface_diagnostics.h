@@ -58,7 +58,7 @@ namespace bilayer
     double relative_constraint_violation = 0;
     /// Largest (u- - u+).nu on gamma_c at the Gauss points and nodes [length].
     double max_penetration = 0;
-    /// Largest |trace| of the four subproblems on Sigma [length].
+    /// Largest |trace| of the subproblems on Sigma [length].
     double displacement_scale = 0;
     /// Largest violation of the discrete constraints (jumps that must vanish,
     /// positive penetration at crack nodes) divided by displacement_scale.

@@ -101,6 +101,18 @@ namespace bilayer
                 const bool                   weighted,
                 dealii::BlockVector<double> &result) const;
 
+    /// The traces of layer 1's two crack faces, u- into @p minus and u+
+    /// into @p plus, at the nodes of mu_1 (trace_at_nodes()): the one place
+    /// that reads them.
+    void
+    crack_face_traces(const Solutions        &w,
+                      dealii::Vector<double> &minus,
+                      dealii::Vector<double> &plus) const
+    {
+      trace_at_nodes(Layout::u_minus, w[Layout::u_minus], minus);
+      trace_at_nodes(Layout::u_plus, w[Layout::u_plus], plus);
+    }
+
     /// The trace of subproblem @p s at the nodes of mu_1: entries
     /// Layout::entry(a, c).
     void

@@ -46,8 +46,8 @@ namespace bilayer
     DualSpectrum spectrum;
     double       energy = 0;
     /// The energy of each layer slot (both subdomains; its strain energy
-    /// minus the work of its own loads): energy = their sum. The records
-    /// report layers 1 and 2 (energy_of).
+    /// minus the work of its own loads): energy = their sum (energy_of:
+    /// layer_1, layer_2, and layers, all of them).
     std::vector<double> layer_energy = {0, 0};
     /// The global a-posteriori error estimate in the energy norm
     /// (estimate_error(), estimator.h), [energy^1/2]: compare with
