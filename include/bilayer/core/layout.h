@@ -37,7 +37,7 @@ namespace bilayer
   };
 
   /// The first multiplier blocks (docs/problem.md §3); a stack of N layers
-  /// has the blocks 0 ... 2N - 2 (Layout::gluing_block()).
+  /// has the blocks 0 ... 2N - 2 (Layout::coupled()).
   enum class MultiplierBlock
   {
     /// mu_1: layer 1 across Sigma (u- against u+), contact on the crack.
@@ -78,13 +78,6 @@ namespace bilayer
       return 2 * n_slots(layers) - 1;
     }
 
-    /// The layer k (1-based) as a Layer.
-    constexpr Layer
-    layer_number(const unsigned int k)
-    {
-      return static_cast<Layer>(k - 1);
-    }
-
     /// Position of subproblem (layer, subdomain) in every per-subproblem
     /// array: u- = 0, u+ = 1, v- = 2, v+ = 3, layer k on Omega-: 2(k - 1).
     constexpr unsigned int
@@ -116,15 +109,61 @@ namespace bilayer
     constexpr unsigned int u_minus = index(Layer::first, Subdomain::minus);
     constexpr unsigned int u_plus  = index(Layer::first, Subdomain::plus);
 
-    /// The indices 0 ... n - 1, for range-based loops over the subproblems
-    /// or blocks of a per-subproblem or per-block array of size n.
-    inline std::vector<unsigned int>
+    /// The indices 0 ... n - 1 of a per-subproblem or per-block array of
+    /// size n, for range-based loops (nothing allocated: the loops run in
+    /// the outer solvers' iterations).
+    class Indices
+    {
+    public:
+      class iterator
+      {
+      public:
+        explicit constexpr iterator(const unsigned int i)
+          : i(i)
+        {}
+        constexpr unsigned int
+        operator*() const
+        {
+          return i;
+        }
+        constexpr iterator &
+        operator++()
+        {
+          ++i;
+          return *this;
+        }
+        constexpr bool
+        operator!=(const iterator &other) const
+        {
+          return i != other.i;
+        }
+
+      private:
+        unsigned int i;
+      };
+
+      explicit constexpr Indices(const std::size_t n)
+        : n(static_cast<unsigned int>(n))
+      {}
+      constexpr iterator
+      begin() const
+      {
+        return iterator(0);
+      }
+      constexpr iterator
+      end() const
+      {
+        return iterator(n);
+      }
+
+    private:
+      unsigned int n;
+    };
+
+    constexpr Indices
     indices(const std::size_t n)
     {
-      std::vector<unsigned int> all(n);
-      for (unsigned int i = 0; i < n; ++i)
-        all[i] = i;
-      return all;
+      return Indices(n);
     }
 
     /// The letter of layer @p layer in names: u (layer 1), v (layer 2),
@@ -162,22 +201,6 @@ namespace bilayer
     constexpr unsigned int across_sigma = index(MultiplierBlock::across_sigma);
     constexpr unsigned int glue_minus   = index(MultiplierBlock::glue_minus);
     constexpr unsigned int glue_plus    = index(MultiplierBlock::glue_plus);
-
-    /// The block that glues the layer @p layer (layer 2 or above) to the
-    /// layer below it on @p subdomain.
-    constexpr unsigned int
-    gluing_block(const Layer layer, const Subdomain subdomain)
-    {
-      return 1 + n_subdomains * (static_cast<unsigned int>(layer) - 1) +
-             static_cast<unsigned int>(subdomain);
-    }
-
-    /// The block that glues layer 2 to layer 1 on @p subdomain.
-    constexpr unsigned int
-    gluing_block(const Subdomain subdomain)
-    {
-      return gluing_block(Layer::second, subdomain);
-    }
 
     /**
      * The two subproblems that block @p b couples, (first, second): the jump
