@@ -79,12 +79,11 @@ namespace
   stiffness_times(const Study &study, const unsigned int s)
   {
     const double E[2] = {200., 112.}, nu[2] = {0.28, 0.32};
-    const double mu     = E[s / 2] / (2. * (1. + nu[s / 2]));
-    const double lambda = 2. * nu[s / 2] * mu / (1. - 2. * nu[s / 2]);
-    const ElasticSubproblem &sub =
-      study.subproblem(Layout::layer(s), Layout::subdomain(s));
-    const DoFHandler<2>   &dofs = sub.dof_handler();
-    DynamicSparsityPattern dsp(dofs.n_dofs());
+    const double mu               = E[s / 2] / (2. * (1. + nu[s / 2]));
+    const double lambda           = 2. * nu[s / 2] * mu / (1. - 2. * nu[s / 2]);
+    const ElasticSubproblem &sub  = study.subproblem(s);
+    const DoFHandler<2>     &dofs = sub.dof_handler();
+    DynamicSparsityPattern   dsp(dofs.n_dofs());
     DoFTools::make_sparsity_pattern(dofs, dsp);
     SparsityPattern pattern;
     pattern.copy_from(dsp);
@@ -114,9 +113,8 @@ namespace
   types::global_dof_index
   sigma_y_dof(const Study &study, const unsigned int s, const double x)
   {
-    const ElasticSubproblem &sub =
-      study.subproblem(Layout::layer(s), Layout::subdomain(s));
-    std::vector<Point<2>> points(sub.n_dofs());
+    const ElasticSubproblem &sub = study.subproblem(s);
+    std::vector<Point<2>>    points(sub.n_dofs());
     DoFTools::map_dofs_to_support_points(sub.mapping(),
                                          sub.dof_handler(),
                                          points);
@@ -227,7 +225,7 @@ main()
                 std::cout);
   doubled.run_cycle(0);
   double difference = 0, size = 0;
-  for (const unsigned int s : Layout::indices(Layout::n_subproblems(2)))
+  for (const unsigned int s : Layout::indices(Topology().n_subproblems()))
     {
       Vector<double> d = doubled.solutions()[s];
       d.add(-2., contact.solutions()[s]);

@@ -535,9 +535,8 @@ compare(const unsigned int n_layers)
   double max_difference = 0, max_displacement = 0;
   for (unsigned int s = 0; s < 2 * n_layers; ++s)
     {
-      const auto &sub = study.subproblem(bilayer::Layout::layer(s),
-                                         bilayer::Layout::subdomain(s));
-      const auto &fe  = sub.fe();
+      const auto                          &sub = study.subproblem(s);
+      const auto                          &fe  = sub.fe();
       std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
       for (const auto &cell : sub.dof_handler().active_cell_iterators())
         {

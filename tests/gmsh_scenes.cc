@@ -242,11 +242,10 @@ namespace
   affine_error(const Study &study, const Tensor<2, 2> &E)
   {
     double error = 0, size = 0;
-    for (const unsigned int s : Layout::indices(Layout::n_subproblems(2)))
+    for (const unsigned int s : Layout::indices(Topology().n_subproblems()))
       {
-        const auto &sub =
-          study.subproblem(Layout::layer(s), Layout::subdomain(s));
-        const auto           &w = study.solutions()[s];
+        const auto           &sub = study.subproblem(s);
+        const auto           &w   = study.solutions()[s];
         std::vector<Point<2>> support(sub.n_dofs());
         DoFTools::map_dofs_to_support_points(sub.mapping(),
                                              sub.dof_handler(),
@@ -315,7 +314,7 @@ namespace
         // Mark the cells along Sigma: of Omega- only after the matching
         // cycle, of both sides after that (the cells along Sigma halved,
         // the traces still non-matching).
-        std::array<Vector<float>, Layout::n_subdomains> marks;
+        std::vector<Vector<float>> marks(2);
         for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
           {
             const auto &tria = study.subproblem(Layer::first, sd)

@@ -414,7 +414,8 @@ namespace
     const auto mu                   = [&](const std::vector<double> &m,
                         const std::vector<double> &p,
                         const MultiplierMesh       rule) {
-      return MultiplierSpace::choose({{m, p}}, {2, 1}, rule, tol);
+      return MultiplierSpace::choose(
+        Topology(), {InterfaceTraces{{m, p}}}, {2, 1}, rule, tol);
     };
     const auto fine = mu(half, third, MultiplierMesh::finer_trace);
     std::cout << "  2:3 finer: " << str(fine[0].breakpoints) << "\n";
@@ -469,7 +470,12 @@ namespace
     MultiplierSpace           space;
     const std::vector<double> minus = {0, 0.5, 1, 1 + r2 / 2, 1 + r2},
                               plus  = {0, 1, 1 + r2};
-    space.reinit(curve, contact, {{minus, plus}}, {1, 1}, {true, false, false});
+    space.reinit(Topology(),
+                 {curve},
+                 contact,
+                 {InterfaceTraces{{minus, plus}}},
+                 {1, 1},
+                 {true, false, false});
     std::cout << "  nodes per block: " << space.n_nodes(0) << " "
               << space.n_nodes(1) << " " << space.n_nodes(2) << "\n";
     check("mu_1 on the finer (Omega-) trace: 5 nodes; no layer 2: 0, 0",
@@ -535,9 +541,10 @@ namespace
     const InterfaceCurve line =
       InterfaceCurve::segment(Point<2>(0, 0), Point<2>(1, 0));
     MultiplierSpace p2;
-    p2.reinit(line,
+    p2.reinit(Topology(),
+              {line},
               contact,
-              {{{0, 0.5, 1}, {0, 1. / 3, 2. / 3, 1}}},
+              {InterfaceTraces{{{0, 0.5, 1}, {0, 1. / 3, 2. / 3, 1}}}},
               {2, 1},
               {true, true, true});
     std::cout << "  nodes per block: " << p2.n_nodes(0) << " " << p2.n_nodes(1)
@@ -561,9 +568,10 @@ namespace
     InterfaceCurve clamped = line;
     clamped.set_clamped_ends({{{{true, true}}, {{true, true}}}});
     MultiplierSpace ends;
-    ends.reinit(clamped,
+    ends.reinit(Topology(),
+                {clamped},
                 contact,
-                {{{0, 0.5, 1}, {0, 1. / 3, 2. / 3, 1}}},
+                {InterfaceTraces{{{0, 0.5, 1}, {0, 1. / 3, 2. / 3, 1}}}},
                 {1, 1},
                 {true, false, false});
     std::cout << "  rows " << ends.row(0, 0) << " " << ends.row(1, 0) << " "
@@ -577,9 +585,10 @@ namespace
     check("ends on Gamma_D carry no multiplier: 2 nodes x 2 free",
           ends.n_free() == 4 && !ends.free(Layout::entry(0, 0)));
     MultiplierSpace matching;
-    matching.reinit(clamped,
+    matching.reinit(Topology(),
+                    {clamped},
                     contact,
-                    {{{0, 0.5, 1}, {0, 0.5, 1}}},
+                    {InterfaceTraces{{{0, 0.5, 1}, {0, 0.5, 1}}}},
                     {1, 1},
                     {true, false, false});
     check("matching traces: no modification (row 0 = 0, D_0 = 1/4)",
@@ -714,7 +723,9 @@ namespace
     contact.mesh     = rule;
     contact.coupling = kind_of_coupling;
     Interface interface(contact);
-    interface.setup({{sub[0].get(), sub[1].get(), nullptr, nullptr}}, curve);
+    interface.setup(Topology(),
+                    {{sub[0].get(), sub[1].get(), nullptr, nullptr}},
+                    {curve});
     const MultiplierSpace &space    = interface.space();
     const TraceCoupling   &coupling = interface.coupling();
 
@@ -744,7 +755,7 @@ namespace
         std::vector<int>           component;
         Vector<double>             linear;
         sigma_dofs(sp, x, component, linear);
-        Solutions w(Layout::n_subproblems(2));
+        Solutions w(Topology().n_subproblems());
         w[Layout::u_minus].reinit(sub[0]->n_dofs());
         w[Layout::u_plus].reinit(sub[1]->n_dofs());
         BlockVector<double> column;
@@ -809,7 +820,7 @@ namespace
             trace_error =
               std::max(trace_error,
                        std::abs(at_gauss(2 * q + c) - (c + 1) * gx[q]));
-        check(std::string("trace of ") + Layout::name(s) +
+        check(std::string("trace of ") + Topology().name(s) +
                 " of (x, 2x) at the nodes and Gauss points is (x, 2x)",
               trace_error < 1e-14);
       }

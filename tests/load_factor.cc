@@ -81,7 +81,7 @@ namespace
   state_difference(const Study &a, const Study &b, const double scale)
   {
     double largest = 0;
-    for (const unsigned int s : Layout::indices(Layout::n_subproblems(2)))
+    for (const unsigned int s : Layout::indices(Topology().n_subproblems()))
       if (b.solutions()[s].size() > 0)
         {
           Vector<double> scaled = b.solutions()[s];

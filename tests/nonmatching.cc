@@ -130,10 +130,10 @@ namespace
 
   // Indicators that mark the cells touching Sigma whose centres lie in
   // (a, b) on Omega- and in (c, d) on Omega+.
-  std::array<Vector<float>, 2>
+  std::vector<Vector<float>>
   along_sigma(const Study &study, const std::array<double, 4> &x)
   {
-    std::array<Vector<float>, 2> marks;
+    std::vector<Vector<float>> marks(2);
     for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
       {
         const unsigned int s = static_cast<unsigned int>(sd);

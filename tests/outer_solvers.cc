@@ -142,15 +142,14 @@ main()
               interface.space().restrict_to_free(mu);
               Solutions loads, w;
               interface.apply(mu, loads);
-              Subproblems subproblems(Layout::n_subproblems(2));
+              Subproblems subproblems(Topology().n_subproblems());
               for (const unsigned int s :
-                   Layout::indices(Layout::n_subproblems(2)))
-                subproblems[s] =
-                  &study->subproblem(Layout::layer(s), Layout::subdomain(s));
+                   Layout::indices(Topology().n_subproblems()))
+                subproblems[s] = &study->subproblem(s);
               solve_homogeneous_subproblems(subproblems, interface, mu, w);
               double error = 0, norm = 0;
               for (const unsigned int s :
-                   Layout::indices(Layout::n_subproblems(2)))
+                   Layout::indices(Topology().n_subproblems()))
                 {
                   Vector<double> reaction;
                   InterfaceStiffness(*subproblems[s], true)

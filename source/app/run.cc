@@ -368,9 +368,10 @@ namespace bilayer
       unsigned int blas_threads = 1;
       try
         {
-          blas_threads =
-            fit_blas_threads(MultithreadInfo::n_threads(),
-                             Layout::n_subproblems(scene.materials.n_layers));
+          blas_threads = fit_blas_threads(MultithreadInfo::n_threads(),
+                                          Topology(scene.geometry.n_regions(),
+                                                   scene.materials.n_layers)
+                                            .n_subproblems());
         }
       catch (const ExceptionBase &e)
         {

@@ -24,7 +24,7 @@ namespace bilayer
       AssertThrow(new_lambda == 1 || subproblems[s] == nullptr ||
                     distribution.group_size(s) <= 1,
                   ExcMessage("Study::set_load_factor: subproblem " +
-                             Layout::name(s) +
+                             topology.name(s) +
                              " is shared by a group of processes (more than "
                              "four processes): the load factor stays 1; run "
                              "with at most four processes to scale the load"));

@@ -153,23 +153,23 @@ namespace bilayer
     if (!mesh.mesh_files.empty() || !scene.geometry.gmsh_file.empty() ||
         (cycle > 0 && mesh.refinement == Refinement::adaptive))
       return {{0., 0.}};
-    const auto           &g      = scene.geometry;
-    const double          factor = std::ldexp(1., cycle);
-    const double          width  = g.x_max - g.x_min;
-    std::array<double, 2> cells;
-    for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+    const auto  &g      = scene.geometry;
+    const double factor = std::ldexp(1., cycle);
+    const double width  = g.x_max - g.x_min;
+    // (The regions above Sigma together.)
+    std::array<double, 2> cells = {{0., 0.}};
+    for (unsigned int r = 0; r < g.n_regions(); ++r)
       {
-        const double n_x =
-          (s == Subdomain::plus && mesh.cells_along_sigma_plus > 0 ?
-             mesh.cells_along_sigma_plus :
-             mesh.cells_along_sigma) *
-          factor;
-        const double height = s == Subdomain::minus ? g.sigma_height - g.y_min :
-                                                      g.y_max - g.sigma_height;
+        const double n_x = (r > 0 && mesh.cells_along_sigma_plus > 0 ?
+                              mesh.cells_along_sigma_plus :
+                              mesh.cells_along_sigma) *
+                           factor;
+        const auto   y      = g.region_heights(r);
+        const double height = y[1] - y[0];
         const double n_uniform =
           structured_cells_across(mesh, n_x, height, width, cycle);
         // (The rows fitted to the plies, as Geometry builds them.)
-        const double y0 = s == Subdomain::minus ? g.y_min : g.sigma_height;
+        const double y0 = y[0];
         const auto   rows =
           ply_rows(scene.materials.all_ply_heights(),
                    y0,
@@ -180,7 +180,7 @@ namespace bilayer
                    cycle);
         const double n_y = rows.empty() ? n_uniform : rows.size() - 1.;
         // Triangles: two per quadrilateral.
-        cells[static_cast<unsigned int>(s)] =
+        cells[std::min(r, 1u)] +=
           n_x * n_y * (mesh.shape == ElementShape::triangle ? 2 : 1);
       }
     return cells;
@@ -212,7 +212,7 @@ namespace bilayer
         a.address_space = double(limit.rlim_cur);
         a.mapped        = self_status("VmSize");
         a.blas_buffers  = a.openblas ?
-                            std::min<double>(Layout::n_subproblems(2),
+                            std::min<double>(Topology().n_subproblems(),
                                             MultithreadInfo::n_threads()) *
                              openblas_buffer :
                             0.;

@@ -34,17 +34,18 @@ namespace bilayer
     double
     domain_diameter(const Geometry &domain)
     {
-      const auto minus =
-        GridTools::compute_bounding_box(domain.triangulation(Subdomain::minus));
-      const auto plus =
-        GridTools::compute_bounding_box(domain.triangulation(Subdomain::plus));
       Point<2> lower, upper;
-      for (unsigned int d = 0; d < 2; ++d)
+      for (const unsigned int r : Layout::indices(domain.n_regions()))
         {
-          lower[d] = std::min(minus.get_boundary_points().first[d],
-                              plus.get_boundary_points().first[d]);
-          upper[d] = std::max(minus.get_boundary_points().second[d],
-                              plus.get_boundary_points().second[d]);
+          const auto box =
+            GridTools::compute_bounding_box(domain.triangulation(r));
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              const double low  = box.get_boundary_points().first[d],
+                           high = box.get_boundary_points().second[d];
+              lower[d]          = r == 0 ? low : std::min(lower[d], low);
+              upper[d]          = r == 0 ? high : std::max(upper[d], high);
+            }
         }
       return lower.distance(upper);
     }
@@ -100,13 +101,14 @@ namespace bilayer
     : scene(scene)
     , out(out)
     , distribution(distribution)
-    , volume_loads(Layout::n_subproblems(scene.materials.n_layers))
+    , topology(scene.geometry.n_regions(), scene.materials.n_layers)
+    , volume_loads(topology.n_subproblems())
     , pcout(out,
             scene.output.terminal == TerminalOutput::full &&
               distribution.is_root())
     , rout(out, distribution.is_root())
     , domain(scene.geometry, scene.mesh, scene.materials.all_ply_heights())
-    , subproblems(Layout::n_subproblems(scene.materials.n_layers))
+    , subproblems(topology.n_subproblems())
     , coupling(scene.contact)
   {}
 
@@ -131,6 +133,14 @@ namespace bilayer
       throw CollectiveError(
         "Materials/Number of layers = " +
         std::to_string(scene.materials.n_layers) + " runs on at most " +
+        std::to_string(Distribution::max_groups) + " MPI processes, got " +
+        std::to_string(distribution.n_processes()));
+    // So do more regions than two (Geometry/Interfaces above Sigma).
+    if (topology.n_regions() > Layout::n_subdomains &&
+        distribution.n_processes() > Distribution::max_groups)
+      throw CollectiveError(
+        "Geometry/Interfaces above Sigma: a scene of " +
+        std::to_string(topology.n_regions()) + " regions runs on at most " +
         std::to_string(Distribution::max_groups) + " MPI processes, got " +
         std::to_string(distribution.n_processes()));
     const IterationClock clock;
@@ -175,23 +185,24 @@ namespace bilayer
 
 
   void
-  Study::set_indicators(
-    const std::array<Vector<float>, Layout::n_subdomains> &new_indicators)
+  Study::set_indicators(const std::vector<Vector<float>> &new_indicators)
   {
-    std::array<Vector<double>, Layout::n_subdomains> converted;
-    for (unsigned int k = 0; k < Layout::n_subdomains; ++k)
+    std::vector<Vector<double>> converted(new_indicators.size());
+    for (const unsigned int k : Layout::indices(new_indicators.size()))
       converted[k] = new_indicators[k];
     set_indicators(converted);
   }
 
 
   void
-  Study::set_indicators(
-    const std::array<Vector<double>, Layout::n_subdomains> &new_indicators)
+  Study::set_indicators(const std::vector<Vector<double>> &new_indicators)
   {
-    for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
-      AssertThrow(new_indicators[static_cast<unsigned int>(s)].size() ==
-                    domain.triangulation(s).n_active_cells(),
+    AssertThrow(new_indicators.size() == domain.n_regions(),
+                ExcMessage("Study::set_indicators: one indicator per active "
+                           "cell of each subdomain is needed"));
+    for (const unsigned int r : Layout::indices(domain.n_regions()))
+      AssertThrow(new_indicators[r].size() ==
+                    domain.triangulation(r).n_active_cells(),
                   ExcMessage("Study::set_indicators: one indicator per active "
                              "cell of each subdomain is needed"));
     indicators = new_indicators;
@@ -310,9 +321,18 @@ namespace bilayer
     else
       domain.create_meshes(cycle);
     record.minus = domain.statistics(Subdomain::minus);
-    record.plus  = domain.statistics(Subdomain::plus);
-    record.P     = domain.n_sigma_vertices();
-    record.M     = domain.n_outer_vertices();
+    // Above Sigma: every region there together.
+    record.plus = domain.statistics(Subdomain::plus);
+    for (unsigned int r = 2; r < domain.n_regions(); ++r)
+      {
+        const MeshStatistics more = domain.statistics(r);
+        record.plus.vertices += more.vertices;
+        record.plus.cells += more.cells;
+        record.plus.h_min = std::min(record.plus.h_min, more.h_min);
+        record.plus.h_max = std::max(record.plus.h_max, more.h_max);
+      }
+    record.P = domain.n_sigma_vertices();
+    record.M = domain.n_outer_vertices();
     update_tips(record);
   }
 
@@ -348,10 +368,25 @@ namespace bilayer
     // is computed or written.
     if (!tips_found && scene.fracture.energy_release_rate)
       {
-        tips       = crack_tips(domain.interface_curve(),
-                          {{&domain.triangulation(Subdomain::minus),
-                                  &domain.triangulation(Subdomain::plus)}},
-                          scene.fracture.support_radius);
+        // The tips of each interface in turn; the other interfaces are
+        // obstacles of its supports.
+        const std::vector<InterfaceCurve> &curves = domain.interface_curves();
+        tips.clear();
+        for (const unsigned int i : Layout::indices(curves.size()))
+          {
+            std::vector<InterfaceCurve> others;
+            for (const unsigned int j : Layout::indices(curves.size()))
+              if (j != i)
+                others.push_back(curves[j]);
+            const std::vector<CrackTip> on_i =
+              crack_tips(curves[i],
+                         {{&domain.triangulation(i),
+                           &domain.triangulation(i + 1)}},
+                         scene.fracture.support_radius,
+                         i,
+                         others);
+            tips.insert(tips.end(), on_i.begin(), on_i.end());
+          }
         tips_found = true;
       }
     if (!tips.empty())
@@ -383,13 +418,16 @@ namespace bilayer
                 scene.loads.traction_function(layer, part));
               traction[l].push_back(traction_owners[l].back().get());
             }
-          for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+          for (const unsigned int r : Layout::indices(topology.n_regions()))
             {
-              const unsigned int i = Layout::index(layer, sd);
+              const unsigned int i = topology.index(layer, r);
+              // The regions above Sigma take the material of Omega+.
+              const Subdomain side =
+                r == 0 ? Subdomain::minus : Subdomain::plus;
               // (The subproblem of the previous cycle, which referred to
               // it, is gone.)
               const std::vector<LayerMaterial> plies =
-                scene.materials.ply_materials(layer, sd);
+                scene.materials.ply_materials(layer, side);
               auto load =
                 scene.loads.volume_load(layer,
                                         plies,
@@ -401,12 +439,13 @@ namespace bilayer
               auto &sub = subproblems[i];
               sub       = std::make_unique<ElasticSubproblem>(
                 layer,
-                sd,
-                domain.triangulation(sd),
+                static_cast<Subdomain>(r),
+                domain.triangulation(r),
                 scene.mesh.degree(layer),
                 plies,
                 scene.materials.ply_heights[l],
-                distribution);
+                distribution,
+                topology.n_regions());
               ElasticSubproblem *const target = sub.get();
               setups.add([&, target, l, i]() {
                 target->setup(scene.geometry.clamped,
@@ -425,13 +464,16 @@ namespace bilayer
       try
         {
           for (const Layer layer : scene.materials.layers())
-            for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+            for (const unsigned int r : Layout::indices(topology.n_regions()))
               if (scene.materials.has_layer(layer) &&
-                  subproblems[Layout::index(layer, sd)])
-                check_temperature_change(*subproblems[Layout::index(layer, sd)],
-                                         scene.loads,
-                                         scene.materials.material(layer, sd),
-                                         domain_diameter(domain));
+                  subproblems[topology.index(layer, r)])
+                check_temperature_change(
+                  *subproblems[topology.index(layer, r)],
+                  scene.loads,
+                  scene.materials.material(layer,
+                                           r == 0 ? Subdomain::minus :
+                                                    Subdomain::plus),
+                  domain_diameter(domain));
         }
       catch (const ExceptionBase &e)
         {
@@ -476,7 +518,7 @@ namespace bilayer
     std::string problem;
     try
       {
-        coupling.setup(subproblem_views(), domain.interface_curve());
+        coupling.setup(topology, subproblem_views(), domain.interface_curves());
       }
     catch (const ExceptionBase &e)
       {
@@ -554,11 +596,11 @@ namespace bilayer
       share_values(subproblem_views(), [&](const unsigned int s) {
         return subproblems[s]->energy(w[s]);
       });
-    record.layer_energy.assign(Layout::n_slots(scene.materials.n_layers), 0.);
+    record.layer_energy.assign(topology.n_slots(), 0.);
     for (const unsigned int s : Layout::indices(subproblems.size()))
       {
         record.energy += energies[s];
-        record.layer_energy[static_cast<unsigned int>(Layout::layer(s))] +=
+        record.layer_energy[static_cast<unsigned int>(topology.layer(s))] +=
           energies[s];
       }
     record.report = bilayer::assess(coupling, w, mu);

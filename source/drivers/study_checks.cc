@@ -34,16 +34,18 @@ namespace bilayer
           continue;
         // On the meshes of the subproblems (the later states of a study on
         // one mesh), from their cell extents.
+        // (The two regions of the tip's interface.)
+        const unsigned int             i = tip.interface;
         const ElasticSubproblem *const minus =
-          subproblems[Layout::u_minus].get();
-        const ElasticSubproblem *const plus = subproblems[Layout::u_plus].get();
-        const TipCells                 cells =
+          subproblems[topology.index(Layer::first, i)].get();
+        const ElasticSubproblem *const plus =
+          subproblems[topology.index(Layer::first, i + 1)].get();
+        const TipCells cells =
           minus != nullptr && plus != nullptr ?
-                            support_cells(tip,
+            support_cells(tip,
                           {{&minus->cell_extents(), &plus->cell_extents()}}) :
-                            support_cells(tip,
-                          {{&domain.triangulation(Subdomain::minus),
-                                            &domain.triangulation(Subdomain::plus)}});
+            support_cells(
+              tip, {{&domain.triangulation(i), &domain.triangulation(i + 1)}});
         tip_cell_sizes[t] = cells.size;
         const double R    = tip.support_radius;
         if (support_holds(R, cells.size))

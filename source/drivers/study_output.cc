@@ -165,18 +165,29 @@ namespace bilayer
     const bool         csv = interface_csv && scene.output.write_interface;
     if (!csv && !interface_vtu)
       return;
-    const std::vector<InterfaceNode> nodes =
-      interface_nodes(coupling, w, mu, scene.solver.acceptance_tolerance);
-    if (csv)
-      write_atomically(
-        dir + "/interface-" + two_digits(cycle) + ".csv", [&](std::ostream &o) {
-          write_interface_csv(o,
-                              nodes,
-                              release_notes(cycle_records.back().release,
-                                            scene.geometry.gmsh_file.empty()));
-        });
-    if (interface_vtu)
-      write_interface_vtu(dir, cycle, nodes, outputs);
+    // One file of each kind per interface.
+    for (const unsigned int i : Layout::indices(topology.n_interfaces()))
+      {
+        const std::vector<InterfaceNode> nodes = interface_nodes(
+          coupling, w, mu, scene.solver.acceptance_tolerance, i);
+        std::vector<std::string> trace_names;
+        for (const unsigned int s : trace_subproblems(topology, i))
+          trace_names.push_back(topology.field_name(s));
+        if (csv)
+          write_atomically(dir + "/" + interface_stem(i) + "-" +
+                             two_digits(cycle) + ".csv",
+                           [&](std::ostream &o) {
+                             write_interface_csv(
+                               o,
+                               nodes,
+                               trace_names,
+                               release_notes(cycle_records.back().release,
+                                             scene.geometry.gmsh_file.empty(),
+                                             i));
+                           });
+        if (interface_vtu)
+          write_interface_vtu(dir, cycle, nodes, trace_names, outputs, i);
+      }
   }
 
 
@@ -324,20 +335,30 @@ namespace bilayer
          << std::endl;
     if (distribution.is_root())
       {
-        const std::vector<double> opening = normal_opening(coupling, w);
-        int                       a_max   = -1;
-        for (unsigned int a = 0; a < coupling.space().n_nodes(); ++a)
-          if (coupling.space().on_crack(a) &&
-              (a_max < 0 || opening[a] > opening[a_max]))
-            a_max = a;
+        // Over the cracks of all interfaces.
+        int          a_max   = -1;
+        unsigned int i_max   = 0;
+        double       largest = 0;
+        for (const unsigned int i : Layout::indices(coupling.n_interfaces()))
+          {
+            const std::vector<double> opening = normal_opening(coupling, w, i);
+            for (unsigned int a = 0; a < coupling.space().n_nodes(i); ++a)
+              if (coupling.space().on_crack(a, i) &&
+                  (a_max < 0 || opening[a] > largest))
+                a_max = a, i_max = i, largest = opening[a];
+          }
         if (a_max >= 0)
           {
             // The position: s = x on the rectangle, else s and the point.
-            const double       s_max = coupling.space().node_position(a_max);
+            const double s_max = coupling.space().node_position(a_max, i_max);
             std::ostringstream x;
             x << std::setprecision(6);
             if (scene.geometry.gmsh_file.empty())
-              x << "x = " << s_max;
+              {
+                x << "x = " << s_max;
+                if (i_max > 0)
+                  x << " on interface " << i_max + 1;
+              }
             else
               {
                 const Point<2> p = coupling.curve().point(s_max);
@@ -345,7 +366,7 @@ namespace bilayer
                   << ")";
               }
             rout << "cycle " << record.cycle << ": largest crack opening "
-                 << scaled(opening[a_max]) << " at " << x.str() << std::endl;
+                 << scaled(largest) << " at " << x.str() << std::endl;
           }
       }
   }

@@ -23,22 +23,34 @@ namespace bilayer
     : geometry(geometry)
     , mesh(mesh)
     , ply_heights(ply_heights)
+    , triangulations(geometry.gmsh_file.empty() ? geometry.n_regions() : 2)
+    , curves(triangulations.size() - 1)
   {
-    // The rectangle's Sigma: the horizontal segment, s = x, nu = (0, 1);
-    // its ends lie on Gamma_D where the left or right side is clamped (a
-    // side spans both subdomains, so an end is clamped on both or neither).
-    curve = InterfaceCurve::segment({geometry.x_min, geometry.sigma_height},
-                                    {geometry.x_max, geometry.sigma_height});
-    curve.set_crack(geometry.crack());
-    const std::array<bool, 2> ends = {
-      {geometry.clamped[static_cast<unsigned int>(Side::left)],
-       geometry.clamped[static_cast<unsigned int>(Side::right)]}};
-    curve.set_clamped_ends({{ends, ends}});
-    // An edge crack reaches a side that is not clamped (checked with the
-    // entries' names when the parameters are read).
-    const std::string refusal = curve.crack_refusal(curve.crack());
-    AssertThrow(refusal.empty(),
-                ExcMessage("Geometry/Crack interval on Sigma: " + refusal));
+    // The rectangle's interfaces: horizontal segments, s = x, nu = (0, 1);
+    // their ends lie on Gamma_D where the left or right side is clamped (a
+    // side spans all regions, so an end is clamped on both or neither).
+    for (const unsigned int i : Layout::indices(curves.size()))
+      {
+        InterfaceCurve &curve  = curves[i];
+        const double    height = geometry.interface_height(i);
+        curve = InterfaceCurve::segment({geometry.x_min, height},
+                                        {geometry.x_max, height});
+        curve.set_crack(geometry.crack(i));
+        const std::array<bool, 2> ends = {
+          {geometry.clamped[static_cast<unsigned int>(Side::left)],
+           geometry.clamped[static_cast<unsigned int>(Side::right)]}};
+        curve.set_clamped_ends({{ends, ends}});
+        // An edge crack reaches a side that is not clamped (checked with
+        // the entries' names when the parameters are read).
+        const std::string refusal = curve.crack_refusal(curve.crack());
+        AssertThrow(refusal.empty(),
+                    ExcMessage((i == 0 ? std::string("Geometry/Crack interval "
+                                                     "on Sigma: ") :
+                                         "Geometry/Interfaces above Sigma: "
+                                         "interface " +
+                                           std::to_string(i + 1) + ": ") +
+                               refusal));
+      }
   }
 
 
@@ -78,21 +90,19 @@ namespace bilayer
       {
         const unsigned int factor = 1u << cycle;
         const double       width  = geometry.x_max - geometry.x_min;
-        for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+        for (const unsigned int r : Layout::indices(triangulations.size()))
           {
-            const unsigned int n_x =
-              (s == Subdomain::plus && mesh.cells_along_sigma_plus > 0 ?
-                 mesh.cells_along_sigma_plus :
-                 mesh.cells_along_sigma) *
-              factor;
-            const double       height = s == Subdomain::minus ?
-                                          geometry.sigma_height - geometry.y_min :
-                                          geometry.y_max - geometry.sigma_height;
+            const unsigned int n_x = (r > 0 && mesh.cells_along_sigma_plus > 0 ?
+                                        mesh.cells_along_sigma_plus :
+                                        mesh.cells_along_sigma) *
+                                     factor;
+            const auto         y      = geometry.region_heights(r);
+            const double       height = y[1] - y[0];
             const unsigned int n_y    = static_cast<unsigned int>(
               structured_cells_across(mesh, n_x, height, width, cycle));
-            auto &tria = triangulations[static_cast<unsigned int>(s)];
+            auto &tria = triangulations[r];
             tria.clear();
-            make_subdomain(s, n_x, n_y, cycle, tria);
+            make_subdomain(r, n_x, n_y, cycle, tria);
           }
       }
 
@@ -101,8 +111,8 @@ namespace bilayer
 
 
   void
-  Geometry::refine(const std::array<Vector<double>, 2> &indicators,
-                   const std::vector<PointResolution>  &resolve)
+  Geometry::refine(const std::vector<Vector<double>>  &indicators,
+                   const std::vector<PointResolution> &resolve)
   {
     // The indicators divided by a power of two of the largest (exact), in
     // single precision: in (0, 1], ties as among the float indicators.
@@ -119,8 +129,8 @@ namespace bilayer
     int exponent = 0;
     if (largest > 0)
       std::frexp(largest, &exponent);
-    std::array<std::vector<float>, 2> relative;
-    for (unsigned int k = 0; k < 2; ++k)
+    std::vector<std::vector<float>> relative(indicators.size());
+    for (const unsigned int k : Layout::indices(indicators.size()))
       for (const double e : indicators[k])
         relative[k].push_back(float(std::ldexp(e, -exponent)));
 
@@ -149,10 +159,10 @@ namespace bilayer
               break;
           }
       }
-    for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+    for (const unsigned int r : Layout::indices(triangulations.size()))
       {
-        auto        &tria = triangulations[static_cast<unsigned int>(s)];
-        const auto  &eta  = relative[static_cast<unsigned int>(s)];
+        auto        &tria = triangulations[r];
+        const auto  &eta  = relative[r];
         unsigned int i    = 0;
         for (const auto &cell : tria.active_cell_iterators())
           {
@@ -191,6 +201,7 @@ namespace bilayer
   void
   Geometry::set_crack(const CrackSet &crack)
   {
+    InterfaceCurve   &curve   = curves[0];
     const std::string refusal = curve.crack_refusal(crack);
     AssertThrow(refusal.empty(), ExcMessage(refusal));
     const CrackSet previous = curve.crack();
@@ -210,7 +221,16 @@ namespace bilayer
   void
   Geometry::check_crack_vertices() const
   {
-    const std::vector<double> ends = crack_end_points(curve.crack());
+    for (const unsigned int i : Layout::indices(curves.size()))
+      check_crack_vertices(i);
+  }
+
+
+  void
+  Geometry::check_crack_vertices(const unsigned int i) const
+  {
+    const InterfaceCurve     &curve = curves[i];
+    const std::vector<double> ends  = crack_end_points(curve.crack());
     if (gmsh)
       {
         // Gmsh scenes: the crack end points are vertices of the meshes on
@@ -234,10 +254,10 @@ namespace bilayer
       }
     // The crack end points must be mesh vertices: no face on Sigma may
     // straddle one.
-    for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
-      for (const auto &cell : triangulation(s).active_cell_iterators())
+    for (const unsigned int r : {i, i + 1})
+      for (const auto &cell : triangulations[r].active_cell_iterators())
         for (const auto &face : cell->face_iterators())
-          if (on_sigma(face))
+          if (on_interface(face, i))
             for (const double c : ends)
               {
                 const double x0 =
@@ -250,8 +270,8 @@ namespace bilayer
                     std::ostringstream msg;
                     if (mesh.mesh_files.empty())
                       {
-                        const bool plus = s == Subdomain::plus &&
-                                          mesh.cells_along_sigma_plus > 0;
+                        const bool plus =
+                          r > 0 && mesh.cells_along_sigma_plus > 0;
                         msg
                           << "Mesh/Cells along Sigma"
                           << (plus ?
@@ -275,7 +295,7 @@ namespace bilayer
                     else
                       msg << "Mesh/Mesh files: the crack end point x = " << c
                           << " is not a vertex of the mesh of Omega"
-                          << (s == Subdomain::minus ? "-" : "+");
+                          << (r == 0 ? "-" : "+");
                     AssertThrow(false, ExcMessage(msg.str()));
                   }
               }
@@ -287,7 +307,10 @@ namespace bilayer
   {
     std::vector<unsigned int> valid;
     const double              width = geometry.x_max - geometry.x_min;
-    const std::vector<double> ends  = crack_end_points(curve.crack());
+    std::vector<double>       ends;
+    for (const InterfaceCurve &curve : curves)
+      for (const double c : crack_end_points(curve.crack()))
+        ends.push_back(c);
     for (unsigned int n = 1; n <= 100000 && valid.size() < how_many; ++n)
       {
         bool ok = true;
@@ -304,16 +327,16 @@ namespace bilayer
 
 
   const Triangulation<2> &
-  Geometry::triangulation(const Subdomain subdomain) const
+  Geometry::triangulation(const unsigned int region) const
   {
-    return triangulations[static_cast<unsigned int>(subdomain)];
+    return triangulations[region];
   }
 
 
   MeshStatistics
-  Geometry::statistics(const Subdomain subdomain) const
+  Geometry::statistics(const unsigned int region) const
   {
-    const auto    &tria = triangulation(subdomain);
+    const auto    &tria = triangulation(region);
     MeshStatistics stats;
     stats.vertices = tria.n_used_vertices();
     stats.cells    = tria.n_active_cells();
@@ -353,7 +376,7 @@ namespace bilayer
   unsigned int
   Geometry::n_sigma_vertices() const
   {
-    const double scale = 1e9 / std::max(curve.length(), 1e-300);
+    const double scale = 1e9 / std::max(curves[0].length(), 1e-300);
     return boundary_vertices(triangulation(Subdomain::minus),
                              scale,
                              [](const types::boundary_id id) {
@@ -366,32 +389,35 @@ namespace bilayer
   unsigned int
   Geometry::n_outer_vertices() const
   {
-    const double scale = 1e9 / std::max(curve.length(), 1e-300);
+    const double scale = 1e9 / std::max(curves[0].length(), 1e-300);
     const auto   outer = [](const types::boundary_id id) {
-      return id != BoundaryIds::sigma;
+      return id < BoundaryIds::sigma ||
+             id >= BoundaryIds::interface(BoundaryIds::max_interfaces);
     };
-    auto keys =
-      boundary_vertices(triangulation(Subdomain::minus), scale, outer);
-    const auto plus =
-      boundary_vertices(triangulation(Subdomain::plus), scale, outer);
-    keys.insert(plus.begin(), plus.end());
+    std::set<std::pair<long long, long long>> keys;
+    for (const auto &tria : triangulations)
+      {
+        const auto region = boundary_vertices(tria, scale, outer);
+        keys.insert(region.begin(), region.end());
+      }
     return keys.size();
   }
 
 
   std::vector<double>
-  Geometry::sigma_vertex_parameters() const
+  Geometry::sigma_vertex_parameters(const unsigned int i) const
   {
-    // The parameters of the vertices on Sigma of each mesh, sorted; then
-    // those of both (within the curve's tolerance).
+    // The parameters of the vertices on the interface of each mesh, sorted;
+    // then those of both (within the curve's tolerance).
+    const InterfaceCurve              &curve = curves[i];
     std::array<std::vector<double>, 2> on_sigma;
-    for (const Subdomain d : {Subdomain::minus, Subdomain::plus})
+    for (const unsigned int side : {0u, 1u})
       {
-        auto &list = on_sigma[static_cast<unsigned int>(d)];
-        for (const auto &cell : triangulation(d).active_cell_iterators())
+        auto &list = on_sigma[side];
+        for (const auto &cell :
+             triangulations[i + side].active_cell_iterators())
           for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() &&
-                face->boundary_id() == BoundaryIds::sigma)
+            if (on_interface(face, i))
               for (const unsigned int v : face->vertex_indices())
                 list.push_back(curve.parameter(face->vertex(v)));
         std::sort(list.begin(), list.end());

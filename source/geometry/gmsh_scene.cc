@@ -629,6 +629,7 @@ namespace bilayer
 
     // Sigma: its pieces, crack pieces, clamped ends and orientation.
     const SigmaChain chain = sigma_chain(g, on_sigma, where);
+    InterfaceCurve  &curve = curves[0];
     curve = InterfaceCurve(sigma_pieces(g, chain, arc_centres, arc_radii), 0.);
     curve.set_crack(crack_pieces(g, chain, groups.crack, curve, where));
     // An edge crack's mouth must stay free. --check-geometry takes every

@@ -90,7 +90,7 @@ namespace bilayer
                   upper.distance(Point<2>(geometry.x_max, y1)) < 1e-8,
                 ExcMessage("Mesh/Mesh files: '" + file + "' does not fill " +
                            region.str() + " (Geometry)"));
-    assign_boundary_ids(tria);
+    assign_boundary_ids(tria, static_cast<unsigned int>(subdomain));
   }
 
 

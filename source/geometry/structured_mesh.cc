@@ -15,18 +15,15 @@ namespace bilayer
   using namespace dealii;
 
   void
-  Geometry::make_subdomain(const Subdomain    subdomain,
+  Geometry::make_subdomain(const unsigned int region,
                            const unsigned int n_x,
                            const unsigned int n_y,
                            const unsigned int cycle,
                            Triangulation<2>  &tria) const
   {
-    const Point<2>     p1(geometry.x_min,
-                      subdomain == Subdomain::minus ? geometry.y_min :
-                                                          geometry.sigma_height);
-    const Point<2>     p2(geometry.x_max,
-                      subdomain == Subdomain::minus ? geometry.sigma_height :
-                                                          geometry.y_max);
+    const auto         y = geometry.region_heights(region);
+    const Point<2>     p1(geometry.x_min, y[0]);
+    const Point<2>     p2(geometry.x_max, y[1]);
     const unsigned int n_y0 = static_cast<unsigned int>(structured_cells_across(
       mesh, n_x >> cycle, p2[1] - p1[1], geometry.x_max - geometry.x_min, 0));
     const std::vector<double> rows =
@@ -51,9 +48,9 @@ namespace bilayer
           },
           tria);
       }
-    if (mesh.fit_crack_tips && geometry.has_crack())
+    if (mesh.fit_crack_tips)
       fit_crack_tips(n_x, tria);
-    assign_boundary_ids(tria);
+    assign_boundary_ids(tria, region);
   }
 
 
@@ -98,13 +95,23 @@ namespace bilayer
     // Knots of a piecewise linear map of x: the ends of Sigma stay, the
     // vertex column nearest to each crack end point inside Omega moves
     // onto it (neighbouring columns where two would share one).
+    // The crack end points of every interface: the regions share their
+    // vertex columns.
     const double        width = geometry.x_max - geometry.x_min;
     const double        h     = width / n_x;
     std::vector<double> tips;
-    for (const double c : {geometry.crack_start, geometry.crack_end})
-      if (c > geometry.x_min + 1e-10 * width &&
-          c < geometry.x_max - 1e-10 * width)
-        tips.push_back(c);
+    for (const unsigned int i : Layout::indices(curves.size()))
+      if (geometry.has_crack(i))
+        for (const double c : geometry.crack_interval(i))
+          if (c > geometry.x_min + 1e-10 * width &&
+              c < geometry.x_max - 1e-10 * width &&
+              std::find_if(tips.begin(), tips.end(), [&](const double t) {
+                return std::abs(t - c) <= 1e-10 * width;
+              }) == tips.end())
+            tips.push_back(c);
+    std::sort(tips.begin(), tips.end());
+    if (tips.empty())
+      return;
     // Columns 1 ... n_x - 1 lie inside Sigma (0 and n_x are its ends): a
     // tip within half a cell of an end takes the column next to it, tips
     // within half a cell of each other take neighbouring columns.
@@ -149,7 +156,8 @@ namespace bilayer
 
 
   void
-  Geometry::assign_boundary_ids(Triangulation<2> &tria) const
+  Geometry::assign_boundary_ids(Triangulation<2>  &tria,
+                                const unsigned int region) const
   {
     const double tol = 1e-10 * std::max(geometry.x_max - geometry.x_min,
                                         geometry.y_max - geometry.y_min);
@@ -168,9 +176,16 @@ namespace bilayer
               face->set_boundary_id(BoundaryIds::top);
             else
               {
-                Assert(std::abs(c[1] - geometry.sigma_height) < tol,
+                // The interface below the region or the one above it.
+                const unsigned int i =
+                  region > 0 &&
+                      std::abs(c[1] - geometry.interface_height(region - 1)) <
+                        tol ?
+                    region - 1 :
+                    region;
+                Assert(std::abs(c[1] - geometry.interface_height(i)) < tol,
                        ExcInternalError());
-                face->set_boundary_id(BoundaryIds::sigma);
+                face->set_boundary_id(BoundaryIds::interface(i));
               }
           }
   }

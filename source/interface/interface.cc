@@ -10,22 +10,26 @@ namespace bilayer
 
 
   void
-  Interface::setup(const PerSubproblem<const ElasticSubproblem *> &subs,
-                   const InterfaceCurve                           &curve)
+  Interface::setup(const Topology                                 &topology,
+                   const PerSubproblem<const ElasticSubproblem *> &subs,
+                   const std::vector<InterfaceCurve>              &curves)
   {
-    curve_                = curve;
-    const double   tol    = curve.tolerance();
-    const auto    &traces = coupling_.locate_traces(subs, curve_);
-    PerBlock<bool> active(Layout::n_blocks(subs.size() / 2));
+    curves_               = curves;
+    const double   tol    = curves_[0].tolerance();
+    const auto    &traces = coupling_.locate_traces(topology, subs, curves_);
+    PerBlock<bool> active(topology.n_blocks());
     for (const unsigned int b : Layout::indices(active.size()))
       active[b] = coupling_.active(b);
     // The degree of each layer's elements (an absent layer's only matters
     // where it exists: that of layer 1).
     std::vector<unsigned int> degrees;
-    for (unsigned int s = 0; s < subs.size(); s += Layout::n_subdomains)
-      degrees.push_back(subs[s] ? subs[s]->fe().degree :
-                                  subs[Layout::u_minus]->fe().degree);
-    space_.reinit(curve_, contact, traces, degrees, active);
+    for (const unsigned int l : Layout::indices(topology.n_slots()))
+      {
+        const unsigned int s = topology.index(static_cast<Layer>(l), 0);
+        degrees.push_back(subs[s] ? subs[s]->fe().degree :
+                                    subs[Layout::u_minus]->fe().degree);
+      }
+    space_.reinit(topology, curves_, contact, traces, degrees, active);
     coupling_.reinit(space_, contact.coupling, tol);
   }
 
@@ -51,15 +55,16 @@ namespace bilayer
   Tensor<1, 2>
   Interface::multiplier_traction(const BlockVector<double> &mu,
                                  const unsigned int         s,
-                                 const double               x) const
+                                 const double               x,
+                                 const unsigned int         i) const
   {
     Tensor<1, 2>        t;
     std::vector<double> values;
     for (const unsigned int b : Layout::indices(space_.n_blocks()))
       for (unsigned int j = 0; j < 2; ++j)
-        if ((j == 0 ? Layout::coupled(b).first : Layout::coupled(b).second) ==
-              s &&
-            active(b))
+        if ((j == 0 ? topology().coupling(b).first :
+                      topology().coupling(b).second) == s &&
+            topology().coupling(b).interface == i && active(b))
           {
             const unsigned int e = space_.shape_values(b, x, values);
             for (unsigned int i = 0; i <= space_.degree(b); ++i)

@@ -26,54 +26,81 @@ namespace bilayer
   }
 
 
-  PerBlock<MultiplierSpace::BlockChoice>
-  MultiplierSpace::choose(const std::array<std::vector<double>, 2> &traces,
-                          const std::vector<unsigned int>          &degrees,
-                          const MultiplierMesh                      rule,
-                          const double                              tol)
+  namespace
   {
-    PerBlock<BlockChoice> choice(Layout::n_blocks(degrees.size()));
-    // mu_1, degree p1: per macro segment between shared points, the trace
-    // with more (coarser trace: fewer) segments, Omega- on a tie.
-    const auto         &t0 = traces[0], &t1 = traces[1];
-    std::vector<double> mesh;
-    if (!t0.empty() && !t1.empty())
-      {
-        mesh.push_back(t0.front());
-        std::size_t i = 0, j = 0;
-        while (i + 1 < t0.size() && j + 1 < t1.size())
-          {
-            // The next shared point: t0[i1] = t1[j1].
-            std::size_t i1 = i + 1, j1 = j + 1;
-            while (std::abs(t0[i1] - t1[j1]) > tol &&
-                   !(i1 + 1 == t0.size() && j1 + 1 == t1.size()))
-              if ((t0[i1] < t1[j1] && i1 + 1 < t0.size()) ||
-                  j1 + 1 == t1.size())
-                ++i1;
+    /// The mesh of a block across an interface with the traces @p t0
+    /// (below) and @p t1 (above): per macro segment between shared points,
+    /// the trace with more (coarser trace: fewer) segments, the one below
+    /// on a tie.
+    std::vector<double>
+    across_mesh(const std::vector<double> &t0,
+                const std::vector<double> &t1,
+                const MultiplierMesh       rule,
+                const double               tol)
+    {
+      std::vector<double> mesh;
+      if (!t0.empty() && !t1.empty())
+        {
+          mesh.push_back(t0.front());
+          std::size_t i = 0, j = 0;
+          while (i + 1 < t0.size() && j + 1 < t1.size())
+            {
+              // The next shared point: t0[i1] = t1[j1].
+              std::size_t i1 = i + 1, j1 = j + 1;
+              while (std::abs(t0[i1] - t1[j1]) > tol &&
+                     !(i1 + 1 == t0.size() && j1 + 1 == t1.size()))
+                if ((t0[i1] < t1[j1] && i1 + 1 < t0.size()) ||
+                    j1 + 1 == t1.size())
+                  ++i1;
+                else
+                  ++j1;
+              const std::size_t n0 = i1 - i, n1 = j1 - j;
+              const bool        plus =
+                rule == MultiplierMesh::finer_trace ? n1 > n0 : n1 < n0;
+              if (plus)
+                mesh.insert(mesh.end(),
+                            t1.begin() + j + 1,
+                            t1.begin() + j1 + 1);
               else
-                ++j1;
-            const std::size_t n0 = i1 - i, n1 = j1 - j;
-            const bool        plus =
-              rule == MultiplierMesh::finer_trace ? n1 > n0 : n1 < n0;
-            if (plus)
-              mesh.insert(mesh.end(), t1.begin() + j + 1, t1.begin() + j1 + 1);
-            else
-              mesh.insert(mesh.end(), t0.begin() + i + 1, t0.begin() + i1 + 1);
-            i = i1;
-            j = j1;
-          }
-      }
-    choice[Layout::across_sigma] = {mesh, degrees[0]};
-    // The gluing of layer k to layer k - 1 on a side: the layers share the
-    // side's mesh, so its trace, with the smaller of the two degrees.
-    for (unsigned int b = 1; b < choice.size(); ++b)
+                mesh.insert(mesh.end(),
+                            t0.begin() + i + 1,
+                            t0.begin() + i1 + 1);
+              i = i1;
+              j = j1;
+            }
+        }
+      return mesh;
+    }
+  } // namespace
+
+
+  PerBlock<MultiplierSpace::BlockChoice>
+  MultiplierSpace::choose(const Topology                     &topology,
+                          const std::vector<InterfaceTraces> &traces,
+                          const std::vector<unsigned int>    &degrees,
+                          const MultiplierMesh                rule,
+                          const double                        tol)
+  {
+    PerBlock<BlockChoice> choice(topology.n_blocks());
+    for (const unsigned int b : Layout::indices(choice.size()))
       {
-        const auto [lower, upper] = Layout::coupled(b);
-        const auto sd = static_cast<unsigned int>(Layout::subdomain(lower));
-        choice[b]     = {
-              traces[sd],
-              std::min(degrees[static_cast<unsigned int>(Layout::layer(lower))],
-                   degrees[static_cast<unsigned int>(Layout::layer(upper))])};
+        const Coupling c = topology.coupling(b);
+        if (c.kind == Coupling::Kind::across)
+          // Layer 1 across interface i, degree p1.
+          choice[b] = {across_mesh(traces[c.interface][0],
+                                   traces[c.interface][1],
+                                   rule,
+                                   tol),
+                       degrees[0]};
+        else
+          // The gluing of layer k to layer k - 1 on a region: the layers
+          // share the region's mesh, so its trace on Sigma, with the smaller
+          // of the two degrees.
+          choice[b] = {
+            traces[c.interface][Topology::side(c.interface, c.region)],
+            std::min(
+              degrees[static_cast<unsigned int>(topology.layer(c.first))],
+              degrees[static_cast<unsigned int>(topology.layer(c.second))])};
       }
     return choice;
   }
@@ -109,40 +136,40 @@ namespace bilayer
     }
 
 
-    /// Whether the coordinate @p s is an end of Sigma on Gamma_D for block
-    /// @p b.
+    /// Whether the coordinate @p s is an end of its interface @p curve on
+    /// Gamma_D for the coupling @p c.
     bool
     end_on_gamma_d(const InterfaceCurve &curve,
                    const double          s,
-                   const unsigned int    b)
+                   const Coupling       &c)
     {
       // For the gluing across Sigma where both sides' end nodes are clamped,
       // for the gluing of the layers on one subdomain where that subdomain's
       // end node is clamped. Where only one side of Sigma is clamped the end
       // keeps its multiplier: its row couples the free dof of the other side
       // to the prescribed value.
-      return b == Layout::across_sigma ?
+      return c.kind == Coupling::Kind::across ?
                curve.on_gamma_d(s) :
-               curve.on_gamma_d(s,
-                                static_cast<unsigned int>(
-                                  Layout::subdomain(Layout::coupled(b).first)));
+               curve.on_gamma_d(s, Topology::side(c.interface, c.region));
     }
   } // namespace
 
 
   void
-  MultiplierSpace::reinit(const InterfaceCurve                     &curve,
-                          const ContactParameters                  &contact,
-                          const std::array<std::vector<double>, 2> &traces,
-                          const std::vector<unsigned int>          &degrees,
-                          const PerBlock<bool>                     &active)
+  MultiplierSpace::reinit(const Topology                     &topology,
+                          const std::vector<InterfaceCurve>  &curves,
+                          const ContactParameters            &contact,
+                          const std::vector<InterfaceTraces> &traces,
+                          const std::vector<unsigned int>    &degrees,
+                          const PerBlock<bool>               &active)
   {
-    const double tol = curve.tolerance();
+    topology_        = topology;
+    const double tol = curves[0].tolerance();
 
     // The meshes: the slave's trace of each block, Gauss-Lobatto nodes of
     // the block's degree on each segment.
     const PerBlock<BlockChoice> choice =
-      choose(traces, degrees, contact.mesh, tol);
+      choose(topology, traces, degrees, contact.mesh, tol);
     meshes.resize(choice.size());
     for (const unsigned int b : Layout::indices(choice.size()))
       {
@@ -156,13 +183,13 @@ namespace bilayer
           mesh.breakpoints = choice[b].breakpoints;
         else
           mesh.breakpoints.clear();
-        place_nodes(b, curve);
+        place_nodes(b, curves[topology.coupling(b).interface]);
         find_nodal_sides(b, traces, degrees, tol);
         compute_dual_basis(*mesh.fe, mesh.degree, mesh.dual);
       }
 
-    build_set(curve, contact);
-    join_end_rows(curve);
+    build_set(curves, contact);
+    join_end_rows(curves);
   }
 
 
@@ -217,23 +244,22 @@ namespace bilayer
 
 
   void
-  MultiplierSpace::find_nodal_sides(
-    const unsigned int                        b,
-    const std::array<std::vector<double>, 2> &traces,
-    const std::vector<unsigned int>          &degrees,
-    const double                              tol)
+  MultiplierSpace::find_nodal_sides(const unsigned int                  b,
+                                    const std::vector<InterfaceTraces> &traces,
+                                    const std::vector<unsigned int>    &degrees,
+                                    const double                        tol)
   {
     Mesh              &mesh = meshes[b];
     const unsigned int n    = mesh.node_x.size();
     // Which coupled traces lie in the multiplier space.
-    const auto [first, second] = Layout::coupled(b);
+    const Coupling c = topology_.coupling(b);
     for (unsigned int j = 0; j < 2; ++j)
       {
-        const unsigned int s = j == 0 ? first : second;
+        const unsigned int s = j == 0 ? c.first : c.second;
         const auto        &trace =
-          traces[static_cast<unsigned int>(Layout::subdomain(s))];
+          traces[c.interface][Topology::side(c.interface, topology_.region(s))];
         const unsigned int degree_s =
-          degrees[static_cast<unsigned int>(Layout::layer(s))];
+          degrees[static_cast<unsigned int>(topology_.layer(s))];
         bool        inside = degree_s <= mesh.degree;
         std::size_t k      = 0;
         for (const double x : trace)
@@ -249,31 +275,37 @@ namespace bilayer
 
 
   void
-  MultiplierSpace::build_set(const InterfaceCurve    &curve,
-                             const ContactParameters &contact)
+  MultiplierSpace::build_set(const std::vector<InterfaceCurve> &curves,
+                             const ContactParameters           &contact)
   {
     // The multiplier set (docs/problem.md §3), per component.
-    const double    p     = contact.multiplier_bound;
-    const CrackSet &crack = curve.crack();
-    multiplier_bound      = p;
+    const double p   = contact.multiplier_bound;
+    multiplier_bound = p;
     std::vector<types::global_dof_index> sizes;
     for (const auto &mesh : meshes)
       sizes.push_back(Layout::n_components * mesh.node_x.size());
     set_.reinit(sizes);
-    crack_nodes.assign(n_nodes(Layout::across_sigma), false);
-    corner_nodes.assign(n_nodes(Layout::across_sigma), false);
+    crack_nodes.resize(meshes.size());
+    corner_nodes.resize(meshes.size());
+    for (const unsigned int b : Layout::indices(meshes.size()))
+      {
+        crack_nodes[b].assign(n_nodes(b), false);
+        corner_nodes[b].assign(n_nodes(b), false);
+      }
     for (const unsigned int b : Layout::indices(meshes.size()))
       for (unsigned int a = 0; a < meshes[b].node_x.size(); ++a)
         {
-          const double x        = meshes[b].node_x[a];
-          const bool   on_crack = crack.contains(x);
-          if (b == Layout::across_sigma)
-            crack_nodes[a] = on_crack;
-          if (end_on_gamma_d(curve, x, b))
+          const Coupling        coupling = topology_.coupling(b);
+          const InterfaceCurve &curve    = curves[coupling.interface];
+          const double          x        = meshes[b].node_x[a];
+          const bool across   = coupling.kind == Coupling::Kind::across;
+          const bool on_crack = across && curve.crack().contains(x);
+          crack_nodes[b][a]   = on_crack;
+          if (end_on_gamma_d(curve, x, coupling))
             continue;
           for (unsigned int c = 0; c < Layout::n_components; ++c)
             set_.set_glued(b, Layout::entry(a, c), p);
-          if (b == Layout::across_sigma && on_crack)
+          if (on_crack)
             {
               const unsigned int t = Layout::entry(a, Layout::tangential),
                                  n = Layout::entry(a, Layout::normal);
@@ -297,7 +329,7 @@ namespace bilayer
               Tensor<1, 2> before, after;
               if (curve.corner(x, before, after))
                 {
-                  corner_nodes[a]    = true;
+                  corner_nodes[b][a] = true;
                   meshes[b].frame[a] = {{before, after}};
                   if (contact.non_penetration)
                     set_.set_contact(b, t, p);
@@ -312,7 +344,7 @@ namespace bilayer
 
 
   void
-  MultiplierSpace::join_end_rows(const InterfaceCurve &curve)
+  MultiplierSpace::join_end_rows(const std::vector<InterfaceCurve> &curves)
   {
     // The mortar modification at the ends on Gamma_D of blocks with a side
     // that is not nodal: the end's basis function joins the other vertex of
@@ -326,7 +358,9 @@ namespace bilayer
         for (const auto &[end, neighbour] :
              {std::make_pair(0u, mesh.degree),
               std::make_pair(n - 1, n - 1 - mesh.degree)})
-          if (end_on_gamma_d(curve, mesh.node_x[end], b))
+          if (end_on_gamma_d(curves[topology_.coupling(b).interface],
+                             mesh.node_x[end],
+                             topology_.coupling(b)))
             {
               mesh.row[end] = neighbour;
               mesh.node_weight[neighbour] += mesh.node_mass[end];
@@ -392,14 +426,14 @@ namespace bilayer
 
 
   void
-  MultiplierSpace::set_friction_bounds(const std::vector<double> &bounds)
+  MultiplierSpace::set_friction_bounds(const std::vector<double> &bounds,
+                                       const unsigned int         b)
   {
-    constexpr unsigned int b = Layout::across_sigma;
     AssertThrow(bounds.size() == n_nodes(b),
                 ExcMessage("MultiplierSpace::set_friction_bounds: one bound "
-                           "per node of mu_1 is needed"));
+                           "per node of the block is needed"));
     for (unsigned int a = 0; a < n_nodes(b); ++a)
-      if (friction_node(a) && set_.free(b, Layout::entry(a, Layout::normal)))
+      if (friction_node(a, b) && set_.free(b, Layout::entry(a, Layout::normal)))
         {
           const unsigned int t = Layout::entry(a, Layout::tangential);
           const double       g = std::min(bounds[a], multiplier_bound);

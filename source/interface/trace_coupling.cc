@@ -12,14 +12,33 @@ namespace bilayer
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// @p add(x, w) for the points x and weights w of @p rule on each
+    /// segment between the break points @p b.
+    template <typename Add>
+    void
+    for_points_of(const Quadrature<1>       &rule,
+                  const std::vector<double> &b,
+                  const Add                 &add)
+    {
+      for (unsigned int k = 0; k + 1 < b.size(); ++k)
+        for (unsigned int q = 0; q < rule.size(); ++q)
+          add(b[k] + rule.point(q)[0] * (b[k + 1] - b[k]),
+              rule.weight(q) * (b[k + 1] - b[k]));
+    }
+  } // namespace
+
+
   std::vector<TraceCoupling::SigmaFace>
   TraceCoupling::sigma_faces(const Triangulation<2> &tria,
-                             const InterfaceCurve   &curve)
+                             const InterfaceCurve   &curve,
+                             const unsigned int      i)
   {
     std::vector<SigmaFace> result;
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto f : cell->face_indices())
-        if (on_sigma(cell->face(f)))
+        if (on_interface(cell->face(f), i))
           {
             const auto   face = cell->face(f);
             const double tol  = 1e-10 * face->diameter();
@@ -46,25 +65,32 @@ namespace bilayer
   }
 
 
-  const std::array<std::vector<double>, 2> &
+  const std::vector<InterfaceTraces> &
   TraceCoupling::locate_traces(
+    const Topology                                 &topology_,
     const PerSubproblem<const ElasticSubproblem *> &subs,
-    const InterfaceCurve                           &sigma)
+    const std::vector<InterfaceCurve>              &curves_)
   {
+    topology    = topology_;
     subproblems = subs;
-    curve       = &sigma;
-    for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
-      {
-        const unsigned int i = static_cast<unsigned int>(sd);
-        faces[i]             = sigma_faces(subs[Layout::index(Layer::first, sd)]
-                                 ->dof_handler()
-                                 .get_triangulation(),
-                               sigma);
-        traces[i].clear();
-        for (const auto &face : faces[i])
-          traces[i].push_back(face.x0);
-        traces[i].push_back(faces[i].back().x1);
-      }
+    curves      = &curves_;
+    faces.assign(topology.n_interfaces(), {});
+    traces.assign(topology.n_interfaces(), {});
+    for (const unsigned int i : Layout::indices(topology.n_interfaces()))
+      for (const unsigned int side : {0u, 1u})
+        {
+          auto &f = faces[i][side];
+          f       = sigma_faces(subs[topology.index(Layer::first, i + side)]
+                            ->dof_handler()
+                            .get_triangulation(),
+                          curves_[i],
+                          i);
+          auto &t = traces[i][side];
+          t.clear();
+          for (const auto &face : f)
+            t.push_back(face.x0);
+          t.push_back(f.back().x1);
+        }
     return traces;
   }
 
@@ -81,23 +107,22 @@ namespace bilayer
     // common refinement of the two traces.
     const unsigned int n_blocks = space.n_blocks();
     // (Fresh matrices: a sparse matrix cannot be copied over one in use.)
-    coupling                = decltype(coupling)(n_blocks);
-    evaluation              = decltype(evaluation)(n_blocks);
-    node_traces             = decltype(node_traces)(subs.size());
-    gauss_traces            = decltype(gauss_traces)(subs.size());
-    unsigned int max_degree = 0;
+    const unsigned int n_interfaces = topology.n_interfaces();
+    coupling                        = decltype(coupling)(n_blocks);
+    evaluation                      = decltype(evaluation)(n_blocks);
+    node_traces                     = decltype(node_traces)(n_interfaces);
+    gauss_traces                    = decltype(gauss_traces)(n_interfaces);
+    gauss                           = decltype(gauss)(n_interfaces);
+    unsigned int max_degree         = 0;
     for (const unsigned int b : Layout::indices(n_blocks))
       max_degree = std::max(max_degree, space.degree(b));
     for (const auto *sub : subs)
       if (sub != nullptr)
         max_degree = std::max(max_degree, sub->fe().degree);
-    const QGauss<1> gauss(max_degree + 2);
+    const QGauss<1> rule_1d(max_degree + 2);
     const auto      for_gauss_points = [&](const std::vector<double> &b,
                                       const auto                &add) {
-      for (unsigned int k = 0; k + 1 < b.size(); ++k)
-        for (unsigned int q = 0; q < gauss.size(); ++q)
-          add(b[k] + gauss.point(q)[0] * (b[k + 1] - b[k]),
-              gauss.weight(q) * (b[k + 1] - b[k]));
+      for_points_of(rule_1d, b, add);
     };
     const auto nodal = [&](const unsigned int b) {
       std::vector<std::tuple<unsigned int, double, double>> points;
@@ -113,24 +138,16 @@ namespace bilayer
         frames.push_back(space.node_frame(a, b));
       return frames;
     };
-    // The traces at the nodes of mu_1 for the diagnostics and the output:
-    // (tangent, normal) of the node's normal everywhere.
-    std::vector<std::array<Tensor<1, 2>, 2>> orthonormal_frames;
-    for (unsigned int a = 0; a < space.n_nodes(Layout::across_sigma); ++a)
-      {
-        const Tensor<1, 2> &n = space.node_normal(a, Layout::across_sigma);
-        orthonormal_frames.push_back({{tangent_of(n), n}});
-      }
 
     std::vector<double> values;
     for (const unsigned int b : Layout::indices(n_blocks))
       if (active(b))
         {
-          const unsigned int n       = space.n_nodes(b);
-          const auto [first, second] = Layout::coupled(b);
+          const unsigned int n = space.n_nodes(b);
+          const Coupling     c = topology.coupling(b);
           for (unsigned int j = 0; j < 2; ++j)
             {
-              const unsigned int s = j == 0 ? first : second;
+              const unsigned int s = j == 0 ? c.first : c.second;
               // Lumped: the dual basis psi_a, exact at the nodes where the
               // trace lies in the multiplier space (C_s = D E_s), else
               // integrated on the common refinement; consistent: the
@@ -145,10 +162,10 @@ namespace bilayer
                                       space.node_mass(a, b));
               else
                 for_gauss_points(
-                  merge_breakpoints(
-                    space.breakpoints(b),
-                    traces[static_cast<unsigned int>(Layout::subdomain(s))],
-                    tol),
+                  merge_breakpoints(space.breakpoints(b),
+                                    traces[c.interface][Topology::side(
+                                      c.interface, topology.region(s))],
+                                    tol),
                   [&](const double x, const double w) {
                     const unsigned int e =
                       lumped ? space.dual_shape_values(b, x, values) :
@@ -158,45 +175,68 @@ namespace bilayer
                                           x,
                                           w * values[i]);
                   });
-              build_point_matrix(s, points, node_frames(b), coupling[b][j]);
-              build_point_matrix(s, nodal(b), node_frames(b), evaluation[b][j]);
+              build_point_matrix(
+                s, c.interface, points, node_frames(b), coupling[b][j]);
+              build_point_matrix(
+                s, c.interface, nodal(b), node_frames(b), evaluation[b][j]);
             }
         }
-    for (const unsigned int s : Layout::indices(subs.size()))
-      if (present(s))
-        build_point_matrix(s,
-                           nodal(Layout::across_sigma),
-                           orthonormal_frames,
-                           node_traces[s]);
 
-    gauss_x.clear();
-    gauss_weight.clear();
-    for_gauss_points(merge_breakpoints(traces[0], traces[1], tol),
-                     [&](const double x, const double w) {
-                       gauss_x.push_back(x);
-                       gauss_weight.push_back(w);
-                     });
+    for (const unsigned int i : Layout::indices(n_interfaces))
+      {
+        // The traces at the nodes of the block across interface i for the
+        // diagnostics and the output: (tangent, normal) of the node's
+        // normal everywhere.
+        std::vector<std::array<Tensor<1, 2>, 2>> orthonormal_frames;
+        for (unsigned int a = 0; a < space.n_nodes(i); ++a)
+          {
+            const Tensor<1, 2> &n = space.node_normal(a, i);
+            orthonormal_frames.push_back({{tangent_of(n), n}});
+          }
+        node_traces[i]  = PerSubproblem<PointMatrix>(subs.size());
+        gauss_traces[i] = PerSubproblem<PointMatrix>(subs.size());
+        for (const unsigned int s : Layout::indices(subs.size()))
+          if (touches(s, i))
+            build_point_matrix(
+              s, i, nodal(i), orthonormal_frames, node_traces[i][s]);
+
+        build_gauss_traces(i, rule_1d, tol);
+      }
+  }
+
+
+  void
+  TraceCoupling::build_gauss_traces(const unsigned int   i,
+                                    const Quadrature<1> &rule_1d,
+                                    const double         tol)
+  {
+    GaussRule &rule = gauss[i];
+    for_points_of(rule_1d,
+                  merge_breakpoints(traces[i][0], traces[i][1], tol),
+                  [&](const double x, const double w) {
+                    rule.x.push_back(x);
+                    rule.weight.push_back(w);
+                  });
     std::vector<std::tuple<unsigned int, double, double>> at_gauss;
-    for (unsigned int q = 0; q < gauss_x.size(); ++q)
-      at_gauss.emplace_back(q, gauss_x[q], 1.0);
-    for (const unsigned int s : Layout::indices(subs.size()))
-      if (present(s))
-        {
-          // The Gauss points' frames: the curve's normal there.
-          std::vector<std::array<Tensor<1, 2>, 2>> frames;
-          for (const double x : gauss_x)
-            {
-              const Tensor<1, 2> n = curve->normal(x);
-              frames.push_back({{tangent_of(n), n}});
-            }
-          build_point_matrix(s, at_gauss, frames, gauss_traces[s]);
-        }
+    for (unsigned int q = 0; q < rule.x.size(); ++q)
+      at_gauss.emplace_back(q, rule.x[q], 1.0);
+    // The Gauss points' frames: the curve's normal there.
+    std::vector<std::array<Tensor<1, 2>, 2>> frames;
+    for (const double x : rule.x)
+      {
+        const Tensor<1, 2> n = (*curves)[i].normal(x);
+        frames.push_back({{tangent_of(n), n}});
+      }
+    for (const unsigned int s : Layout::indices(subproblems.size()))
+      if (touches(s, i))
+        build_point_matrix(s, i, at_gauss, frames, gauss_traces[i][s]);
   }
 
 
   void
   TraceCoupling::build_point_matrix(
     const unsigned int                                           s,
+    const unsigned int                                           i,
     const std::vector<std::tuple<unsigned int, double, double>> &points,
     const std::vector<std::array<Tensor<1, 2>, 2>>              &frames,
     PointMatrix                                                 &result) const
@@ -204,7 +244,7 @@ namespace bilayer
     const unsigned int       n_rows = frames.size();
     const ElasticSubproblem &sub    = *subproblems[s];
     const auto              &fe     = sub.fe();
-    const auto &sfaces = faces[static_cast<unsigned int>(Layout::subdomain(s))];
+    const auto &sfaces = faces[i][Topology::side(i, topology.region(s))];
     std::vector<double> starts;
     for (const auto &face : sfaces)
       starts.push_back(face.x0);
@@ -270,10 +310,9 @@ namespace bilayer
         {
           negative = mu.block(b);
           negative *= -1.;
-          coupling[b][0].matrix.Tvmult_add(loads[Layout::coupled(b).first],
-                                           negative);
-          coupling[b][1].matrix.Tvmult_add(loads[Layout::coupled(b).second],
-                                           mu.block(b));
+          const Coupling c = topology.coupling(b);
+          coupling[b][0].matrix.Tvmult_add(loads[c.first], negative);
+          coupling[b][1].matrix.Tvmult_add(loads[c.second], mu.block(b));
         }
   }
 
@@ -291,8 +330,9 @@ namespace bilayer
           const unsigned int n = result.block(b).size();
           first.reinit(n);
           second.reinit(n);
-          op[b][0].matrix.vmult(first, w[Layout::coupled(b).first]);
-          op[b][1].matrix.vmult(second, w[Layout::coupled(b).second]);
+          const Coupling c = topology.coupling(b);
+          op[b][0].matrix.vmult(first, w[c.first]);
+          op[b][1].matrix.vmult(second, w[c.second]);
           for (unsigned int i = 0; i < n; ++i)
             result.block(b)(i) = first(i) - second(i);
         }
@@ -302,20 +342,22 @@ namespace bilayer
   void
   TraceCoupling::trace_at_nodes(const unsigned int    s,
                                 const Vector<double> &w,
-                                Vector<double>       &trace) const
+                                Vector<double>       &trace,
+                                const unsigned int    i) const
   {
-    trace.reinit(node_traces[s].matrix.m());
-    node_traces[s].matrix.vmult(trace, w);
+    trace.reinit(node_traces[i][s].matrix.m());
+    node_traces[i][s].matrix.vmult(trace, w);
   }
 
 
   void
   TraceCoupling::trace_at_gauss_points(const unsigned int    s,
                                        const Vector<double> &w,
-                                       Vector<double>       &trace) const
+                                       Vector<double>       &trace,
+                                       const unsigned int    i) const
   {
-    trace.reinit(Layout::n_components * gauss_x.size());
-    gauss_traces[s].matrix.vmult(trace, w);
+    trace.reinit(Layout::n_components * gauss[i].x.size());
+    gauss_traces[i][s].matrix.vmult(trace, w);
   }
 
 
@@ -338,8 +380,8 @@ namespace bilayer
           columns;
         for (const unsigned int b : Layout::indices(coupling.size()))
           for (unsigned int j = 0; j < 2; ++j)
-            if ((j == 0 ? Layout::coupled(b).first :
-                          Layout::coupled(b).second) == s &&
+            if ((j == 0 ? topology.coupling(b).first :
+                          topology.coupling(b).second) == s &&
                 active(b))
               {
                 const auto &matrix = coupling[b][j].matrix;

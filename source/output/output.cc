@@ -219,6 +219,7 @@ namespace bilayer
         , data_outs(n)
         , layers(n)
         , subdomains(n)
+        , regions(n)
         , piece_of(n)
         , simplex(n, false)
       {}
@@ -226,9 +227,9 @@ namespace bilayer
       // Declared before the DataOut objects that subscribe to them.
       PerSubproblem<std::unique_ptr<StressPostprocessor>> stresses;
       PerSubproblem<DataOut<2>>                           data_outs;
-      PerSubproblem<Vector<float>>                        layers, subdomains;
-      PerSubproblem<std::string>                          piece_of;
-      PerSubproblem<bool>                                 simplex;
+      PerSubproblem<Vector<float>> layers, subdomains, regions;
+      PerSubproblem<std::string>   piece_of;
+      PerSubproblem<bool>          simplex;
     };
 
 
@@ -246,9 +247,12 @@ namespace bilayer
         if (subproblems[s] != nullptr)
           {
             const ElasticSubproblem &sub = *subproblems[s];
-            piece_of[s] =
-              stem + "-" + Layout::layer_letter(sub.layer()) +
-              (sub.subdomain() == Subdomain::minus ? "-minus" : "-plus");
+            // (-minus, -plus of Sigma's two regions, or -r1, -r2, ...)
+            piece_of[s] = stem + "-" + Layout::layer_letter(sub.layer()) +
+                          (sub.regions() != Layout::n_subdomains ?
+                             "-r" + std::to_string(sub.region() + 1) :
+                           sub.subdomain() == Subdomain::minus ? "-minus" :
+                                                                 "-plus");
             // A subproblem shared by a group of processes is written in one
             // piece per process of the group (its cells of the partition).
             const unsigned int group_size = processes.group_size(s);
@@ -296,6 +300,16 @@ namespace bilayer
       data_out.add_data_vector(output.subdomains[s],
                                "subdomain",
                                DataOut<2>::type_cell_data);
+      // Several interfaces: the region 1, 2, ... (subdomain: -1 below
+      // Sigma, +1 above).
+      if (sub.regions() != Layout::n_subdomains)
+        {
+          output.regions[s].reinit(n_cells);
+          output.regions[s] = static_cast<float>(sub.region() + 1);
+          data_out.add_data_vector(output.regions[s],
+                                   "region",
+                                   DataOut<2>::type_cell_data);
+        }
     }
 
 
@@ -508,7 +522,9 @@ namespace bilayer
   write_interface_vtu(const std::string                &directory,
                       const unsigned int                cycle,
                       const std::vector<InterfaceNode> &nodes,
-                      SolutionRecords                  &records)
+                      const std::vector<std::string>   &trace_names,
+                      SolutionRecords                  &records,
+                      const unsigned int                i)
   {
     std::vector<const InterfaceNode *> along;
     for (const InterfaceNode &node : nodes)
@@ -546,10 +562,8 @@ namespace bilayer
       {"mu_minus", [](const auto &n) { return n.mu_minus; }},
       {"mu_plus", [](const auto &n) { return n.mu_plus; }}};
     // The traces of every subproblem (u_minus, u_plus, v_minus, ...).
-    for (const unsigned int s :
-         Layout::indices(nodes.empty() ? Layout::n_subproblems(2) :
-                                         nodes.front().trace.size()))
-      vectors.emplace_back(Layout::field_name(s),
+    for (const unsigned int s : Layout::indices(trace_names.size()))
+      vectors.emplace_back(trace_names[s],
                            [s](const auto &n) { return n.trace[s]; });
 
     std::vector<std::string> names;
@@ -612,17 +626,20 @@ namespace bilayer
       }
 
     std::ostringstream name;
-    name << "interface-" << std::setw(2) << std::setfill('0') << cycle
-         << ".vtu";
+    name << interface_stem(i) << "-" << std::setw(2) << std::setfill('0')
+         << cycle << ".vtu";
     write_atomically(directory + "/" + name.str(), [&](std::ostream &out) {
       DataOutBase::write_vtu(
         patches, names, ranges, DataOutBase::VtkFlags(), out);
     });
-    records.interface_pvd.emplace_back(cycle, name.str());
+    if (records.interface_pvd.size() <= i)
+      records.interface_pvd.resize(i + 1);
+    records.interface_pvd[i].emplace_back(cycle, name.str());
     if (!records.deferred)
-      write_atomically(directory + "/interface.pvd", [&](std::ostream &out) {
-        DataOutBase::write_pvd_record(out, records.interface_pvd);
-      });
+      write_atomically(
+        directory + "/" + interface_stem(i) + ".pvd", [&](std::ostream &out) {
+          DataOutBase::write_pvd_record(out, records.interface_pvd[i]);
+        });
   }
 
 
@@ -637,9 +654,11 @@ namespace bilayer
     if (!records.xdmf.empty())
       write_atomically(directory + "/solution.xdmf",
                        [&](std::ostream &out) { write_xdmf(out, records); });
-    if (!records.interface_pvd.empty())
-      write_atomically(directory + "/interface.pvd", [&](std::ostream &out) {
-        DataOutBase::write_pvd_record(out, records.interface_pvd);
-      });
+    for (const unsigned int i : Layout::indices(records.interface_pvd.size()))
+      if (!records.interface_pvd[i].empty())
+        write_atomically(
+          directory + "/" + interface_stem(i) + ".pvd", [&](std::ostream &out) {
+            DataOutBase::write_pvd_record(out, records.interface_pvd[i]);
+          });
   }
 } // namespace bilayer

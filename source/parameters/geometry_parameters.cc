@@ -85,6 +85,18 @@ namespace bilayer
                       "makes an edge crack whose mouth lies on that side, "
                       "no tip: that side must not be clamped (Clamped "
                       "sides), and the crack must not cover all of Sigma.");
+    prm.declare_entry(
+      "Interfaces above Sigma",
+      "",
+      Patterns::Anything(),
+      "Further horizontal interfaces of the rectangle above Sigma, each "
+      "'y' (glued everywhere) or 'y: x_start, x_end' (with a through crack "
+      "between the two end points, as Crack interval on Sigma), separated "
+      "by ';', by increasing y in (Height of Sigma, y_max) [length]. They "
+      "cut Omega+ into regions (bands) stacked from Sigma up: interface k "
+      "(Sigma is 1) lies between region k and region k + 1; the regions "
+      "above Sigma take the material of Omega+ (its plies by height). "
+      "Empty: Sigma is the only interface.");
     std::string selection;
     for (const auto &name : parts.names)
       selection += (selection.empty() ? "" : "|") + name;
@@ -119,6 +131,8 @@ namespace bilayer
     const auto crack = parse_pair(prm, "Geometry", "Crack interval on Sigma");
     crack_start      = crack[0];
     crack_end        = crack[1];
+    const std::string further_text = prm.get("Interfaces above Sigma");
+    further_interfaces             = parse_further_interfaces(further_text);
     clamped.assign(parts.size(), false);
     for (const auto &name :
          Utilities::split_string_list(prm.get("Clamped sides")))
@@ -126,6 +140,12 @@ namespace bilayer
         if (name == parts.names[i])
           clamped[i] = true;
     prm.leave_subsection();
+    AssertThrow(further_interfaces.empty() || gmsh_file.empty(),
+                ExcMessage("Geometry/Interfaces above Sigma = '" +
+                           further_text +
+                           "' applies to the rectangle; a Gmsh scene "
+                           "(Geometry/Gmsh file) has Sigma as its only "
+                           "interface: leave the entry empty"));
     if (!gmsh_file.empty())
       {
         // The file's own checks (Geometry) say which subdomain lacks a
@@ -155,42 +175,141 @@ namespace bilayer
                 ExcMessage("Geometry/Height of Sigma must lie in (" +
                            number(y_min) + ", " + number(y_max) + "), got " +
                            number(sigma_height)));
-    // The crack may reach the left or right side (an edge crack; within
-    // the tolerance of the crack's coordinates it is put there).
-    const double tol = 1e-10 * (x_max - x_min);
-    AssertThrow(x_min - tol <= crack_start && crack_start <= crack_end &&
-                  crack_end <= x_max + tol,
-                ExcMessage("Geometry/Crack interval on Sigma must satisfy " +
-                           number(x_min) + " <= x_start <= x_end <= " +
-                           number(x_max) + ", got '" + crack_text + "'"));
-    for (double *end : {&crack_start, &crack_end})
-      for (const double side : {x_min, x_max})
-        if (std::abs(*end - side) <= tol)
-          *end = side;
+    check_crack_range("Geometry/Crack interval on Sigma",
+                      crack_text,
+                      crack_start,
+                      crack_end);
     const bool sides = clamped[0] || clamped[1];
     AssertThrow(sides || (clamped[2] && clamped[3]),
                 ExcMessage("Geometry/Clamped sides must clamp a part of the "
                            "boundary of both Omega- and Omega+ (left or right, "
                            "or both bottom and top), got '" +
                            clamped_text + "'"));
-    if (!has_crack())
+    check_crack_ends("Geometry/Crack interval on Sigma",
+                     "Sigma",
+                     crack_text,
+                     clamped_text,
+                     crack_start,
+                     crack_end);
+    double below = sigma_height;
+    for (unsigned int k = 0; k < further_interfaces.size(); ++k)
+      {
+        FurtherInterface &f    = further_interfaces[k];
+        const std::string name = "interface " + std::to_string(k + 2);
+        const std::string what = "Geometry/Interfaces above Sigma: " + name;
+        AssertThrow(std::abs(f.height) <= 1e100 && below < f.height &&
+                      f.height < y_max,
+                    ExcMessage(what + " lies at y = " + number(f.height) +
+                               "; allowed: above the interface below it (y = " +
+                               number(below) + ") and below y_max = " +
+                               number(y_max) + ", by increasing y"));
+        AssertThrow(sides,
+                    ExcMessage(what +
+                               ": the regions between interfaces are "
+                               "held by the left or right side only; "
+                               "Geometry/Clamped sides = '" +
+                               clamped_text +
+                               "' clamps neither (clamp left or right)"));
+        const std::string text =
+          number(f.crack_start) + ", " + number(f.crack_end);
+        check_crack_range(what, text, f.crack_start, f.crack_end);
+        check_crack_ends(
+          what, name, text, clamped_text, f.crack_start, f.crack_end);
+        below = f.height;
+      }
+  }
+
+
+  std::vector<GeometryParameters::FurtherInterface>
+  GeometryParameters::parse_further_interfaces(const std::string &text) const
+  {
+    std::vector<FurtherInterface> result;
+    const std::string             allowed =
+      "Geometry/Interfaces above Sigma must be a list of 'y' or 'y: "
+      "x_start, x_end' separated by ';', got '" +
+      text + "'";
+    for (const std::string &item : Utilities::split_string_list(text, ';'))
+      {
+        const std::size_t              colon = item.find(':');
+        const std::vector<std::string> numbers =
+          Utilities::split_string_list(colon == std::string::npos ?
+                                         item :
+                                         item.substr(0, colon) + "," +
+                                           item.substr(colon + 1),
+                                       ',');
+        AssertThrow((colon == std::string::npos && numbers.size() == 1) ||
+                      (colon != std::string::npos && numbers.size() == 3),
+                    ExcMessage(allowed));
+        std::vector<double> values;
+        for (const std::string &n : numbers)
+          {
+            char        *end = nullptr;
+            const double v   = std::strtod(n.c_str(), &end);
+            AssertThrow(!n.empty() && end != nullptr && *end == '\0' &&
+                          std::isfinite(v),
+                        ExcMessage(allowed));
+            values.push_back(v);
+          }
+        FurtherInterface f;
+        f.height = values[0];
+        if (values.size() == 3)
+          {
+            f.crack_start = values[1];
+            f.crack_end   = values[2];
+          }
+        else
+          f.crack_start = f.crack_end = x_min;
+        result.push_back(f);
+      }
+    return result;
+  }
+
+
+  void
+  GeometryParameters::check_crack_range(const std::string &what,
+                                        const std::string &crack_text,
+                                        double            &start,
+                                        double            &end) const
+  {
+    // The crack may reach the left or right side (an edge crack; within
+    // the tolerance of the crack's coordinates it is put there).
+    const double tol = 1e-10 * (x_max - x_min);
+    AssertThrow(x_min - tol <= start && start <= end && end <= x_max + tol,
+                ExcMessage(what + " must satisfy " + number(x_min) +
+                           " <= x_start <= x_end <= " + number(x_max) +
+                           ", got '" + crack_text + "'"));
+    for (double *e : {&start, &end})
+      for (const double side : {x_min, x_max})
+        if (std::abs(*e - side) <= tol)
+          *e = side;
+  }
+
+
+  void
+  GeometryParameters::check_crack_ends(const std::string &what,
+                                       const std::string &curve,
+                                       const std::string &crack_text,
+                                       const std::string &clamped_text,
+                                       const double       start,
+                                       const double       end) const
+  {
+    if (!(end > start))
       return;
-    AssertThrow(crack_start > x_min || crack_end < x_max,
-                ExcMessage("Geometry/Crack interval on Sigma = '" + crack_text +
-                           "' covers all of Sigma (" + number(x_min) + " to " +
-                           number(x_max) +
-                           "): some of Sigma must stay glued; end the crack "
+    AssertThrow(start > x_min || end < x_max,
+                ExcMessage(what + " = '" + crack_text + "' covers all of " +
+                           curve + " (" + number(x_min) + " to " +
+                           number(x_max) + "): some of " + curve +
+                           " must stay glued; end the crack "
                            "inside Omega on one side at least"));
     for (const Side side : {Side::left, Side::right})
       AssertThrow(
         !clamped[static_cast<unsigned int>(side)] ||
-          (side == Side::left ? crack_start > x_min : crack_end < x_max),
-        ExcMessage("Geometry/Crack interval on Sigma = '" + crack_text +
-                   "' reaches the " + side_name(side) +
-                   " side (x = " + number(side == Side::left ? x_min : x_max) +
-                   "), which is clamped (Geometry/Clamped sides = '" +
-                   clamped_text +
-                   "'): a crack must not reach Gamma_D; an edge crack "
-                   "needs a free or loaded side at its mouth"));
+          (side == Side::left ? start > x_min : end < x_max),
+        ExcMessage(
+          what + " = '" + crack_text + "' reaches the " + side_name(side) +
+          " side (x = " + number(side == Side::left ? x_min : x_max) +
+          "), which is clamped (Geometry/Clamped sides = '" + clamped_text +
+          "'): a crack must not reach Gamma_D; an edge crack "
+          "needs a free or loaded side at its mouth"));
   }
 } // namespace bilayer

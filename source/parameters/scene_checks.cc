@@ -71,7 +71,32 @@ namespace bilayer
             (parts.gmsh ? parts.names[i] : "the " + parts.names[i] + " side") +
             " is clamped (Geometry/Clamped sides)"));
     check_plies(scene, parts);
+    check_interfaces(scene);
     check_growth_relations(scene);
+  }
+
+
+  void
+  check_interfaces(const Scene &scene)
+  {
+    if (scene.geometry.further_interfaces.empty())
+      return;
+    const std::string entry = "Geometry/Interfaces above Sigma";
+    AssertThrow(scene.materials.n_layers == 1,
+                ExcMessage(entry +
+                           " states a cross-section of regions of one "
+                           "layer: Materials/Number of layers must be "
+                           "1 (layers are glued along Sigma only), "
+                           "got " +
+                           std::to_string(scene.materials.n_layers)));
+    AssertThrow(scene.mesh.mesh_files.empty(),
+                ExcMessage(entry + " cuts the rectangle's structured meshes "
+                                   "into regions: Mesh/Mesh files must be "
+                                   "empty"));
+    AssertThrow(scene.fracture.growth == CrackGrowth::none,
+                ExcMessage("Fracture/Crack growth moves the tips of Sigma "
+                           "only: with " +
+                           entry + " it must be none"));
   }
 
 

@@ -94,10 +94,41 @@ namespace bilayer
   } // namespace
 
 
+  namespace
+  {
+    /// The support radius of @p tip (its free distance set): half the free
+    /// distance for @p support_radius = 0, else that radius, refused where
+    /// it reaches an obstacle (@p interfaces: other interfaces are some).
+    void
+    set_support_radius(const double support_radius,
+                       const bool   interfaces,
+                       CrackTip    &tip)
+    {
+      if (support_radius == 0)
+        {
+          tip.support_radius = 0.5 * tip.free_distance;
+          return;
+        }
+      std::ostringstream range;
+      range << std::setprecision(6)
+            << "Fracture/Support radius = " << support_radius
+            << " reaches another tip, a corner of "
+            << "Sigma" << (interfaces ? ", another interface" : "")
+            << " or the outer boundary from the crack tip at (x, "
+            << "y) = (" << tip.point[0] << ", " << tip.point[1]
+            << "); allowed: (0, " << tip.free_distance << "), or 0 (automatic)";
+      AssertThrow(support_radius < tip.free_distance, ExcMessage(range.str()));
+      tip.support_radius = support_radius;
+    }
+  } // namespace
+
+
   std::vector<CrackTip>
   crack_tips(const InterfaceCurve                          &curve,
              const std::array<const Triangulation<2> *, 2> &meshes,
-             const double                                   support_radius)
+             const double                                   support_radius,
+             const unsigned int                             interface,
+             const std::vector<InterfaceCurve>             &other_interfaces)
   {
     const double          tol    = curve.tolerance();
     const auto           &pieces = curve.pieces();
@@ -111,6 +142,7 @@ namespace bilayer
           if (curve.crack().mouth(s))
             continue;
           CrackTip tip;
+          tip.interface = interface;
           tip.s         = s;
           tip.sign      = sign;
           tip.point     = curve.point(s);
@@ -155,6 +187,8 @@ namespace bilayer
           for (const auto *tria : meshes)
             if (tria != nullptr)
               d = std::min(d, distance_to_outer_boundary(tip.point, *tria));
+          for (const InterfaceCurve &other : other_interfaces)
+            d = std::min(d, other.distance(tip.point));
           return d;
         };
         double d = obstacles(first, last);
@@ -195,22 +229,7 @@ namespace bilayer
         if (free_distance == 0)
           continue;
         tip.free_distance = free_distance;
-        if (support_radius == 0)
-          tip.support_radius = 0.5 * free_distance;
-        else
-          {
-            std::ostringstream range;
-            range << std::setprecision(6)
-                  << "Fracture/Support radius = " << support_radius
-                  << " reaches another tip, a corner of "
-                  << "Sigma or the outer boundary from the crack tip at (x, "
-                  << "y) = (" << tip.point[0] << ", " << tip.point[1]
-                  << "); allowed: (0, " << free_distance
-                  << "), or 0 (automatic)";
-            AssertThrow(support_radius < free_distance,
-                        ExcMessage(range.str()));
-            tip.support_radius = support_radius;
-          }
+        set_support_radius(support_radius, !other_interfaces.empty(), tip);
       }
     return tips;
   }

@@ -268,44 +268,49 @@ namespace bilayer
       if (curved_contact && interface.contact_parameters().non_penetration)
         {
           const MultiplierSpace &space = interface.space();
-          const InterfaceCurve  &curve = interface.curve();
-          Vector<double>         tm, tp;
-          interface.coupling().crack_face_traces(w, tm, tp);
-          const auto         &bp = space.breakpoints(Layout::across_sigma);
-          const QGauss<1>     gauss(space.degree() + 2);
-          std::vector<double> shape;
+          std::vector<double>    shape;
           for (unsigned int t = 0; t < n; ++t)
             if (tips[t].defined() && tips[t].curved())
-              for (unsigned int e = 0; e + 1 < bp.size(); ++e)
-                {
-                  const double mid = 0.5 * (bp[e] + bp[e + 1]);
-                  if (!curve.crack().contains(mid) ||
-                      !fields[t].reaches(curve.point(mid), bp[e + 1] - bp[e]))
-                    continue;
-                  for (unsigned int q = 0; q < gauss.size(); ++q)
-                    {
-                      const double s_q =
-                        bp[e] + gauss.point(q)[0] * (bp[e + 1] - bp[e]);
-                      space.shape_values(Layout::across_sigma, s_q, shape);
-                      double mu_c = 0, jump = 0;
-                      for (unsigned int i = 0; i < shape.size(); ++i)
-                        {
-                          const unsigned int a = space.node(e, i);
-                          mu_c += shape[i] * space.contact_multiplier(mu, a);
-                          jump += shape[i] *
-                                  (tp(Layout::entry(a, Layout::tangential)) -
-                                   tm(Layout::entry(a, Layout::tangential)));
-                        }
-                      const Point<2> x = curve.point(s_q);
-                      // kappa: d tau / ds = kappa nu, towards the centre.
-                      const double kappa =
-                        fields[t].curvature(x, curve.normal(s_q));
-                      result[t].contact -=
-                        tips[t].sign *
-                        fields[t].cutoff((x - tips[t].point).norm()) * kappa *
-                        mu_c * jump * gauss.weight(q) * (bp[e + 1] - bp[e]);
-                    }
-                }
+              {
+                // The block across the tip's interface.
+                const unsigned int    b     = tips[t].interface;
+                const InterfaceCurve &curve = interface.curve(b);
+                Vector<double>        tm, tp;
+                interface.coupling().crack_face_traces(w, tm, tp, b);
+                const auto     &bp = space.breakpoints(b);
+                const QGauss<1> gauss(space.degree(b) + 2);
+                for (unsigned int e = 0; e + 1 < bp.size(); ++e)
+                  {
+                    const double mid = 0.5 * (bp[e] + bp[e + 1]);
+                    if (!curve.crack().contains(mid) ||
+                        !fields[t].reaches(curve.point(mid), bp[e + 1] - bp[e]))
+                      continue;
+                    for (unsigned int q = 0; q < gauss.size(); ++q)
+                      {
+                        const double s_q =
+                          bp[e] + gauss.point(q)[0] * (bp[e + 1] - bp[e]);
+                        space.shape_values(b, s_q, shape);
+                        double mu_c = 0, jump = 0;
+                        for (unsigned int i = 0; i < shape.size(); ++i)
+                          {
+                            const unsigned int a = space.node(e, i, b);
+                            mu_c +=
+                              shape[i] * space.contact_multiplier(mu, a, b);
+                            jump += shape[i] *
+                                    (tp(Layout::entry(a, Layout::tangential)) -
+                                     tm(Layout::entry(a, Layout::tangential)));
+                          }
+                        const Point<2> x = curve.point(s_q);
+                        // kappa: d tau / ds = kappa nu, towards the centre.
+                        const double kappa =
+                          fields[t].curvature(x, curve.normal(s_q));
+                        result[t].contact -=
+                          tips[t].sign *
+                          fields[t].cutoff((x - tips[t].point).norm()) * kappa *
+                          mu_c * jump * gauss.weight(q) * (bp[e + 1] - bp[e]);
+                      }
+                  }
+              }
         }
     }
 
@@ -330,76 +335,80 @@ namespace bilayer
       if (!interface.contact_parameters().frictional())
         return;
       const MultiplierSpace &space = interface.space();
-      const InterfaceCurve  &curve = interface.curve();
-      constexpr unsigned int mu_1  = Layout::across_sigma;
-      Vector<double>         tm, tp;
-      interface.coupling().crack_face_traces(w, tm, tp);
-      const auto mu_t = [&](const unsigned int a) {
-        return space.friction_bound(a) > 0 ?
-                 mu.block(mu_1)(Layout::entry(a, Layout::tangential)) :
-                 0.;
-      };
-      const auto         &bp = space.breakpoints(mu_1);
-      const QGauss<1>     gauss(space.degree() + 2);
-      std::vector<double> shape, derivative, nodal_mu_t;
+      std::vector<double>    shape, derivative, nodal_mu_t;
       for (unsigned int t = 0; t < tips.size(); ++t)
         if (tips[t].defined())
-          for (unsigned int e = 0; e + 1 < bp.size(); ++e)
-            {
-              const double h   = bp[e + 1] - bp[e];
-              const double mid = 0.5 * (bp[e] + bp[e + 1]);
-              if (!curve.crack().contains(mid) ||
-                  !fields[t].reaches(curve.point(mid), h))
-                continue;
-              // mu_t at the nodes of the segment. At a node off the crack
-              // (a tip: glued, its multiplier the gluing one) the faces
-              // still carry the force of the crack nodes next to it: there
-              // mu_t is the mean of the segment's friction nodes, not 0,
-              // which would miss the work of that force against the slip
-              // d/ds (u- - u+).tau ~ r^(-1/2) of the last segment (an
-              // error of order sqrt(h) at the tip).
-              const unsigned int n_nodes     = space.degree(mu_1) + 1;
-              double             crack_sum   = 0;
-              unsigned int       crack_count = 0;
-              nodal_mu_t.resize(n_nodes);
-              for (unsigned int i = 0; i < n_nodes; ++i)
-                {
-                  const unsigned int a = space.node(e, i);
-                  nodal_mu_t[i]        = mu_t(a);
-                  if (space.friction_node(a))
-                    {
-                      crack_sum += nodal_mu_t[i];
-                      ++crack_count;
-                    }
-                }
-              for (unsigned int i = 0; i < n_nodes; ++i)
-                if (!space.on_crack(space.node(e, i)) && crack_count > 0)
-                  nodal_mu_t[i] = crack_sum / crack_count;
-              for (unsigned int q = 0; q < gauss.size(); ++q)
-                {
-                  const double s_q = bp[e] + gauss.point(q)[0] * h;
-                  space.shape_values(mu_1, s_q, shape, derivative);
-                  double m = 0, d_jump_t = 0, jump_n = 0;
-                  for (unsigned int i = 0; i < shape.size(); ++i)
-                    {
-                      const unsigned int a = space.node(e, i);
-                      const unsigned int x = Layout::entry(a, 0),
-                                         y = Layout::entry(a, 1);
-                      m += shape[i] * nodal_mu_t[i];
-                      d_jump_t += derivative[i] * (tm(x) - tp(x));
-                      jump_n += shape[i] * (tp(y) - tm(y));
-                    }
-                  const Point<2> x = curve.point(s_q);
-                  const double   psi =
-                    fields[t].cutoff((x - tips[t].point).norm());
-                  double density = m * tips[t].sign * psi * d_jump_t;
-                  if (tips[t].curved())
-                    density += tips[t].sign * psi *
-                               fields[t].curvature(x, curve.normal(s_q)) * m *
-                               jump_n;
-                  result[t].friction += density * gauss.weight(q) * h;
-                }
-            }
+          {
+            // The block across the tip's interface.
+            const unsigned int    mu_1  = tips[t].interface;
+            const InterfaceCurve &curve = interface.curve(mu_1);
+            Vector<double>        tm, tp;
+            interface.coupling().crack_face_traces(w, tm, tp, mu_1);
+            const auto mu_t = [&](const unsigned int a) {
+              return space.friction_bound(a, mu_1) > 0 ?
+                       mu.block(mu_1)(Layout::entry(a, Layout::tangential)) :
+                       0.;
+            };
+            const auto     &bp = space.breakpoints(mu_1);
+            const QGauss<1> gauss(space.degree(mu_1) + 2);
+            for (unsigned int e = 0; e + 1 < bp.size(); ++e)
+              {
+                const double h   = bp[e + 1] - bp[e];
+                const double mid = 0.5 * (bp[e] + bp[e + 1]);
+                if (!curve.crack().contains(mid) ||
+                    !fields[t].reaches(curve.point(mid), h))
+                  continue;
+                // mu_t at the nodes of the segment. At a node off the crack
+                // (a tip: glued, its multiplier the gluing one) the faces
+                // still carry the force of the crack nodes next to it: there
+                // mu_t is the mean of the segment's friction nodes, not 0,
+                // which would miss the work of that force against the slip
+                // d/ds (u- - u+).tau ~ r^(-1/2) of the last segment (an
+                // error of order sqrt(h) at the tip).
+                const unsigned int n_nodes     = space.degree(mu_1) + 1;
+                double             crack_sum   = 0;
+                unsigned int       crack_count = 0;
+                nodal_mu_t.resize(n_nodes);
+                for (unsigned int i = 0; i < n_nodes; ++i)
+                  {
+                    const unsigned int a = space.node(e, i, mu_1);
+                    nodal_mu_t[i]        = mu_t(a);
+                    if (space.friction_node(a, mu_1))
+                      {
+                        crack_sum += nodal_mu_t[i];
+                        ++crack_count;
+                      }
+                  }
+                for (unsigned int i = 0; i < n_nodes; ++i)
+                  if (!space.on_crack(space.node(e, i, mu_1), mu_1) &&
+                      crack_count > 0)
+                    nodal_mu_t[i] = crack_sum / crack_count;
+                for (unsigned int q = 0; q < gauss.size(); ++q)
+                  {
+                    const double s_q = bp[e] + gauss.point(q)[0] * h;
+                    space.shape_values(mu_1, s_q, shape, derivative);
+                    double m = 0, d_jump_t = 0, jump_n = 0;
+                    for (unsigned int i = 0; i < shape.size(); ++i)
+                      {
+                        const unsigned int a = space.node(e, i, mu_1);
+                        const unsigned int x = Layout::entry(a, 0),
+                                           y = Layout::entry(a, 1);
+                        m += shape[i] * nodal_mu_t[i];
+                        d_jump_t += derivative[i] * (tm(x) - tp(x));
+                        jump_n += shape[i] * (tp(y) - tm(y));
+                      }
+                    const Point<2> x = curve.point(s_q);
+                    const double   psi =
+                      fields[t].cutoff((x - tips[t].point).norm());
+                    double density = m * tips[t].sign * psi * d_jump_t;
+                    if (tips[t].curved())
+                      density += tips[t].sign * psi *
+                                 fields[t].curvature(x, curve.normal(s_q)) * m *
+                                 jump_n;
+                    result[t].friction += density * gauss.weight(q) * h;
+                  }
+              }
+          }
     }
   } // namespace
 

@@ -46,15 +46,15 @@ namespace bilayer
     /// @p term: @p contact_weight times the complementarity of each segment
     /// of the mu_1 mesh under the face, by overlap, over @p scale.
     void
-    add_crack_complementarity(const Interface                    &interface,
+    add_crack_complementarity(const InterfaceCurve               &curve,
                               const std::vector<ContactSegment>  &contact,
                               const DoFHandler<2>::face_iterator &face,
                               const double contact_weight,
                               const double scale,
                               double      &term)
     {
-      const double s0 = interface.curve().parameter(face->vertex(0)),
-                   s1 = interface.curve().parameter(face->vertex(1));
+      const double s0 = curve.parameter(face->vertex(0)),
+                   s1 = curve.parameter(face->vertex(1));
       const double x0 = std::min(s0, s1);
       const double x1 = std::max(s0, s1);
       auto         it = std::lower_bound(contact.begin(),
@@ -98,6 +98,9 @@ namespace bilayer
                   FEFaceValues<2>                           &fe_face,
                   std::vector<SymmetricTensor<2, 2>>        &strain)
     {
+      // The interface of the face.
+      const unsigned int i =
+        cell->face(f)->boundary_id() - BoundaryIds::interface(0);
       const FEValuesExtractors::Vector displacement(0);
       const ElasticLaw                &law         = sub.law(*cell);
       const VolumeLoad *const          eigenstrain = eigenstrain_of(sub);
@@ -113,8 +116,11 @@ namespace bilayer
           const SymmetricTensor<2, 2> stress = law.stress(strain[q]);
           const Tensor<1, 2>          residual =
             stress * fe_face.normal_vector(q) -
-            interface.multiplier_traction(
-              mu, s, interface.curve().parameter(fe_face.quadrature_point(q)));
+            interface.multiplier_traction(mu,
+                                          s,
+                                          interface.curve(i).parameter(
+                                            fe_face.quadrature_point(q)),
+                                          i);
           sum += (residual * residual) / (scale * scale) * fe_face.JxW(q);
         }
       return sum;
@@ -125,16 +131,16 @@ namespace bilayer
     /// @p eta2: the residual of the multiplier load on the Sigma faces, and
     /// on the crack faces of layer 1 the complementarity.
     void
-    add_sigma_terms(const ElasticSubproblem           &sub,
-                    const unsigned int                 s,
-                    const Interface                   &interface,
-                    const Vector<double>              &w,
-                    const BlockVector<double>         &mu,
-                    const double                       S,
-                    const std::vector<ContactSegment> &contact,
-                    const double                       contact_weight,
-                    const Quadrature<1>               &face_quadrature,
-                    Vector<double>                    &eta2)
+    add_sigma_terms(const ElasticSubproblem                        &sub,
+                    const unsigned int                              s,
+                    const Interface                                &interface,
+                    const Vector<double>                           &w,
+                    const BlockVector<double>                      &mu,
+                    const double                                    S,
+                    const std::vector<std::vector<ContactSegment>> &contact,
+                    const double         contact_weight,
+                    const Quadrature<1> &face_quadrature,
+                    Vector<double>      &eta2)
     {
       FEFaceValues<2>                    fe_face(sub.mapping(),
                               sub.fe(),
@@ -151,12 +157,16 @@ namespace bilayer
                 sub, s, interface, w, mu, S, cell, f, fe_face, strain);
               double term = cell->face(f)->diameter() / 24. * sum;
               // Layer 1 on the crack: the complementarity of the segments
-              // of the mu_1 mesh under the face, by overlap.
-              if (Layout::layer(s) == Layer::first &&
-                  interface.curve().crack().contains(
-                    interface.curve().parameter(cell->face(f)->center())))
-                add_crack_complementarity(interface,
-                                          contact,
+              // of the mesh of the block across the interface under the
+              // face, by overlap.
+              const unsigned int i =
+                cell->face(f)->boundary_id() - BoundaryIds::interface(0);
+              const InterfaceCurve &curve = interface.curve(i);
+              if (interface.topology().layer(s) == Layer::first &&
+                  curve.crack().contains(
+                    curve.parameter(cell->face(f)->center())))
+                add_crack_complementarity(curve,
+                                          contact[i],
                                           cell->face(f),
                                           contact_weight,
                                           scale,
@@ -403,16 +413,16 @@ namespace bilayer
     /// with a VolumeLoad the cell residual, and with @p interface_terms the
     /// Sigma terms.
     void
-    squared_indicators(const ElasticSubproblem           &sub,
-                       const unsigned int                 s,
-                       const Interface                   &interface,
-                       const Vector<double>              &w,
-                       const BlockVector<double>         &mu,
-                       const double                       S,
-                       const std::vector<ContactSegment> &contact,
-                       const bool                         interface_terms,
-                       const double                       contact_weight,
-                       Vector<double>                    &eta2)
+    squared_indicators(const ElasticSubproblem   &sub,
+                       const unsigned int         s,
+                       const Interface           &interface,
+                       const Vector<double>      &w,
+                       const BlockVector<double> &mu,
+                       const double               S,
+                       const std::vector<std::vector<ContactSegment>> &contact,
+                       const bool      interface_terms,
+                       const double    contact_weight,
+                       Vector<double> &eta2)
     {
       const auto &tria = sub.dof_handler().get_triangulation();
       eta2.reinit(tria.n_active_cells());
@@ -461,20 +471,21 @@ namespace bilayer
     /// subproblems, sent to all processes and summed in the order of the
     /// subproblems, square root times @p S; their energies are added to
     /// @p energy_estimate.
-    std::array<Vector<double>, Layout::n_subdomains>
+    std::vector<Vector<double>>
     subdomain_indicators(
+      const Topology                                 &topology,
       const PerSubproblem<const ElasticSubproblem *> &subproblems,
       PerSubproblem<Vector<double>>                  &squared,
       const double                                    S,
       double                                         &energy_estimate)
     {
-      std::array<Vector<double>, Layout::n_subdomains> eta;
-      for (const Subdomain sd : {Subdomain::minus, Subdomain::plus})
+      std::vector<Vector<double>> eta(topology.n_regions());
+      for (const unsigned int r : Layout::indices(topology.n_regions()))
         {
           Vector<double> sum;
-          for (unsigned int s = Layout::index(Layer::first, sd);
+          for (unsigned int s = topology.index(Layer::first, r);
                s < subproblems.size();
-               s += Layout::n_subdomains)
+               s += topology.n_regions())
             if (subproblems[s] != nullptr)
               {
                 if (!subproblems[s]->owned())
@@ -490,7 +501,7 @@ namespace bilayer
                 else
                   sum += squared[s];
               }
-          auto &eta_sd = eta[static_cast<unsigned int>(sd)];
+          auto &eta_sd = eta[r];
           eta_sd.reinit(sum.size());
           for (unsigned int i = 0; i < sum.size(); ++i)
             eta_sd[i] = std::sqrt(sum[i]) * S;
@@ -500,7 +511,7 @@ namespace bilayer
   } // namespace
 
 
-  std::array<Vector<double>, Layout::n_subdomains>
+  std::vector<Vector<double>>
   estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Interface                                &interface,
                  const Solutions                                &w_in,
@@ -525,10 +536,12 @@ namespace bilayer
     // The squared indicator of each subproblem, evaluated by its owner
     // (the whole solution is needed) and sent to all processes, then
     // summed per subdomain in the order of the subproblems.
-    PerSubproblem<Vector<double>>     squared(subproblems.size());
-    const std::vector<ContactSegment> contact =
-      interface_terms ? contact_residual(interface, w, mu) :
-                        std::vector<ContactSegment>();
+    PerSubproblem<Vector<double>> squared(subproblems.size());
+    // Per interface.
+    std::vector<std::vector<ContactSegment>> contact(interface.n_interfaces());
+    if (interface_terms)
+      for (const unsigned int i : Layout::indices(contact.size()))
+        contact[i] = contact_residual(interface, w, mu, i);
     // The subproblems as parallel tasks (each writes its own squared[s]).
     Tasks tasks;
     for (const unsigned int s : Layout::indices(subproblems.size()))
@@ -547,9 +560,9 @@ namespace bilayer
         });
     tasks.join_all();
 
-    double                                           energy_estimate = 0;
-    std::array<Vector<double>, Layout::n_subdomains> eta =
-      subdomain_indicators(subproblems, squared, S, energy_estimate);
+    double                      energy_estimate = 0;
+    std::vector<Vector<double>> eta             = subdomain_indicators(
+      interface.topology(), subproblems, squared, S, energy_estimate);
     if (global_estimate != nullptr)
       *global_estimate = std::sqrt(energy_estimate) * S;
     return eta;

@@ -84,7 +84,12 @@ namespace bilayer
     std::ostringstream x;
     x << std::setprecision(6);
     if (along_x)
-      x << "x = " << tip.point[0];
+      {
+        x << "x = " << tip.point[0];
+        if (tip.interface > 0)
+          x << " on interface " << tip.interface + 1 << " (y = " << tip.point[1]
+            << ")";
+      }
     else
       x << "s = " << tip.s << ", (x, y) = (" << tip.point[0] << ", "
         << tip.point[1] << ")";
@@ -115,13 +120,16 @@ namespace bilayer
 
   std::vector<std::string>
   release_notes(const std::vector<EnergyReleaseRate> &release,
-                const bool                            along_x)
+                const bool                            along_x,
+                const int                             interface)
   {
     std::vector<std::string> notes;
     for (unsigned int t = 0; t < release.size(); ++t)
       {
         const EnergyReleaseRate &g = release[t];
-        std::ostringstream       line;
+        if (interface >= 0 && g.tip.interface != unsigned(interface))
+          continue;
+        std::ostringstream line;
         line << std::setprecision(10) << "crack tip " << t + 1 << " at "
              << tip_position(g.tip, along_x) << ", growing along ("
              << g.tip.direction[0] + 0. << ", " << g.tip.direction[1] + 0.

@@ -24,21 +24,23 @@ namespace bilayer
                           const double               length)
   {
     const MultiplierSpace &space = interface.space();
-    constexpr unsigned int mu_1  = Layout::across_sigma;
-    const unsigned int     n_t = Layout::tangential, n_n = Layout::normal;
-    Vector<double>         tm, tp;
-    interface.coupling().crack_face_traces(w, tm, tp);
+    // The block across the tip's interface.
+    const unsigned int mu_1 = tip.interface;
+    const unsigned int n_t = Layout::tangential, n_n = Layout::normal;
+    Vector<double>     tm, tp;
+    interface.coupling().crack_face_traces(w, tm, tp, mu_1);
     // The jump of layer 1 at node a in its frame: 0 on the glued part (the
     // tip), the opening of a crack node 0 where the faces touch (mu_c > 0,
     // complementarity) or penetrate.
     const auto jump = [&](const unsigned int a) -> std::array<double, 2> {
-      if (!space.on_crack(a))
+      if (!space.on_crack(a, mu_1))
         return {{0., 0.}};
       const double opening =
         tp(Layout::entry(a, n_n)) - tm(Layout::entry(a, n_n));
-      return {
-        {tp(Layout::entry(a, n_t)) - tm(Layout::entry(a, n_t)),
-         space.contact_multiplier(mu, a) > 0 ? 0. : std::max(opening, 0.)}};
+      return {{tp(Layout::entry(a, n_t)) - tm(Layout::entry(a, n_t)),
+               space.contact_multiplier(mu, a, mu_1) > 0 ?
+                 0. :
+                 std::max(opening, 0.)}};
     };
     std::vector<double>   shape;
     std::array<double, 3> c = {{0., 0., 0.}};
@@ -47,7 +49,7 @@ namespace bilayer
     // the point Delta - r behind.
     for (unsigned int a = 0; a < space.n_nodes(mu_1); ++a)
       {
-        const double r = tip.sign * (space.node_position(a) - tip.s);
+        const double r = tip.sign * (space.node_position(a, mu_1) - tip.s);
         if (r < -1e-12 * length || r >= length * (1 - 1e-12))
           continue;
         std::array<double, 2> F;
@@ -59,7 +61,8 @@ namespace bilayer
           space.shape_values(mu_1, tip.s - tip.sign * (length - r), shape);
         for (unsigned int i = 0; i < shape.size(); ++i)
           {
-            const std::array<double, 2> node_jump = jump(space.node(e, i));
+            const std::array<double, 2> node_jump =
+              jump(space.node(e, i, mu_1));
             for (const unsigned int comp : {n_t, n_n})
               d[comp] += shape[i] * node_jump[comp];
           }
@@ -75,18 +78,21 @@ namespace bilayer
 
 
   bool
-  materials_agree_across_sigma(
-    const PerSubproblem<const ElasticSubproblem *> &subproblems)
+  materials_agree_across(
+    const PerSubproblem<const ElasticSubproblem *> &subproblems,
+    const Topology                                 &topology,
+    const unsigned int                              i)
   {
     // Each layer's two sides.
-    for (unsigned int s = 0; s < subproblems.size(); s += Layout::n_subdomains)
+    for (const unsigned int l : Layout::indices(topology.n_slots()))
       {
-        const ElasticSubproblem *minus = subproblems[s],
-                                *plus  = subproblems[s + 1];
+        const ElasticSubproblem
+          *minus = subproblems[topology.index(static_cast<Layer>(l), i)],
+          *plus  = subproblems[topology.index(static_cast<Layer>(l), i + 1)];
         if (minus == nullptr || plus == nullptr)
           continue;
-        const SymmetricTensor<4, 2> C_minus = minus->sigma_law().tangent(),
-                                    C_plus  = plus->sigma_law().tangent();
+        const SymmetricTensor<4, 2> C_minus = minus->interface_law(i).tangent(),
+                                    C_plus  = plus->interface_law(i).tangent();
         double largest = 0, difference = 0;
         for (unsigned int i = 0; i < 2; ++i)
           for (unsigned int j = 0; j < 2; ++j)
@@ -116,14 +122,18 @@ namespace bilayer
              const double                                    length,
              std::vector<EnergyReleaseRate>                 &release)
   {
-    const bool   agree = materials_agree_across_sigma(subproblems);
-    const double stiffness =
-      subproblems[Layout::u_minus] != nullptr ?
-        subproblems[Layout::u_minus]->sigma_law().energy_norm_scale() :
-        subproblems[Layout::u_plus]->sigma_law().energy_norm_scale();
+    const Topology &topology = interface.topology();
     for (unsigned int t = 0; t < release.size(); ++t)
       {
         EnergyReleaseRate &g = release[t];
+        // The materials at the tip's interface.
+        const unsigned int i = g.tip.interface;
+        const bool     agree = materials_agree_across(subproblems, topology, i);
+        const Coupling across = topology.coupling(i);
+        const double   stiffness =
+          subproblems[across.first] != nullptr ?
+              subproblems[across.first]->interface_law(i).energy_norm_scale() :
+              subproblems[across.second]->interface_law(i).energy_norm_scale();
         g.G_I = g.G_II = g.phase_angle = g.mode_split_length = not_a_number;
         g.mode_split_note.clear();
         if (!std::isfinite(g.G))

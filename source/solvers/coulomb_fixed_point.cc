@@ -30,24 +30,31 @@ namespace bilayer
                            Solutions           &w,
                            FixedPointRecord    &record) const
   {
-    const double           F              = coefficient;
-    const MultiplierSpace &space          = interface.space();
-    const auto             coulomb_bounds = [&]() {
-      std::vector<double> bounds(space.n_nodes(Layout::across_sigma), 0.);
-      for (unsigned int a = 0; a < bounds.size(); ++a)
-        if (space.friction_node(a))
-          bounds[a] = F * std::max(space.contact_multiplier(mu, a), 0.);
+    const double           F     = coefficient;
+    const MultiplierSpace &space = interface.space();
+    // The bounds of the crack nodes of each interface's block.
+    const auto coulomb_bounds = [&]() {
+      std::vector<std::vector<double>> bounds(interface.n_interfaces());
+      for (const unsigned int i : Layout::indices(bounds.size()))
+        {
+          bounds[i].assign(space.n_nodes(i), 0.);
+          for (unsigned int a = 0; a < bounds[i].size(); ++a)
+            if (space.friction_node(a, i))
+              bounds[i][a] =
+                F * std::max(space.contact_multiplier(mu, a, i), 0.);
+        }
       return bounds;
     };
-    std::vector<double> bounds = coulomb_bounds();
-    SolverResult        total;
+    std::vector<std::vector<double>> bounds = coulomb_bounds();
+    SolverResult                     total;
     // The bounds come from Tresca solves accurate to their own round-off:
     // changes below a few thousand machine epsilons are noise, not progress.
     const double target          = std::max(parameters.tolerance, 1e-12);
     double       previous_change = std::numeric_limits<double>::infinity();
     for (unsigned int k = 1; k <= max_iterations; ++k)
       {
-        interface.set_friction_bounds(bounds);
+        for (const unsigned int i : Layout::indices(bounds.size()))
+          interface.set_friction_bounds(bounds[i], i);
         space.project(mu);
         const SolverResult r   = tresca->solve(subproblems, interface, mu, w);
         const SolverResult sum = total;
@@ -58,14 +65,15 @@ namespace bilayer
         total.linear_iterations += sum.linear_iterations;
         total.setup_seconds += sum.setup_seconds;
         total.iteration_seconds += sum.iteration_seconds;
-        record.iterations                = k;
-        const std::vector<double> next   = coulomb_bounds();
-        double                    change = 0, largest = 0;
-        for (unsigned int a = 0; a < next.size(); ++a)
-          {
-            change  = std::max(change, std::abs(next[a] - bounds[a]));
-            largest = std::max(largest, next[a]);
-          }
+        record.iterations                             = k;
+        const std::vector<std::vector<double>> next   = coulomb_bounds();
+        double                                 change = 0, largest = 0;
+        for (const unsigned int i : Layout::indices(next.size()))
+          for (unsigned int a = 0; a < next[i].size(); ++a)
+            {
+              change  = std::max(change, std::abs(next[i][a] - bounds[i][a]));
+              largest = std::max(largest, next[i][a]);
+            }
         record.bound_change = largest > 0 ? change / largest : change;
         pcout << "  Coulomb fixed point " << k << ": bounds F mu_c changed by "
               << record.bound_change << " of the largest bound ("

@@ -15,6 +15,7 @@
 #include <bilayer/subproblem/subproblem.h>
 
 #include <cmath>
+#include <set>
 
 namespace bilayer
 {
@@ -42,9 +43,11 @@ namespace bilayer
     const unsigned int                degree,
     const std::vector<LayerMaterial> &materials,
     const std::vector<double>        &ply_heights,
-    const Distribution               &distribution)
+    const Distribution               &distribution,
+    const unsigned int                n_regions)
     : layer_(layer)
     , subdomain_(subdomain)
+    , n_regions(n_regions)
     , laws_(materials, ply_heights)
     , sigma_ply(laws_.ply_on_boundary(triangulation, BoundaryIds::sigma))
     , moduli_entries_(
@@ -83,7 +86,7 @@ namespace bilayer
   std::string
   ElasticSubproblem::name() const
   {
-    return Layout::name(index());
+    return Topology(n_regions).name(index());
   }
 
 
@@ -259,7 +262,7 @@ namespace bilayer
     const IndexSet on_sigma =
       DoFTools::extract_boundary_dofs(dofs,
                                       ComponentMask(),
-                                      {BoundaryIds::sigma});
+                                      BoundaryIds::interfaces(n_regions));
     trace_dofs_.assign(on_sigma.begin(), on_sigma.end());
     extents.reinit(dofs);
     if (!owned())

@@ -5,6 +5,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <cmath>
+#include <set>
 
 /**
  * @file
@@ -22,7 +23,8 @@ namespace bilayer
    * free). Which parts form Gamma_D is GeometryParameters::clamped. Every
    * face on Sigma has the id `sigma`, glued or cracked: which part of Sigma
    * is the crack gamma_c is the interface curve's CrackSet alone, so that the
-   * crack can change on a fixed mesh.
+   * crack can change on a fixed mesh. The faces on interface i (Sigma: 0)
+   * have the id interface(i).
    */
   namespace BoundaryIds
   {
@@ -33,14 +35,45 @@ namespace bilayer
     /// Boundary part i of a Gmsh scene has id i (< free).
     constexpr dealii::types::boundary_id free  = 199;
     constexpr dealii::types::boundary_id sigma = 200;
+    /// The most interfaces a scene may have (ids sigma ... 254).
+    constexpr unsigned int max_interfaces = 55;
+
+    constexpr dealii::types::boundary_id
+    interface(const unsigned int i)
+    {
+      return sigma + i;
+    }
+
+    /// The ids of the interfaces of a scene of @p n_regions regions (the
+    /// faces of the subproblems' traces).
+    inline std::set<dealii::types::boundary_id>
+    interfaces(const unsigned int n_regions)
+    {
+      std::set<dealii::types::boundary_id> ids;
+      for (unsigned int i = 0; i + 1 < n_regions; ++i)
+        ids.insert(interface(i));
+      return ids;
+    }
   } // namespace BoundaryIds
 
-  /// Whether the face @p face of a subdomain mesh lies on Sigma.
+  /// Whether the face @p face of a subdomain mesh lies on an interface
+  /// (Sigma or another).
   template <typename FaceIterator>
   inline bool
   on_sigma(const FaceIterator &face)
   {
-    return face->at_boundary() && face->boundary_id() == BoundaryIds::sigma;
+    return face->at_boundary() && face->boundary_id() >= BoundaryIds::sigma &&
+           face->boundary_id() <
+             BoundaryIds::interface(BoundaryIds::max_interfaces);
+  }
+
+  /// Whether the face @p face of a subdomain mesh lies on interface @p i.
+  template <typename FaceIterator>
+  inline bool
+  on_interface(const FaceIterator &face, const unsigned int i)
+  {
+    return face->at_boundary() &&
+           face->boundary_id() == BoundaryIds::interface(i);
   }
 
   /**

@@ -9,15 +9,17 @@
 
 /**
  * @file
- * The layout of the problem: N layers stacked through the thickness (the
- * paper's two, u and v, or more), each cut along Sigma into its parts on the
- * two regions Omega- and Omega+, give 2N subproblems, coupled by 2N - 1
- * multiplier blocks: layer 1 across Sigma (contact on the crack), and on each
- * region each layer k >= 2 glued to layer k - 1 along Sigma. The crack is a
- * set of pieces of Sigma. Every loop over subproblems or blocks, every index
- * into a per-subproblem array and every "is this point of Sigma on the
- * crack" goes through the names defined here. A scene with one layer keeps
- * the slots of layer 2 (absent: null subproblems, blocks without nodes).
+ * The layout of the problem (Topology): R regions of the plane (Omega- and
+ * Omega+, or more, stacked from the bottom) separated by R - 1 interfaces
+ * (Sigma, ...), and N layers stacked through the thickness (the paper's two,
+ * u and v, or more) on two regions; a subproblem per layer and region,
+ * coupled by multiplier blocks across the interfaces (contact on their
+ * cracks) and between the layers along Sigma. A crack is a set of pieces of
+ * its interface. Every loop over subproblems or blocks, every index into a
+ * per-subproblem array and every "is this point of the interface on the
+ * crack" goes through the names defined here. A two-region scene with one
+ * layer keeps the slots of layer 2 (absent: null subproblems, blocks
+ * without nodes).
  */
 namespace bilayer
 {
@@ -36,8 +38,9 @@ namespace bilayer
     plus  = 1
   };
 
-  /// The first multiplier blocks (docs/problem.md §3); a stack of N layers
-  /// has the blocks 0 ... 2N - 2 (Layout::coupled()).
+  /// The first multiplier blocks of a two-region scene (docs/problem.md
+  /// §3); a stack of N layers has the blocks 0 ... 2N - 2
+  /// (Topology::coupling()).
   enum class MultiplierBlock
   {
     /// mu_1: layer 1 across Sigma (u- against u+), contact on the crack.
@@ -64,46 +67,15 @@ namespace bilayer
       return layers < min_layers ? min_layers : layers;
     }
 
-    /// The subproblems of a stack of @p layers layers (slots: at least 2).
-    constexpr unsigned int
-    n_subproblems(const unsigned int layers)
-    {
-      return n_subdomains * n_slots(layers);
-    }
-
-    /// The multiplier blocks of a stack of @p layers layers.
-    constexpr unsigned int
-    n_blocks(const unsigned int layers)
-    {
-      return 2 * n_slots(layers) - 1;
-    }
-
-    /// Position of subproblem (layer, subdomain) in every per-subproblem
-    /// array: u- = 0, u+ = 1, v- = 2, v+ = 3, layer k on Omega-: 2(k - 1).
+    /// Position of subproblem (layer, subdomain) of a two-region scene in
+    /// every per-subproblem array: u- = 0, u+ = 1, v- = 2, v+ = 3, layer k
+    /// on Omega-: 2(k - 1) (Topology::index(); with more regions only layer
+    /// 1 exists, and region r's index is r for both).
     constexpr unsigned int
     index(const Layer layer, const Subdomain subdomain)
     {
       return n_subdomains * static_cast<unsigned int>(layer) +
              static_cast<unsigned int>(subdomain);
-    }
-
-    constexpr Layer
-    layer(const unsigned int subproblem)
-    {
-      return static_cast<Layer>(subproblem / n_subdomains);
-    }
-
-    constexpr Subdomain
-    subdomain(const unsigned int subproblem)
-    {
-      return static_cast<Subdomain>(subproblem % n_subdomains);
-    }
-
-    /// The subproblem of layer 1 on the same side as @p subproblem.
-    constexpr unsigned int
-    first_layer_partner(const unsigned int subproblem)
-    {
-      return index(Layer::first, subdomain(subproblem));
     }
 
     constexpr unsigned int u_minus = index(Layer::first, Subdomain::minus);
@@ -175,23 +147,6 @@ namespace bilayer
       return l == 0 ? "u" : l == 1 ? "v" : "w" + std::to_string(l + 1);
     }
 
-    /// "u_minus", "u_plus", "v_minus", ..., "w3_plus": the subproblem in
-    /// the names of output fields and columns.
-    inline std::string
-    field_name(const unsigned int subproblem)
-    {
-      return layer_letter(layer(subproblem)) +
-             (subdomain(subproblem) == Subdomain::minus ? "_minus" : "_plus");
-    }
-
-    /// "u-", "u+", "v-", "v+", "w3-", ...
-    inline std::string
-    name(const unsigned int subproblem)
-    {
-      return layer_letter(layer(subproblem)) +
-             (subdomain(subproblem) == Subdomain::minus ? "-" : "+");
-    }
-
     constexpr unsigned int
     index(const MultiplierBlock block)
     {
@@ -201,24 +156,6 @@ namespace bilayer
     constexpr unsigned int across_sigma = index(MultiplierBlock::across_sigma);
     constexpr unsigned int glue_minus   = index(MultiplierBlock::glue_minus);
     constexpr unsigned int glue_plus    = index(MultiplierBlock::glue_plus);
-
-    /**
-     * The two subproblems that block @p b couples, (first, second): the jump
-     * of block b is first - second, the multiplier acts on first with the
-     * sign -1 and on second with +1. mu_1: (u-, u+); the gluing block of
-     * layer k on a side: (layer k - 1, layer k) on that side, so lambda-:
-     * (u-, v-), lambda+: (u+, v+).
-     */
-    constexpr std::pair<unsigned int, unsigned int>
-    coupled(const unsigned int b)
-    {
-      if (b == across_sigma)
-        return std::make_pair(u_minus, u_plus);
-      const unsigned int upper = (b - 1) / n_subdomains + 1;
-      const Subdomain    side  = static_cast<Subdomain>((b - 1) % n_subdomains);
-      return std::make_pair(index(static_cast<Layer>(upper - 1), side),
-                            index(static_cast<Layer>(upper), side));
-    }
 
     /// Entry of component @p c of node @p a in a multiplier block.
     constexpr unsigned int
@@ -233,13 +170,162 @@ namespace bilayer
     constexpr unsigned int normal     = 1;
   } // namespace Layout
 
-  /// One value per subproblem, indexed by Layout::index(): sized
-  /// Layout::n_subproblems(layers).
+  /**
+   * One coupling of two subproblems by a multiplier block: across an
+   * interface (layer 1 of the region below it against layer 1 of the region
+   * above it: glue, and on the interface's crack contact and friction), or
+   * the gluing of layer k to layer k - 1 on one region along Sigma. The
+   * jump of the block is first - second; the multiplier acts on first with
+   * the sign -1 and on second with +1.
+   */
+  struct Coupling
+  {
+    enum class Kind
+    {
+      across,
+      glue
+    };
+    Kind kind = Kind::across;
+    /// The interface that carries the block's nodes (Sigma: 0).
+    unsigned int interface = 0;
+    /// Across an interface: the region below it; gluing: the region whose
+    /// layers it glues.
+    unsigned int region = 0;
+    unsigned int first = 0, second = 0;
+  };
+
+  /**
+   * The decomposition as data: R regions of the plane, stacked from the
+   * bottom and separated by the R - 1 interfaces (Sigma is interface 0,
+   * between region 0 = Omega- and region 1 = Omega+), and N layers through
+   * the thickness. Subproblem (layer l, region r) has the index R l + r;
+   * the multiplier blocks are first the R - 1 blocks across the interfaces
+   * (block i across interface i), then the gluing blocks of each layer
+   * k >= 2 on each region ((k - 2) R + r + R - 1). Several layers are
+   * stacked only on two regions (Sigma). A two-region scene keeps at least
+   * two layer slots (a one-layer scene's layer 2 absent: null subproblems,
+   * blocks without nodes), so u- = 0, u+ = 1, v- = 2, v+ = 3 as
+   * Layout::index() numbers them.
+   */
+  class Topology
+  {
+  public:
+    explicit Topology(const unsigned int regions = 2,
+                      const unsigned int layers  = 2)
+      : regions(regions)
+      , slots(regions == Layout::n_subdomains ? Layout::n_slots(layers) :
+                                                layers)
+    {}
+
+    unsigned int
+    n_regions() const
+    {
+      return regions;
+    }
+    unsigned int
+    n_interfaces() const
+    {
+      return regions - 1;
+    }
+    /// The layer slots (at least two with two regions).
+    unsigned int
+    n_slots() const
+    {
+      return slots;
+    }
+    unsigned int
+    n_subproblems() const
+    {
+      return regions * slots;
+    }
+    unsigned int
+    n_blocks() const
+    {
+      return n_interfaces() + regions * (slots - 1);
+    }
+    unsigned int
+    index(const Layer layer, const unsigned int region) const
+    {
+      return regions * static_cast<unsigned int>(layer) + region;
+    }
+    Layer
+    layer(const unsigned int subproblem) const
+    {
+      return static_cast<Layer>(subproblem / regions);
+    }
+    unsigned int
+    region(const unsigned int subproblem) const
+    {
+      return subproblem % regions;
+    }
+    /// The coupling of block @p b.
+    Coupling
+    coupling(const unsigned int b) const
+    {
+      Coupling c;
+      if (b < n_interfaces())
+        {
+          c.kind      = Coupling::Kind::across;
+          c.interface = b;
+          c.region    = b;
+          c.first     = index(Layer::first, b);
+          c.second    = index(Layer::first, b + 1);
+          return c;
+        }
+      const unsigned int g     = b - n_interfaces();
+      const unsigned int upper = g / regions + 1;
+      c.kind                   = Coupling::Kind::glue;
+      c.interface              = 0;
+      c.region                 = g % regions;
+      c.first                  = index(static_cast<Layer>(upper - 1), c.region);
+      c.second                 = index(static_cast<Layer>(upper), c.region);
+      return c;
+    }
+    /// Whether block @p b couples across an interface.
+    bool
+    across(const unsigned int b) const
+    {
+      return b < n_interfaces();
+    }
+    /// The side of interface @p i that region @p r lies on: 0 below (Omega-
+    /// of Sigma), 1 above.
+    static unsigned int
+    side(const unsigned int i, const unsigned int r)
+    {
+      return r - i;
+    }
+    /// "u_minus", "u_plus", "v_minus", ..., "w3_plus" (two regions), or
+    /// "u_1", "u_2", ... (layer 1 of the regions 1, 2, ...): the subproblem
+    /// in the names of output fields and columns.
+    std::string
+    field_name(const unsigned int subproblem) const
+    {
+      const std::string letter = Layout::layer_letter(layer(subproblem));
+      if (regions != Layout::n_subdomains)
+        return letter + "_" + std::to_string(region(subproblem) + 1);
+      return letter + (region(subproblem) == 0 ? "_minus" : "_plus");
+    }
+    /// "u-", "u+", "v-", "v+", "w3-", ... or "u(1)", "u(2)", ...
+    std::string
+    name(const unsigned int subproblem) const
+    {
+      const std::string letter = Layout::layer_letter(layer(subproblem));
+      if (regions != Layout::n_subdomains)
+        return letter + "(" + std::to_string(region(subproblem) + 1) + ")";
+      return letter + (region(subproblem) == 0 ? "-" : "+");
+    }
+
+  private:
+    unsigned int regions;
+    unsigned int slots;
+  };
+
+  /// One value per subproblem, indexed by Topology::index(): sized
+  /// Topology::n_subproblems().
   template <typename T>
   using PerSubproblem = std::vector<T>;
 
-  /// One value per multiplier block, indexed by Layout::index(block): sized
-  /// Layout::n_blocks(layers).
+  /// One value per multiplier block: sized Topology::n_blocks().
   template <typename T>
   using PerBlock = std::vector<T>;
 

@@ -164,6 +164,17 @@ namespace bilayer
     {
       return *subproblems[Layout::index(layer, subdomain)];
     }
+    /// Subproblem @p s (Topology::index()).
+    const ElasticSubproblem &
+    subproblem(const unsigned int s) const
+    {
+      return *subproblems[s];
+    }
+    const Topology &
+    layout() const
+    {
+      return topology;
+    }
 
     /**
      * Replace the error indicators by which the next adaptive cycle marks
@@ -172,16 +183,14 @@ namespace bilayer
      * driver can refine by a criterion of its own.
      */
     void
-    set_indicators(const std::array<dealii::Vector<double>,
-                                    Layout::n_subdomains> &new_indicators);
+    set_indicators(const std::vector<dealii::Vector<double>> &new_indicators);
 
     /// As above, from single precision indicators.
     void
-    set_indicators(const std::array<dealii::Vector<float>, Layout::n_subdomains>
-                     &new_indicators);
+    set_indicators(const std::vector<dealii::Vector<float>> &new_indicators);
 
     /// The error indicators of the last cycle (estimate_error()).
-    const std::array<dealii::Vector<double>, Layout::n_subdomains> &
+    const std::vector<dealii::Vector<double>> &
     error_indicators() const
     {
       return indicators;
@@ -388,6 +397,8 @@ namespace bilayer
     const Scene         scene;
     std::ostream       &out;
     const Distribution &distribution;
+    /// The regions, interfaces and layers of the scene.
+    const Topology topology;
 
     /// Per subproblem: its body force and eigenstrain (Loads/Layer k, and
     /// the thermal strain of its material under Loads/Temperature change),
@@ -421,7 +432,7 @@ namespace bilayer
     std::vector<double> tip_cell_sizes;
     /// Error indicators of the last cycle, per subdomain (adaptive
     /// refinement).
-    std::array<dealii::Vector<double>, Layout::n_subdomains> indicators;
+    std::vector<dealii::Vector<double>> indicators;
   };
 } // namespace bilayer
 

@@ -83,11 +83,13 @@ namespace bilayer
   };
 
   /**
-   * The two subdomains Omega- = (x_min, x_max) x (y_min, y_Sigma) and
-   * Omega+ = (x_min, x_max) x (y_Sigma, y_max), each with its own serial
-   * Triangulation: structured (GridGenerator, the same number of cells
-   * along Sigma on both sides, so the traces match) or read from Gmsh
-   * files (GridIn). The crack end points must be mesh vertices (checked).
+   * The regions: the two subdomains Omega- = (x_min, x_max) x (y_min,
+   * y_Sigma) and Omega+ = (x_min, x_max) x (y_Sigma, y_max), or the bands of
+   * the rectangle between its interfaces (Geometry/Interfaces above Sigma),
+   * each with its own serial Triangulation: structured (GridGenerator, the
+   * same number of cells along the interfaces on all regions, so the traces
+   * match) or read from Gmsh files (GridIn). The interfaces are curves
+   * (Sigma first). The crack end points must be mesh vertices (checked).
    */
   class Geometry
   {
@@ -123,21 +125,44 @@ namespace bilayer
      * its velocity field theta holds them (fracture.h).
      */
     void
-    refine(const std::array<dealii::Vector<double>, 2> &indicators,
-           const std::vector<PointResolution>          &resolve = {});
+    refine(const std::vector<dealii::Vector<double>> &indicators,
+           const std::vector<PointResolution>        &resolve = {});
+
+    unsigned int
+    n_regions() const
+    {
+      return triangulations.size();
+    }
 
     const dealii::Triangulation<2> &
-    triangulation(const Subdomain subdomain) const;
+    triangulation(const unsigned int region) const;
+    const dealii::Triangulation<2> &
+    triangulation(const Subdomain subdomain) const
+    {
+      return triangulation(static_cast<unsigned int>(subdomain));
+    }
 
     MeshStatistics
-    statistics(const Subdomain subdomain) const;
+    statistics(const unsigned int region) const;
+    MeshStatistics
+    statistics(const Subdomain subdomain) const
+    {
+      return statistics(static_cast<unsigned int>(subdomain));
+    }
 
     /// Sigma as a curve: parametrisation, normals, crack pieces and the
     /// ends on Gamma_D (set by create_meshes()).
     const InterfaceCurve &
     interface_curve() const
     {
-      return curve;
+      return curves[0];
+    }
+
+    /// Every interface (Sigma first) as a curve.
+    const std::vector<InterfaceCurve> &
+    interface_curves() const
+    {
+      return curves;
     }
 
     /**
@@ -153,10 +178,11 @@ namespace bilayer
     void
     set_crack(const CrackSet &crack);
 
-    /// The parameters s of the vertices of Sigma that both meshes have,
-    /// increasing: where a crack tip may stand (Fracture/Crack growth).
+    /// The parameters s of the vertices of interface @p i (Sigma: 0) that
+    /// both meshes have, increasing: where a crack tip may stand
+    /// (Fracture/Crack growth).
     std::vector<double>
-    sigma_vertex_parameters() const;
+    sigma_vertex_parameters(const unsigned int i = 0) const;
 
     /// P of Table 1: vertices on Sigma.
     unsigned int
@@ -174,6 +200,10 @@ namespace bilayer
   private:
     void
     check_crack_vertices() const;
+    /// The crack end points of interface @p i are vertices of the meshes
+    /// of its two regions.
+    void
+    check_crack_vertices(const unsigned int i) const;
 
     /// Refuse a mesh read from a file whose cells are inverted or
     /// degenerate, or whose boundary has faces inside the subdomain (slits,
@@ -183,11 +213,11 @@ namespace bilayer
                 const Subdomain                 subdomain,
                 const std::string              &file) const;
 
-    /// The structured mesh of @p subdomain: @p cells_along cells along
+    /// The structured mesh of @p region: @p cells_along cells along
     /// Sigma, @p cells_across across (refinement cycle @p cycle), its rows
     /// fitted to the ply heights.
     void
-    make_subdomain(const Subdomain           subdomain,
+    make_subdomain(const unsigned int        region,
                    const unsigned int        cells_along,
                    const unsigned int        cells_across,
                    const unsigned int        cycle,
@@ -204,10 +234,11 @@ namespace bilayer
     fit_crack_tips(const unsigned int        n_x,
                    dealii::Triangulation<2> &tria) const;
 
-    /// Side ids on the outer boundary, glued/crack ids on Sigma, from the
-    /// face centres.
+    /// Side ids on the outer boundary, interface ids on the interfaces of
+    /// @p region, from the face centres.
     void
-    assign_boundary_ids(dealii::Triangulation<2> &tria) const;
+    assign_boundary_ids(dealii::Triangulation<2> &tria,
+                        const unsigned int        region) const;
 
     /// Read the Gmsh scene (once), check it and build Sigma's curve.
     void
@@ -220,11 +251,12 @@ namespace bilayer
     make_gmsh_subdomain(const Subdomain           subdomain,
                         dealii::Triangulation<2> &tria) const;
 
-    const GeometryParameters                geometry;
-    const MeshParameters                    mesh;
-    const std::vector<double>               ply_heights;
-    std::array<dealii::Triangulation<2>, 2> triangulations;
-    InterfaceCurve                          curve;
+    const GeometryParameters  geometry;
+    const MeshParameters      mesh;
+    const std::vector<double> ply_heights;
+    /// One mesh per region, one curve per interface.
+    std::vector<dealii::Triangulation<2>> triangulations;
+    std::vector<InterfaceCurve>           curves;
     /// The Gmsh scene (null for the rectangle and mesh files).
     std::shared_ptr<const GmshMesh> gmsh;
     /// Centres of the circular Gmsh curves, by entity tag.

@@ -43,12 +43,14 @@ namespace bilayer
     explicit Interface(const ContactParameters &contact);
 
     /// Build the multiplier spaces and all operators for the given
-    /// subproblems (indexed by Layout::index()); without layer 2 its entries
-    /// are null, and the gluing blocks have no nodes. The multipliers take
-    /// the degree of layer 1.
+    /// subproblems of @p topology (indexed by Topology::index()); without
+    /// layer 2 its entries are null, and the gluing blocks have no nodes.
+    /// The multipliers across the interfaces take the degree of layer 1;
+    /// @p curves are the interfaces (Sigma first).
     void
-    setup(const PerSubproblem<const ElasticSubproblem *> &subproblems,
-          const InterfaceCurve                           &curve);
+    setup(const Topology                                 &topology,
+          const PerSubproblem<const ElasticSubproblem *> &subproblems,
+          const std::vector<InterfaceCurve>              &curves);
 
     const MultiplierSpace &
     space() const
@@ -60,9 +62,10 @@ namespace bilayer
     /// MultiplierSpace::set_friction_bounds(). Coulomb friction's fixed
     /// point changes them between solves.
     void
-    set_friction_bounds(const std::vector<double> &bounds)
+    set_friction_bounds(const std::vector<double> &bounds,
+                        const unsigned int         i = 0)
     {
-      space_.set_friction_bounds(bounds);
+      space_.set_friction_bounds(bounds, i);
     }
 
     const TraceCoupling &
@@ -71,11 +74,24 @@ namespace bilayer
       return coupling_;
     }
 
-    /// Sigma with its parametrisation, normals and crack pieces.
+    /// Interface @p i (Sigma: 0) with its parametrisation, normals and
+    /// crack pieces.
     const InterfaceCurve &
-    curve() const
+    curve(const unsigned int i = 0) const
     {
-      return curve_;
+      return curves_[i];
+    }
+
+    unsigned int
+    n_interfaces() const
+    {
+      return curves_.size();
+    }
+
+    const Topology &
+    topology() const
+    {
+      return space_.topology();
     }
 
     const ContactParameters &
@@ -97,13 +113,14 @@ namespace bilayer
     jumps(const Solutions &w, dealii::BlockVector<double> &g) const;
 
     /// The traction (Cartesian components) that the multipliers @p mu
-    /// apply to subproblem @p s at the point of parameter @p x on Sigma
-    /// (the density of its multiplier load; the multipliers' components
-    /// are in the frame (tangent, normal) of their nodes).
+    /// apply to subproblem @p s at the point of parameter @p x on
+    /// interface @p i (the density of its multiplier load; the multipliers'
+    /// components are in the frame (tangent, normal) of their nodes).
     dealii::Tensor<1, 2>
     multiplier_traction(const dealii::BlockVector<double> &mu,
                         const unsigned int                 s,
-                        const double                       x) const;
+                        const double                       x,
+                        const unsigned int                 i = 0) const;
 
     /**
      * The Gram matrix G = B B^T of the signed coupling B (the map from the
@@ -148,10 +165,10 @@ namespace bilayer
     }
 
   private:
-    const ContactParameters contact;
-    InterfaceCurve          curve_;
-    MultiplierSpace         space_;
-    TraceCoupling           coupling_;
+    const ContactParameters     contact;
+    std::vector<InterfaceCurve> curves_;
+    MultiplierSpace             space_;
+    TraceCoupling               coupling_;
   };
 } // namespace bilayer
 

@@ -99,7 +99,8 @@ namespace bilayer
     double a, b, complementarity;
   };
 
-  /// Largest |trace value| at the nodes of mu_1 of the present subproblems.
+  /// Largest |trace value| of the present subproblems at the nodes of the
+  /// blocks across the interfaces.
   double
   displacement_scale(const Interface &interface, const Solutions &w);
 
@@ -112,9 +113,17 @@ namespace bilayer
                const dealii::BlockVector<double> &mu);
 
   /// The normal opening [u].nu = (u+ - u-).nu of layer 1 at every node of
-  /// mu_1.
+  /// the block across interface @p i (Sigma: mu_1).
   std::vector<double>
-  normal_opening(const Interface &interface, const Solutions &w);
+  normal_opening(const Interface   &interface,
+                 const Solutions   &w,
+                 const unsigned int i = 0);
+
+  /// The subproblems whose traces the nodes of interface @p i report
+  /// (InterfaceNode::trace): every subproblem of a two-region scene (u-,
+  /// u+, v-, v+, ...), else layer 1 below and above the interface.
+  std::vector<unsigned int>
+  trace_subproblems(const Topology &topology, const unsigned int i);
 
   /// Every residual of InterfaceReport.
   InterfaceReport
@@ -135,7 +144,8 @@ namespace bilayer
   std::vector<ContactSegment>
   contact_residual(const Interface                   &interface,
                    const Solutions                   &w,
-                   const dealii::BlockVector<double> &mu);
+                   const dealii::BlockVector<double> &mu,
+                   const unsigned int                 i = 0);
 
   /// The state of Sigma at a node of the mesh of mu_1.
   enum class ContactState
@@ -196,8 +206,10 @@ namespace bilayer
     dealii::Tensor<1, 2> mu_g;
     /// The multipliers between the layers on each side at the node.
     dealii::Tensor<1, 2> mu_minus, mu_plus;
-    /// Traces of u-, u+, v-, v+ (Layout's order) [length].
-    PerSubproblem<dealii::Tensor<1, 2>> trace;
+    /// The gaps u - v between layers 1 and 2 on each side [length].
+    std::array<dealii::Tensor<1, 2>, 2> layer_gap;
+    /// Traces of trace_subproblems() (u-, u+, v-, v+, ...) [length].
+    std::vector<dealii::Tensor<1, 2>> trace;
     /**
      * The normal traction transmitted across Sigma, compression positive
      * [stress]: mu_c on the crack, the normal component of the gluing
@@ -223,15 +235,17 @@ namespace bilayer
   };
 
   /**
-   * Every node of the mesh of mu_1, in the order of its numbering; a crack
-   * node is closed when mu_c > 0 or its normal jump is at most
-   * @p closed_tolerance times the displacement scale.
+   * Every node of the mesh of the block across interface @p i (Sigma:
+   * mu_1), in the order of its numbering; a crack node is closed when
+   * mu_c > 0 or its normal jump is at most @p closed_tolerance times the
+   * displacement scale.
    */
   std::vector<InterfaceNode>
   interface_nodes(const Interface                   &interface,
                   const Solutions                   &w,
                   const dealii::BlockVector<double> &mu,
-                  const double                       closed_tolerance = 1e-6);
+                  const double                       closed_tolerance = 1e-6,
+                  const unsigned int                 i                = 0);
 
   /**
    * One row per node of mu_1: x, jumps, multipliers, gaps, traces (frame
@@ -239,11 +253,14 @@ namespace bilayer
    * and the state (0 open, 1 closed, 2 glued) of interface_nodes(); with
    * friction also the tangential force, its bound and the friction state
    * (0 free, 1 stick, 2 slip, 3 glued). Each
-   * of @p notes goes before the header as a line starting with "# ".
+   * of @p notes goes before the header as a line starting with "# ". The
+   * traces' columns are named by @p trace_names (Topology::field_name() of
+   * trace_subproblems()).
    */
   void
   write_interface_csv(std::ostream                     &out,
                       const std::vector<InterfaceNode> &nodes,
+                      const std::vector<std::string>   &trace_names,
                       const std::vector<std::string>   &notes = {});
 } // namespace bilayer
 

@@ -16,6 +16,10 @@
 
 namespace bilayer
 {
+  /// The break points of the traces of an interface's two sides (below,
+  /// above), values of the parameter s of its curve.
+  using InterfaceTraces = std::array<std::vector<double>, 2>;
+
   /// Sorted union of two sorted break point lists, merging points closer
   /// than @p tol.
   std::vector<double>
@@ -25,7 +29,8 @@ namespace bilayer
 
   /**
    * The multiplier spaces on Sigma (docs/problem.md §3, docs/multipliers.md):
-   * for each multiplier block (2N - 1 of them for N layers, Layout::coupled())
+   * for each multiplier block (Topology::coupling(): one across each
+   * interface, 2N - 2 gluing the N layers along Sigma) on the block's curve
    * a mesh of Sigma, continuous
    * Lagrange elements of a degree of its own on it whose nodes are the
    * Gauss-Lobatto points of each segment, the lumped mass D (one weight per
@@ -94,31 +99,38 @@ namespace bilayer
     };
 
     /**
-     * The mortar choice of the class documentation for the traces'
-     * break points @p trace_breakpoints (Omega-, Omega+; points closer than
-     * @p tol are shared) and the degrees of the layers' elements
-     * (@p degrees, one per layer slot: Layout::n_blocks(degrees.size())
-     * blocks).
+     * The mortar choice of the class documentation for the blocks of
+     * @p topology, the traces' break points @p trace_breakpoints (of each
+     * interface: below, above; points closer than @p tol are shared) and
+     * the degrees of the layers' elements (@p degrees, one per layer slot).
      */
     static PerBlock<BlockChoice>
-    choose(const std::array<std::vector<double>, 2> &trace_breakpoints,
-           const std::vector<unsigned int>          &degrees,
-           const MultiplierMesh                      rule,
-           const double                              tol);
+    choose(const Topology                     &topology,
+           const std::vector<InterfaceTraces> &trace_breakpoints,
+           const std::vector<unsigned int>    &degrees,
+           const MultiplierMesh                rule,
+           const double                        tol);
 
     /**
-     * Build the meshes from the break points of the Omega- and Omega+ traces
-     * on Sigma (sorted coordinates along Sigma) and the degrees of the
-     * layers' elements, by choose(); the crack pieces and the ends on
-     * Gamma_D come from @p curve; @p active[b] says whether both
-     * subproblems of block b exist.
+     * Build the meshes of the blocks of @p topology from the break points
+     * of the two traces of each interface (sorted coordinates along it) and
+     * the degrees of the layers' elements, by choose(); the crack pieces
+     * and the ends on Gamma_D come from the interfaces' @p curves;
+     * @p active[b] says whether both subproblems of block b exist.
      */
     void
-    reinit(const InterfaceCurve                     &curve,
-           const ContactParameters                  &contact,
-           const std::array<std::vector<double>, 2> &trace_breakpoints,
-           const std::vector<unsigned int>          &degrees,
-           const PerBlock<bool>                     &active);
+    reinit(const Topology                     &topology,
+           const std::vector<InterfaceCurve>  &curves,
+           const ContactParameters            &contact,
+           const std::vector<InterfaceTraces> &trace_breakpoints,
+           const std::vector<unsigned int>    &degrees,
+           const PerBlock<bool>               &active);
+
+    const Topology &
+    topology() const
+    {
+      return topology_;
+    }
 
     /// The number of multiplier blocks (0 before reinit()).
     unsigned int
@@ -204,22 +216,24 @@ namespace bilayer
      * touched: project them.
      */
     void
-    set_friction_bounds(const std::vector<double> &bounds);
+    set_friction_bounds(const std::vector<double> &bounds,
+                        const unsigned int         b = Layout::across_sigma);
     /// The friction bound g of the tangential component of node @p a of
     /// mu_1 (0 where no friction acts: off the crack, at corners, where the
     /// bound is 0).
     double
-    friction_bound(const unsigned int a) const
+    friction_bound(const unsigned int a,
+                   const unsigned int b = Layout::across_sigma) const
     {
-      return set_.friction_bound(Layout::across_sigma,
-                                 Layout::entry(a, Layout::tangential));
+      return set_.friction_bound(b, Layout::entry(a, Layout::tangential));
     }
     /// Whether node @p a of mu_1 has a tangential component that friction
     /// may act on (a crack node that is not a corner).
     bool
-    friction_node(const unsigned int a) const
+    friction_node(const unsigned int a,
+                  const unsigned int b = Layout::across_sigma) const
     {
-      return crack_nodes[a] && !corner_nodes[a];
+      return crack_nodes[b][a] && !corner_nodes[b][a];
     }
 
     /// Nodes of block @p b.
@@ -275,9 +289,10 @@ namespace bilayer
     /// Whether node @p a of mu_1 is a corner of Sigma inside the crack
     /// (two contact components, see node_frame()).
     bool
-    corner(const unsigned int a) const
+    corner(const unsigned int a,
+           const unsigned int b = Layout::across_sigma) const
     {
-      return corner_nodes[a];
+      return corner_nodes[b][a];
     }
 
     /// The lumped mass D of node @p a of block @p b (with the masses of the
@@ -343,9 +358,10 @@ namespace bilayer
     /// Whether node @p a of mu_1 lies on the crack: strictly inside a
     /// piece, or at the mouth of an edge crack (CrackSet::contains()).
     bool
-    on_crack(const unsigned int a) const
+    on_crack(const unsigned int a,
+             const unsigned int b = Layout::across_sigma) const
     {
-      return crack_nodes[a];
+      return crack_nodes[b][a];
     }
 
     /**
@@ -356,16 +372,17 @@ namespace bilayer
      */
     double
     contact_multiplier(const dealii::BlockVector<double> &mu,
-                       const unsigned int                 a) const
+                       const unsigned int                 a,
+                       const unsigned int b = Layout::across_sigma) const
     {
-      if (!crack_nodes[a])
+      if (!crack_nodes[b][a])
         return 0.;
-      const auto &m = mu.block(Layout::across_sigma);
-      if (!corner_nodes[a])
+      const auto &m = mu.block(b);
+      if (!corner_nodes[b][a])
         return m(Layout::entry(a, Layout::normal));
-      const auto &f = node_frame(a);
+      const auto &f = node_frame(a, b);
       return (m(Layout::entry(a, 0)) * f[0] + m(Layout::entry(a, 1)) * f[1]) *
-             node_normal(a);
+             node_normal(a, b);
     }
 
     /**
@@ -373,11 +390,12 @@ namespace bilayer
      * normal one at a crack node, both at a crack corner, none elsewhere.
      */
     std::vector<unsigned int>
-    contact_components(const unsigned int a) const
+    contact_components(const unsigned int a,
+                       const unsigned int b = Layout::across_sigma) const
     {
-      if (!crack_nodes[a])
+      if (!crack_nodes[b][a])
         return {};
-      if (corner_nodes[a])
+      if (corner_nodes[b][a])
         return {Layout::tangential, Layout::normal};
       return {Layout::normal};
     }
@@ -387,11 +405,10 @@ namespace bilayer
     double
     gluing_multiplier(const dealii::BlockVector<double> &mu,
                       const unsigned int                 a,
-                      const unsigned int                 c) const
+                      const unsigned int                 c,
+                      const unsigned int b = Layout::across_sigma) const
     {
-      return crack_nodes[a] ?
-               0. :
-               mu.block(Layout::across_sigma)(Layout::entry(a, c));
+      return crack_nodes[b][a] ? 0. : mu.block(b)(Layout::entry(a, c));
     }
 
     /// Segment of the mesh of block @p b containing the coordinate @p x, and
@@ -485,23 +502,25 @@ namespace bilayer
     /// Which of the traces that block @p b couples lie in its multiplier
     /// space (nodal()).
     void
-    find_nodal_sides(const unsigned int                        b,
-                     const std::array<std::vector<double>, 2> &traces,
-                     const std::vector<unsigned int>          &degrees,
-                     const double                              tol);
+    find_nodal_sides(const unsigned int                  b,
+                     const std::vector<InterfaceTraces> &traces,
+                     const std::vector<unsigned int>    &degrees,
+                     const double                        tol);
 
     /// The multiplier set of all blocks and the crack and corner nodes of
-    /// mu_1 (docs/problem.md §3).
+    /// the blocks across the interfaces (docs/problem.md §3).
     void
-    build_set(const InterfaceCurve &curve, const ContactParameters &contact);
+    build_set(const std::vector<InterfaceCurve> &curves,
+              const ContactParameters           &contact);
 
     /// The mortar modification at the ends on Gamma_D (row()).
     void
-    join_end_rows(const InterfaceCurve &curve);
+    join_end_rows(const std::vector<InterfaceCurve> &curves);
 
+    Topology       topology_;
     PerBlock<Mesh> meshes;
-    /// Per node of mu_1.
-    std::vector<bool> crack_nodes, corner_nodes;
+    /// Per node of each block (none on a gluing block's crack).
+    PerBlock<std::vector<bool>> crack_nodes, corner_nodes;
     /// The bound p of the multiplier sets (Contact/Multiplier bound p).
     double        multiplier_bound = 0;
     MultiplierSet set_;

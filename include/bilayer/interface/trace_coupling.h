@@ -17,14 +17,14 @@
 
 namespace bilayer
 {
-  /// The subproblem solutions (or loads), indexed by Layout::index().
+  /// The subproblem solutions (or loads), indexed by Topology::index().
   using Solutions = PerSubproblem<dealii::Vector<double>>;
 
   /**
    * The coupling of the multiplier spaces to the traces of the subproblems
-   * on Sigma.
+   * on the interfaces.
    *
-   * For each block b and each of its two subproblems s = Layout::coupled(b)
+   * For each block b and each of its two subproblems s (Topology::coupling())
    * the matrix C_s, (C_s)_{2a+c, j} = int_Sigma phi_a psi_j^c ds (phi_a the
    * multiplier basis of block b), maps the dofs of s to the multiplier space
    * of b. Lumped coupling: phi_a is the dual (biorthogonal) basis psi_a of
@@ -44,20 +44,24 @@ namespace bilayer
    * common refinement. D = diag(int_Sigma phi_a ds) is the lumped multiplier
    * mass of MultiplierSpace.
    *
-   * It also evaluates the traces of every subproblem at the nodes of mu_1
-   * and at the Gauss points of the common refinement of the two traces,
-   * where every trace is a polynomial, which the diagnostics use.
+   * It also evaluates the traces of every subproblem at the nodes of the
+   * block across each interface that it touches and at the Gauss points of
+   * the common refinement of the interface's two traces, where every trace
+   * is a polynomial, which the diagnostics use. Sigma is interface 0, and
+   * every such function without an interface argument is Sigma's.
    */
   class TraceCoupling
   {
   public:
-    /// Take the subproblems @p subs (null where absent), find the faces of
-    /// each subdomain's mesh on Sigma and return the break points of the two
-    /// traces (values of the parameter s of @p curve, which must outlive
-    /// this object's use), from which the multiplier spaces are built.
-    const std::array<std::vector<double>, 2> &
-    locate_traces(const PerSubproblem<const ElasticSubproblem *> &subs,
-                  const InterfaceCurve                           &curve);
+    /// Take the subproblems @p subs of @p topology (null where absent),
+    /// find the faces of each region's mesh on each interface and return
+    /// the break points of the two traces of each interface (values of the
+    /// parameter s of its curve in @p curves, which must outlive this
+    /// object's use), from which the multiplier spaces are built.
+    const std::vector<InterfaceTraces> &
+    locate_traces(const Topology                                 &topology,
+                  const PerSubproblem<const ElasticSubproblem *> &subs,
+                  const std::vector<InterfaceCurve>              &curves);
 
     /// Build every matrix for the multiplier spaces @p space (after
     /// locate_traces()).
@@ -84,8 +88,8 @@ namespace bilayer
     bool
     active(const unsigned int b) const
     {
-      return present(Layout::coupled(b).first) &&
-             present(Layout::coupled(b).second);
+      const Coupling c = topology.coupling(b);
+      return present(c.first) && present(c.second);
     }
 
     /// loads[s] = sum over the blocks b coupling s of -+ C_s^T mu_b (minus
@@ -101,42 +105,56 @@ namespace bilayer
                 const bool                   weighted,
                 dealii::BlockVector<double> &result) const;
 
-    /// The traces of layer 1's two crack faces, u- into @p minus and u+
-    /// into @p plus, at the nodes of mu_1 (trace_at_nodes()): the one place
-    /// that reads them.
+    /// The traces of layer 1's two crack faces of interface @p i, the
+    /// region below into @p minus and the one above into @p plus, at the
+    /// nodes of the block across it (trace_at_nodes()): the one place that
+    /// reads them.
     void
     crack_face_traces(const Solutions        &w,
                       dealii::Vector<double> &minus,
-                      dealii::Vector<double> &plus) const
+                      dealii::Vector<double> &plus,
+                      const unsigned int      i = 0) const
     {
-      trace_at_nodes(Layout::u_minus, w[Layout::u_minus], minus);
-      trace_at_nodes(Layout::u_plus, w[Layout::u_plus], plus);
+      const Coupling c = topology.coupling(i);
+      trace_at_nodes(c.first, w[c.first], minus, i);
+      trace_at_nodes(c.second, w[c.second], plus, i);
     }
 
-    /// The trace of subproblem @p s at the nodes of mu_1: entries
-    /// Layout::entry(a, c).
+    /// Whether subproblem @p s has a trace on interface @p i (its region
+    /// lies on one side of it).
+    bool
+    touches(const unsigned int s, const unsigned int i) const
+    {
+      const unsigned int r = topology.region(s);
+      return present(s) && (r == i || r == i + 1);
+    }
+
+    /// The trace of subproblem @p s at the nodes of the block across
+    /// interface @p i: entries Layout::entry(a, c).
     void
     trace_at_nodes(const unsigned int            s,
                    const dealii::Vector<double> &w,
-                   dealii::Vector<double>       &trace) const;
+                   dealii::Vector<double>       &trace,
+                   const unsigned int            i = 0) const;
 
-    /// The trace of subproblem @p s at the Gauss points.
+    /// The trace of subproblem @p s at the Gauss points of interface @p i.
     void
     trace_at_gauss_points(const unsigned int            s,
                           const dealii::Vector<double> &w,
-                          dealii::Vector<double>       &trace) const;
+                          dealii::Vector<double>       &trace,
+                          const unsigned int            i = 0) const;
 
-    /// Gauss points of the common refinement of the Omega- and Omega+
-    /// traces (coordinates along Sigma, weights).
+    /// Gauss points of the common refinement of the two traces of
+    /// interface @p i (coordinates along it, weights).
     const std::vector<double> &
-    gauss_points() const
+    gauss_points(const unsigned int i = 0) const
     {
-      return gauss_x;
+      return gauss[i].x;
     }
     const std::vector<double> &
-    gauss_weights() const
+    gauss_weights(const unsigned int i = 0) const
     {
-      return gauss_weight;
+      return gauss[i].weight;
     }
 
     /**
@@ -168,10 +186,19 @@ namespace bilayer
       dealii::SparseMatrix<double> matrix;
     };
 
-    /// Sorted Sigma faces of a mesh (by the parameter s of @p curve).
+    /// The Gauss points of interface @p i (@p rule on each segment of the
+    /// common refinement of its two traces) and the traces there.
+    void
+    build_gauss_traces(const unsigned int           i,
+                       const dealii::Quadrature<1> &rule,
+                       const double                 tol);
+
+    /// Sorted faces of a mesh on interface @p i (by the parameter s of
+    /// @p curve).
     static std::vector<SigmaFace>
     sigma_faces(const dealii::Triangulation<2> &tria,
-                const InterfaceCurve           &curve);
+                const InterfaceCurve           &curve,
+                const unsigned int              i);
 
     /**
      * The matrix with rows 2 r + c whose product with the dofs of
@@ -185,24 +212,33 @@ namespace bilayer
     void
     build_point_matrix(
       const unsigned int                                           s,
+      const unsigned int                                           i,
       const std::vector<std::tuple<unsigned int, double, double>> &points,
       const std::vector<std::array<dealii::Tensor<1, 2>, 2>>      &frames,
       PointMatrix &result) const;
 
+    Topology                                 topology;
     PerSubproblem<const ElasticSubproblem *> subproblems;
-    const InterfaceCurve                    *curve = nullptr;
-    std::array<std::vector<SigmaFace>, 2>    faces;
-    /// The break points of the two traces (the ends of faces).
-    std::array<std::vector<double>, 2> traces;
+    const std::vector<InterfaceCurve>       *curves = nullptr;
+    /// The faces of each interface's two sides.
+    std::vector<std::array<std::vector<SigmaFace>, 2>> faces;
+    /// The break points of each interface's two traces (the ends of faces).
+    std::vector<InterfaceTraces> traces;
 
     /// C and E (evaluation at the nodes) of the two subproblems that each
-    /// block couples (Layout::coupled(b): first, second).
+    /// block couples (Topology::coupling(b): first, second).
     PerBlock<std::array<PointMatrix, 2>> coupling, evaluation;
-    /// Traces of the subproblems at the nodes of mu_1.
-    PerSubproblem<PointMatrix> node_traces;
-    /// Traces at the Gauss points of the common refinement.
-    PerSubproblem<PointMatrix> gauss_traces;
-    std::vector<double>        gauss_x, gauss_weight;
+    /// Per interface: the traces of the subproblems at the nodes of the
+    /// block across it.
+    std::vector<PerSubproblem<PointMatrix>> node_traces;
+    /// Per interface: the traces at the Gauss points of the common
+    /// refinement, and those points.
+    std::vector<PerSubproblem<PointMatrix>> gauss_traces;
+    struct GaussRule
+    {
+      std::vector<double> x, weight;
+    };
+    std::vector<GaussRule> gauss;
   };
 } // namespace bilayer
 

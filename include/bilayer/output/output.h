@@ -79,8 +79,9 @@ namespace bilayer
     std::vector<std::pair<double, std::string>> pvd;
     /// Per cycle: the XDMF grids of the pieces (solution.xdmf).
     std::vector<std::pair<unsigned int, std::vector<std::string>>> xdmf;
-    /// (cycle, interface-NN.vtu) for interface.pvd.
-    std::vector<std::pair<double, std::string>> interface_pvd;
+    /// Per interface: (cycle, interface-NN.vtu) for interface.pvd (Sigma;
+    /// interface k >= 2: interfacek-NN.vtu, interfacek.pvd).
+    std::vector<std::vector<std::pair<double, std::string>>> interface_pvd;
     /// Whether the collections (solution.pvd, solution.xdmf,
     /// interface.pvd) wait for write_collections() instead of being
     /// rewritten whole with every cycle: a growth run of many steps writes
@@ -121,13 +122,23 @@ namespace bilayer
    *    glued nodes next to the crack; s: the parameter on Sigma,
    *  - the vectors (x, y components) normal, mu_g, mu_minus, mu_plus
    *    [stress] and the layers' traces u_minus, u_plus, v_minus, v_plus
-   *    [length].
+   *    [length] (named by @p trace_names, one per InterfaceNode::trace).
    */
   void
   write_interface_vtu(const std::string                &directory,
                       const unsigned int                cycle,
                       const std::vector<InterfaceNode> &nodes,
-                      SolutionRecords                  &records);
+                      const std::vector<std::string>   &trace_names,
+                      SolutionRecords                  &records,
+                      const unsigned int                i = 0);
+
+  /// The stem of the files of interface @p i: "interface" (Sigma, i = 0),
+  /// "interface2", "interface3", ...
+  inline std::string
+  interface_stem(const unsigned int i)
+  {
+    return i == 0 ? "interface" : "interface" + std::to_string(i + 1);
+  }
 
   /// solution.pvd, solution.xdmf and interface.pvd of the cycles in
   /// @p records (those with a cycle written; first process).

@@ -95,6 +95,16 @@ namespace bilayer
     double crack_start  = -0.5;
     double crack_end    = 0.5;
 
+    /// An interface of the rectangle above Sigma: the horizontal line at
+    /// height with the crack (crack_start, crack_end) on it (none where
+    /// they are equal).
+    struct FurtherInterface
+    {
+      double height = 0, crack_start = 0, crack_end = 0;
+    };
+    /// Geometry/Interfaces above Sigma, by increasing height.
+    std::vector<FurtherInterface> further_interfaces;
+
     /// clamped[i] is true if boundary part i belongs to Gamma_D.
     std::vector<bool> clamped = {true, true, false, false};
 
@@ -105,20 +115,82 @@ namespace bilayer
     parse_parameters(dealii::ParameterHandler &prm,
                      const BoundaryParts      &parts = BoundaryParts());
 
-    /// The rectangle's crack is not empty (Gmsh scenes: see the file).
-    bool
-    has_crack() const
+  private:
+    /// The interfaces of the entry Interfaces above Sigma = @p text (not
+    /// yet checked against the rectangle).
+    std::vector<FurtherInterface>
+    parse_further_interfaces(const std::string &text) const;
+
+    /// Refuse the crack (@p start, @p end) of the entry @p what unless it
+    /// lies on its interface; an end within the tolerance of a side is put
+    /// there.
+    void
+    check_crack_range(const std::string &what,
+                      const std::string &crack_text,
+                      double            &start,
+                      double            &end) const;
+
+    /// Refuse the crack (@p start, @p end) of the entry @p what (on the
+    /// interface @p curve) unless it leaves some of it glued and reaches no
+    /// clamped side.
+    void
+    check_crack_ends(const std::string &what,
+                     const std::string &curve,
+                     const std::string &crack_text,
+                     const std::string &clamped_text,
+                     const double       start,
+                     const double       end) const;
+
+  public:
+    /// The regions of the plane: Omega- and Omega+, and one more above
+    /// each interface above Sigma (bands of the rectangle, from the bottom).
+    unsigned int
+    n_regions() const
     {
-      return crack_end > crack_start;
+      return 2 + further_interfaces.size();
     }
 
-    /// The crack as a set of pieces of Sigma (coordinate x), compared with
-    /// a tolerance of 1e-10 times the width of Omega.
-    CrackSet
-    crack() const
+    /// The height of interface @p i of the rectangle (Sigma: 0).
+    double
+    interface_height(const unsigned int i) const
     {
-      return has_crack() ?
-               CrackSet({{crack_start, crack_end}}, 1e-10 * (x_max - x_min)) :
+      return i == 0 ? sigma_height : further_interfaces[i - 1].height;
+    }
+
+    /// The heights (bottom, top) of region @p r of the rectangle.
+    std::array<double, 2>
+    region_heights(const unsigned int r) const
+    {
+      return {{r == 0 ? y_min : interface_height(r - 1),
+               r + 1 == n_regions() ? y_max : interface_height(r)}};
+    }
+
+    /// The end points of the crack of interface @p i of the rectangle.
+    std::array<double, 2>
+    crack_interval(const unsigned int i) const
+    {
+      if (i == 0)
+        return {{crack_start, crack_end}};
+      return {{further_interfaces[i - 1].crack_start,
+               further_interfaces[i - 1].crack_end}};
+    }
+
+    /// The rectangle's crack on interface @p i is not empty (Gmsh scenes:
+    /// see the file).
+    bool
+    has_crack(const unsigned int i = 0) const
+    {
+      return crack_interval(i)[1] > crack_interval(i)[0];
+    }
+
+    /// The crack of interface @p i as a set of pieces (coordinate x),
+    /// compared with a tolerance of 1e-10 times the width of Omega.
+    CrackSet
+    crack(const unsigned int i = 0) const
+    {
+      return has_crack(i) ?
+               CrackSet({{crack_interval(i)[0], crack_interval(i)[1]}},
+                        1e-10 * (x_max - x_min)) :
                CrackSet();
     }
   };

@@ -26,6 +26,12 @@ namespace bilayer
   void
   check_growth_relations(const Scene &scene);
 
+  /// The scenes of several interfaces (Geometry/Interfaces above Sigma):
+  /// one layer, the structured meshes of the rectangle, no crack growth.
+  /// Part of check_scene_relations().
+  void
+  check_interfaces(const Scene &scene);
+
   /// Whether a present layer of @p scene has an eigenstrain, or a
   /// temperature change on a material that expands (the loads that
   /// Loads/Load factor scales = thermal scales).

@@ -12,7 +12,7 @@
 namespace bilayer
 {
   /**
-   * Error indicators per active cell of the two subdomain meshes (indexed
+   * Error indicators per active cell of the region meshes (indexed
    * by active_cell_index()), for adaptive refinement:
    *   eta_K^2 = eta_K(u)^2 + eta_K(v)^2 + sum over the Sigma faces F of K
    *             of h_F / 24 int_F |(sigma(w) n - t) / (2 mu)|^2 ds
@@ -58,7 +58,7 @@ namespace bilayer
    * indicators and eta scaled by exactly that power, whatever the loads'
    * magnitude (within double precision).
    */
-  std::array<dealii::Vector<double>, Layout::n_subdomains>
+  std::vector<dealii::Vector<double>>
   estimate_error(const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Interface                                &interface,
                  const Solutions                                &solutions,

@@ -44,6 +44,8 @@ namespace bilayer
    */
   struct CrackTip
   {
+    /// The interface that holds the tip (Sigma: 0).
+    unsigned int interface = 0;
     /// Parameter on Sigma, the point, and the unit tangent of Sigma that
     /// points away from the crack (the direction of growth).
     double               s = 0;
@@ -93,8 +95,10 @@ namespace bilayer
   };
 
   /**
-   * The tips of the crack of @p curve, ordered by s, with the outer
-   * boundary of @p meshes (their boundary faces off Sigma) as an obstacle.
+   * The tips of the crack of @p curve (interface @p interface), ordered by
+   * s, with the outer boundary of @p meshes (their boundary faces off the
+   * interfaces) and the other interfaces @p obstacles as obstacles: the
+   * support of theta stays inside the two regions of the interface.
    * @p support_radius (Fracture/Support radius): 0 chooses half the free
    * distance; a given radius must be smaller than the free distance of
    * every tip (else an exception names the entry and the allowed range).
@@ -102,7 +106,9 @@ namespace bilayer
   std::vector<CrackTip>
   crack_tips(const InterfaceCurve                                  &curve,
              const std::array<const dealii::Triangulation<2> *, 2> &meshes,
-             const double support_radius);
+             const double                       support_radius,
+             const unsigned int                 interface = 0,
+             const std::vector<InterfaceCurve> &obstacles = {});
 
   /**
    * The velocity field theta of a tip: theta(x) = psi(|x - tip|) T(x), with
@@ -302,11 +308,13 @@ namespace bilayer
   /**
    * One line per tip for the head of interface-NN.csv: where the tip is,
    * its direction of growth, G and its parts, the error bar dG and its
-   * estimator, the support radius.
+   * estimator, the support radius; with @p interface >= 0 only the tips of
+   * that interface (numbered as among all).
    */
   std::vector<std::string>
   release_notes(const std::vector<EnergyReleaseRate> &release,
-                const bool                            along_x);
+                const bool                            along_x,
+                const int                             interface = -1);
 } // namespace bilayer
 
 #endif

@@ -59,17 +59,20 @@ namespace bilayer
                           const double                       length);
 
   /**
-   * Whether the materials of every present layer agree across Sigma: the
-   * tangents C of the laws of u- and u+ (and of v- and v+ where layer 2
-   * exists) equal to 1e-12 of their largest entry. Then the field at a tip
+   * Whether the materials of every present layer agree across interface
+   * @p i of @p topology (Sigma: 0): the tangents C of the laws at the
+   * interface of u- and u+ (and of v- and v+ where layer 2 exists) equal to
+   * 1e-12 of their largest entry. Then the field at a tip
    * splits into the parts symmetric and antisymmetric about the crack line
    * and the closure ratio tends to the mode ratio as Delta -> 0; otherwise
    * (an interface crack between different materials) the near-tip field
    * oscillates and the split depends on the length.
    */
   bool
-  materials_agree_across_sigma(
-    const PerSubproblem<const ElasticSubproblem *> &subproblems);
+  materials_agree_across(
+    const PerSubproblem<const ElasticSubproblem *> &subproblems,
+    const Topology                                 &topology,
+    const unsigned int                              i = 0);
 
   /**
    * Fill G_I, G_II, phase_angle, mode_split_length and mode_split_note of

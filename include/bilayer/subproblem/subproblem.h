@@ -10,6 +10,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <bilayer/core/boundary_ids.h>
 #include <bilayer/physics/elastic_law.h>
 #include <bilayer/physics/plies.h>
 #include <bilayer/physics/volume_load.h>
@@ -71,14 +72,16 @@ namespace bilayer
     {}
 
     /// The subproblem of the plies of @p materials between @p ply_heights
-    /// (PlyLaws).
+    /// (PlyLaws), on region @p subdomain of a scene of @p n_regions regions
+    /// (Topology; Omega- and Omega+ of Sigma: 0 and 1 of 2).
     ElasticSubproblem(const Layer                       layer,
                       const Subdomain                   subdomain,
                       const dealii::Triangulation<2>   &triangulation,
                       const unsigned int                degree,
                       const std::vector<LayerMaterial> &materials,
                       const std::vector<double>        &ply_heights,
-                      const Distribution &distribution = Distribution::world());
+                      const Distribution &distribution = Distribution::world(),
+                      const unsigned int  n_regions    = 2);
 
     /**
      * Distribute dofs, build constraints, assemble the stiffness matrix and
@@ -164,11 +167,12 @@ namespace bilayer
       return distribution.owns(index());
     }
 
-    /// Position in every per-subproblem array (Layout::index()).
+    /// Position in every per-subproblem array (Topology::index()).
     unsigned int
     index() const
     {
-      return Layout::index(layer_, subdomain_);
+      return Topology(n_regions).index(layer_,
+                                       static_cast<unsigned int>(subdomain_));
     }
 
     const Distribution &
@@ -337,6 +341,18 @@ namespace bilayer
     {
       return subdomain_;
     }
+    /// The region (Topology; Omega-, Omega+: 0, 1) and the scene's number
+    /// of regions.
+    unsigned int
+    region() const
+    {
+      return static_cast<unsigned int>(subdomain_);
+    }
+    unsigned int
+    regions() const
+    {
+      return n_regions;
+    }
     const dealii::DoFHandler<2> &
     dof_handler() const
     {
@@ -373,6 +389,17 @@ namespace bilayer
     {
       return laws_.law(sigma_ply);
     }
+
+    /// The law of the cells on interface @p i (Sigma: 0; their ply, the
+    /// first's where none lies on it).
+    const ElasticLaw &
+    interface_law(const unsigned int i) const
+    {
+      return i == 0 ? sigma_law() :
+                      laws_.law(
+                        laws_.ply_on_boundary(dof_handler().get_triangulation(),
+                                              BoundaryIds::interface(i)));
+    }
     unsigned int
     n_dofs() const
     {
@@ -405,8 +432,10 @@ namespace bilayer
              const std::vector<const dealii::Function<2> *> &traction,
              const VolumeLoad                               *volume);
 
-    const Layer                        layer_;
-    const Subdomain                    subdomain_;
+    const Layer     layer_;
+    const Subdomain subdomain_;
+    /// The regions of the scene (Topology): the subproblem's index.
+    const unsigned int                 n_regions;
     PlyLaws                            laws_;
     const unsigned int                 sigma_ply;
     std::string                        moduli_entries_; // named on overflow
