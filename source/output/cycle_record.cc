@@ -492,7 +492,8 @@ namespace bilayer
         for (unsigned int t = 0; t < records[i].release.size(); ++t)
           {
             const EnergyReleaseRate &g = records[i].release[t];
-            out << (t ? ", " : "") << "{\"s\": " << json(g.tip.s)
+            out << (t ? ", " : "") << "{\"interface\": " << g.tip.interface + 1
+                << ", \"s\": " << json(g.tip.s)
                 << ", \"x\": " << json(g.tip.point[0])
                 << ", \"y\": " << json(g.tip.point[1]) << ", \"direction\": ["
                 << json(g.tip.direction[0] + 0.) << ", "

@@ -262,9 +262,11 @@ namespace bilayer
   {
     static const std::regex output(
       "(used_parameters\\.prm|summary\\.json|table\\.(txt|tex|csv)|growth\\.csv|"
-      "interface\\.pvd|solution\\.(pvd|xdmf)|interface-[0-9]{2,}\\.(csv|vtu)|"
+      "interface([2-9]|[1-9][0-9]+)?\\.pvd|solution\\.(pvd|xdmf)|"
+      "interface([2-9]|[1-9][0-9]+)?-[0-9]{2,}\\.(csv|vtu)|"
       "solution-[0-9]{2,}\\.pvtu|"
-      "solution-[0-9]{2,}-[uv]-(minus|plus)(\\.[0-9]+)?\\.(vtu|h5))");
+      "solution-[0-9]{2,}-(u|v|w[0-9]+)-(minus|plus|r[0-9]+)(\\.[0-9]+)?\\."
+      "(vtu|h5))");
     const std::string suffix = ".part";
     if (temporary && name.size() > suffix.size() &&
         name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)

@@ -34,6 +34,31 @@ for prm in "$files"/*.prm; do
   fi
 done
 echo "$count parameter files read"
+# Two delaminations (two_delaminations.prm, two interfaces) on 3 cycles,
+# twice into one directory (the second run replaces the first's files,
+# interface2-NN.* and the regions' pieces among them): exit 0 both times,
+# the files of interface 2 written, both cracks open on the last cycle.
+for k in 1 2; do
+  "$bilayer" "$files/two_delaminations.prm" --set "Output/Output directory=$work/two" \
+    --set "Mesh/Number of cycles=3" > two.log 2>&1 || { echo "two_delaminations.prm run $k: exit $?: $(tail -1 two.log)"; fail=1; }
+done
+python3 - "$work/two" <<'PY' || fail=1
+import csv, os, sys
+d = sys.argv[1]
+need = ["interface.pvd", "interface2.pvd", "interface-02.csv", "interface2-02.csv",
+        "solution-02-u-r1.vtu", "solution-02-u-r3.vtu"]
+missing = [f for f in need if not os.path.exists(os.path.join(d, f))]
+opened = []
+for name in ("interface-02.csv", "interface2-02.csv"):
+    if name in missing:
+        continue
+    rows = list(csv.DictReader(l for l in open(os.path.join(d, name)) if not l.startswith("#")))
+    crack = [r for r in rows if r["on_crack"] == "1"]
+    opened.append(bool(crack) and all(float(r["jump_normal"]) > 0 for r in crack))
+print("two_delaminations: files of both interfaces %s, both cracks open %s"
+      % ("written" if not missing else "MISSING " + " ".join(missing), opened))
+sys.exit(0 if not missing and opened == [True, True] else 1)
+PY
 "$bilayer" "$files/composite_ply.prm" --set "Output/Output directory=$work/ply" \
   --set "Output/Write VTU=false" > ply.log 2>&1
 rc=$?
