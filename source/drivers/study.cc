@@ -596,7 +596,7 @@ namespace bilayer
       share_values(subproblem_views(), [&](const unsigned int s) {
         return subproblems[s]->energy(w[s]);
       });
-    record.layer_energy.assign(topology.n_slots(), 0.);
+    record.layer_energy.assign(Layout::n_slots(scene.materials.n_layers), 0.);
     for (const unsigned int s : Layout::indices(subproblems.size()))
       {
         record.energy += energies[s];
