@@ -23,7 +23,7 @@ namespace bilayer
     : geometry(geometry)
     , mesh(mesh)
     , ply_heights(ply_heights)
-    , triangulations(geometry.gmsh_file.empty() ? geometry.n_regions() : 2)
+    , triangulations(geometry.n_regions())
     , curves(triangulations.size() - 1)
   {
     // The rectangle's interfaces: horizontal segments, s = x, nu = (0, 1);

@@ -100,7 +100,7 @@ namespace bilayer
     {
       // The interface of the face.
       const unsigned int i =
-        cell->face(f)->boundary_id() - BoundaryIds::interface(0);
+        BoundaryIds::interface_of(cell->face(f)->boundary_id());
       const FEValuesExtractors::Vector displacement(0);
       const ElasticLaw                &law         = sub.law(*cell);
       const VolumeLoad *const          eigenstrain = eigenstrain_of(sub);
@@ -160,7 +160,7 @@ namespace bilayer
               // of the mesh of the block across the interface under the
               // face, by overlap.
               const unsigned int i =
-                cell->face(f)->boundary_id() - BoundaryIds::interface(0);
+                BoundaryIds::interface_of(cell->face(f)->boundary_id());
               const InterfaceCurve &curve = interface.curve(i);
               if (interface.topology().layer(s) == Layer::first &&
                   curve.crack().contains(

@@ -44,6 +44,14 @@ namespace bilayer
       return sigma + i;
     }
 
+    /// The interface of a face with the id @p id of an interface (the
+    /// inverse of interface()).
+    constexpr unsigned int
+    interface_of(const dealii::types::boundary_id id)
+    {
+      return id - sigma;
+    }
+
     /// The ids of the interfaces of a scene of @p n_regions regions (the
     /// faces of the subproblems' traces).
     inline std::set<dealii::types::boundary_id>
