@@ -170,10 +170,24 @@ namespace bilayer
     // The groups as Gmsh writes them, and the kind of cells the scene has
     // (which Mesh/Element shape a run must state).
     std::ostringstream report;
-    const bool triangles = print_groups(read_gmsh(file, options), report);
+    const GmshMesh     g         = read_gmsh(file, options);
+    const bool         triangles = print_groups(g, report);
     mesh.shape =
       triangles ? ElementShape::triangle : ElementShape::quadrilateral;
-    Geometry meshes(geometry, mesh);
+    // The physical surfaces other than the regions: plies that a scene
+    // may name in Materials/Layer k/Ply groups (checked as such).
+    std::vector<std::string> plies;
+    for (const auto &[tag, name] : g.surface_names)
+      if (name != "Omega-" && name != "Omega+")
+        plies.push_back(name);
+    if (!plies.empty())
+      {
+        report << "ply groups (for Materials/Layer k/Ply groups):";
+        for (const std::string &name : plies)
+          report << " '" << name << "'";
+        report << "\n";
+      }
+    Geometry meshes(geometry, mesh, {}, plies);
     meshes.create_meshes(0);
     print_meshes(meshes, geometry.parts, triangles, report);
     out << report.str() << "PASS" << std::endl;

@@ -107,7 +107,10 @@ namespace bilayer
             scene.output.terminal == TerminalOutput::full &&
               distribution.is_root())
     , rout(out, distribution.is_root())
-    , domain(scene.geometry, scene.mesh, scene.materials.all_ply_heights())
+    , domain(scene.geometry,
+             scene.mesh,
+             scene.materials.all_ply_heights(),
+             scene.materials.all_ply_groups())
     , subproblems(topology.n_subproblems())
     , coupling(scene.contact)
   {}
@@ -319,7 +322,14 @@ namespace bilayer
         domain.refine(indicators, resolve);
       }
     else
-      domain.create_meshes(cycle);
+      {
+        domain.create_meshes(cycle);
+        if (cycle == 0)
+          for (const std::string &name : domain.unread_surfaces())
+            pcout << "bilayer: note: the physical surface '" << name
+                  << "' of Geometry/Gmsh file is not among Materials/Layer "
+                     "k/Ply groups: its cells take their region's law\n";
+      }
     record.minus = domain.statistics(Subdomain::minus);
     // Above Sigma: every region there together.
     record.plus = domain.statistics(Subdomain::plus);
@@ -371,6 +381,7 @@ namespace bilayer
         // The tips of each interface in turn; the other interfaces are
         // obstacles of its supports.
         const std::vector<InterfaceCurve> &curves = domain.interface_curves();
+        const std::vector<Segment>         material_faces = ply_boundaries();
         tips.clear();
         for (const unsigned int i : Layout::indices(curves.size()))
           {
@@ -384,7 +395,8 @@ namespace bilayer
                            &domain.triangulation(i + 1)}},
                          scene.fracture.support_radius,
                          i,
-                         others);
+                         others,
+                         material_faces);
             tips.insert(tips.end(), on_i.begin(), on_i.end());
           }
         tips_found = true;
@@ -431,21 +443,22 @@ namespace bilayer
               auto load =
                 scene.loads.volume_load(layer,
                                         plies,
-                                        scene.materials.ply_heights[l],
+                                        scene.materials.division(layer),
                                         domain_diameter(domain));
               volume_loads[i] =
                 load ? std::make_unique<ScaledVolumeLoad>(std::move(load)) :
                        nullptr;
               auto &sub = subproblems[i];
-              sub       = std::make_unique<ElasticSubproblem>(
-                layer,
-                static_cast<Subdomain>(r),
-                domain.triangulation(r),
-                scene.mesh.degree(layer),
-                plies,
-                scene.materials.ply_heights[l],
-                distribution,
-                topology.n_regions());
+              sub =
+                std::make_unique<ElasticSubproblem>(layer,
+                                                    static_cast<Subdomain>(r),
+                                                    domain.triangulation(r),
+                                                    scene.mesh.degree(layer),
+                                                    plies,
+                                                    scene.materials.division(
+                                                      layer),
+                                                    distribution,
+                                                    topology.n_regions());
               ElasticSubproblem *const target = sub.get();
               setups.add([&, target, l, i]() {
                 target->setup(scene.geometry.clamped,

@@ -265,4 +265,28 @@ namespace bilayer
         record.note += (record.note.empty() ? "" : "; ") + note.str();
       }
   }
+  std::vector<Segment>
+  Study::ply_boundaries() const
+  {
+    // The faces between plies of different materials, of every layer in
+    // every region.
+    std::vector<Segment> material_faces;
+    for (const Layer layer : scene.materials.layers())
+      for (const unsigned int r : Layout::indices(topology.n_regions()))
+        if (scene.materials.has_layer(layer) &&
+            scene.materials.n_plies(layer) > 1)
+          {
+            const PlyLaws laws(scene.materials.ply_materials(
+                                 layer,
+                                 r == 0 ? Subdomain::minus : Subdomain::plus),
+                               scene.materials.division(layer));
+            const auto    faces =
+              material_boundaries(domain.triangulation(r), laws);
+            material_faces.insert(material_faces.end(),
+                                  faces.begin(),
+                                  faces.end());
+          }
+    return material_faces;
+  }
+
 } // namespace bilayer

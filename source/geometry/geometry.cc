@@ -17,12 +17,14 @@ namespace bilayer
   using namespace dealii;
 
 
-  Geometry::Geometry(const GeometryParameters  &geometry,
-                     const MeshParameters      &mesh,
-                     const std::vector<double> &ply_heights)
+  Geometry::Geometry(const GeometryParameters       &geometry,
+                     const MeshParameters           &mesh,
+                     const std::vector<double>      &ply_heights,
+                     const std::vector<std::string> &ply_groups)
     : geometry(geometry)
     , mesh(mesh)
     , ply_heights(ply_heights)
+    , ply_groups(ply_groups)
     , triangulations(geometry.n_regions())
     , curves(triangulations.size() - 1)
   {

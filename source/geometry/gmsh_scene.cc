@@ -124,7 +124,9 @@ namespace bilayer
                                      group(e) +
                                      "; bilayer reads only 'Omega-' and "
                                      "'Omega+': put the surface into one of "
-                                     "them"));
+                                     "them (a ply inside a region: name its "
+                                     "group in Materials/Layer k/Ply "
+                                     "groups)"));
             }
           else
             AssertThrow(g.curve_names.count(e.physical) > 0,
@@ -597,14 +599,17 @@ namespace bilayer
     options.allow_commands = geometry.allow_gmsh_commands;
     options.time_limit     = this->mesh.gmsh_time_limit;
     options.size_factor    = this->mesh.gmsh_size_factor;
-    const auto mesh_ptr = std::make_shared<GmshMesh>(read_gmsh(file, options));
-    const GmshMesh &g   = *mesh_ptr;
+    GmshMesh read          = read_gmsh(file, options);
+    take_ply_groups(read, where);
+    const auto      mesh_ptr = std::make_shared<GmshMesh>(std::move(read));
+    const GmshMesh &g        = *mesh_ptr;
 
     // The groups, every cell and line element in exactly one, Sigma the
     // edges the surfaces share, the boundary parts on the outer boundary,
     // a conforming mesh.
     const GmshGroups groups = find_groups(g, geometry.parts.names, where);
     check_elements(g, groups, where);
+    check_ply_cells(g, groups.surface, where);
     const auto minus    = cell_edges(g, groups.surface[0]),
                plus     = cell_edges(g, groups.surface[1]);
     const auto on_sigma = shared_edges(g, groups, minus, plus, where);

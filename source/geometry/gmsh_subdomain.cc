@@ -30,9 +30,13 @@ namespace bilayer
 
 
     /// The cells of the physical surface @p tag, their vertices numbered in
-    /// the order they first appear.
+    /// the order they first appear, each with the material id of its ply
+    /// group in @p ply_cells (by sorted Gmsh nodes; 0 where in none).
     SurfaceCells
-    surface_cells(const GmshMesh &g, const int tag)
+    surface_cells(
+      const GmshMesh                                                &g,
+      const int                                                      tag,
+      const std::map<std::vector<unsigned int>, types::material_id> &ply_cells)
     {
       SurfaceCells                         surface;
       std::map<unsigned int, unsigned int> vertex_of;
@@ -57,6 +61,14 @@ namespace bilayer
                     node_of.push_back(e.nodes[order[k]]);
                   }
                 cell.vertices[k] = it->second;
+              }
+            // The ply group of the cell (0: none).
+            if (!ply_cells.empty())
+              {
+                std::vector<unsigned int> key = e.nodes;
+                std::sort(key.begin(), key.end());
+                const auto ply   = ply_cells.find(key);
+                cell.material_id = ply != ply_cells.end() ? ply->second : 0;
               }
             surface.triangles = surface.triangles || e.type == 2;
             surface.quads     = surface.quads || e.type == 3;
@@ -211,7 +223,7 @@ namespace bilayer
     const std::string name =
       subdomain == Subdomain::minus ? "Omega-" : "Omega+";
     const int    tag     = g.physical_tag(2, name);
-    SurfaceCells surface = surface_cells(g, tag);
+    SurfaceCells surface = surface_cells(g, tag, ply_cells);
     check_cell_kind(surface, mesh, name, where);
     orient_cells(surface, name, where);
     if (surface.quads)

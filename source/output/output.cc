@@ -64,6 +64,11 @@ namespace bilayer
       plies ? inputs.template get_cell<2>()->center() : Point<2>();
     const ElasticLaw &law =
       plies ? laws.law(*inputs.template get_cell<2>()) : laws.law(0);
+    // The eigenstrain of the cell's ply.
+    const CellLoad load =
+      eigenstrain == nullptr ? CellLoad() :
+      plies                  ? eigenstrain->in(*inputs.template get_cell<2>()) :
+                               CellLoad{eigenstrain, 1, 1};
     for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
       {
         const Point<2> x =
@@ -77,11 +82,11 @@ namespace bilayer
         strain[1][1] = grad[1][1];
         strain[0][1] = 0.5 * (grad[0][1] + grad[1][0]);
         if (eigenstrain != nullptr)
-          strain -= eigenstrain->eigenstrain(x);
+          strain -= load.eigenstrain(x);
         const SymmetricTensor<2, 2> stress = law.stress(strain);
         const double                szz =
           law.out_of_plane_stress(strain) +
-          (eigenstrain != nullptr ? eigenstrain->eigenstress_zz(x) : 0.);
+          (eigenstrain != nullptr ? load.eigenstress_zz(x) : 0.);
         const double sxx = stress[0][0], syy = stress[1][1], sxy = stress[0][1];
         computed_quantities[q](0) = ElasticLaw::von_mises(stress, szz);
         computed_quantities[q](1) = sxx;

@@ -93,7 +93,9 @@ namespace bilayer
             {
               why_absent[name + n] =
                 "which differs between the plies of the layer (" + section +
-                "/Ply heights): write the value of one ply as a number";
+                (materials.ply_groups[l].empty() ? "/Ply heights" :
+                                                   "/Ply groups") +
+                "): write the value of one ply as a number";
               continue;
             }
           const bool minus = given[0].count(name) > 0;
@@ -427,7 +429,7 @@ namespace bilayer
   std::unique_ptr<VolumeLoad>
   LoadParameters::volume_load(const Layer                       layer,
                               const std::vector<LayerMaterial> &plies,
-                              const std::vector<double>        &ply_heights,
+                              const PlyDivision                &division,
                               const double length_scale) const
   {
     if (plies.size() == 1)
@@ -441,7 +443,7 @@ namespace bilayer
       }
     if (!any)
       return nullptr;
-    return std::make_unique<PlyVolumeLoad>(std::move(loads), ply_heights);
+    return std::make_unique<PlyVolumeLoad>(std::move(loads), division);
   }
 
 

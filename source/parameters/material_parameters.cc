@@ -402,45 +402,18 @@ namespace bilayer
           layer,
           "Ply " + std::to_string(j + 1),
           "ply " + std::to_string(j + 1) +
-            " (the band of the plane between the ply heights " +
+            " (with Ply heights the band of the plane between the ply "
+            "heights " +
             std::to_string(j) + " and " + std::to_string(j + 1) +
-            ", counted from the bottom; its entries win over a side's)");
+            ", counted from the bottom; with Ply groups the cells of group " +
+            std::to_string(j + 1) +
+            (j + 1 == n_plies ? ", the last: the cells in none of the groups" :
+                                "") +
+            "; its entries win over a side's)");
     }
 
 
-    /// The heights of the entry @p entry (Ply heights) of the text @p text.
-    std::vector<double>
-    parse_ply_heights(const std::string &text, const std::string &entry)
-    {
-      std::vector<double> heights;
-      if (Utilities::trim(text).empty())
-        return heights;
-      for (const std::string &item : Utilities::split_string_list(text, ','))
-        heights.push_back(to_double(item, entry));
-      for (unsigned int i = 1; i < heights.size(); ++i)
-        AssertThrow(heights[i] > heights[i - 1],
-                    ExcMessage(entry +
-                               " must be a list of heights y that increase "
-                               "strictly (the ply boundaries from the bottom), "
-                               "got '" +
-                               text + "'"));
-      return heights;
-    }
   } // namespace
-
-
-  unsigned int
-  MaterialParameters::count_plies(const std::string &heights)
-  {
-    try
-      {
-        return parse_ply_heights(heights, "").size() + 1;
-      }
-    catch (...)
-      {
-        return 1;
-      }
-  }
 
 
   void
@@ -528,6 +501,18 @@ namespace bilayer
           "side) and override the layer's and the side's. The "
           "rectangle scenes fit a row of mesh vertices to each height inside "
           "Omega; Gmsh scenes and mesh files are refused.");
+        prm.declare_entry(
+          "Ply groups",
+          "",
+          Patterns::Anything(),
+          "The plies of the layer in a Gmsh scene: the names of physical "
+          "surfaces of Geometry/Gmsh file, a comma-separated list (empty, "
+          "the default: one ply, the layer itself). Each surface of a group "
+          "also lies in Omega- or Omega+, and a cell in one group at most; "
+          "with n groups the layer has the subsections Ply 1 ... Ply n (the "
+          "groups in this order) and Ply n+1 (the cells in none of them), "
+          "which take the law entries of the layer (empty: as the side) and "
+          "override the layer's and the side's. Not with Ply heights.");
         declare_parts(prm, l, n_plies[l]);
         prm.leave_subsection();
       }
@@ -544,6 +529,7 @@ namespace bilayer
     layer.resize(n_slots, layer.back());
     side.resize(n_slots);
     ply_heights.resize(n_slots);
+    ply_groups.resize(n_slots);
     ply.resize(n_slots);
     for (unsigned int l = 0; l < n_slots; ++l)
       {
@@ -566,11 +552,20 @@ namespace bilayer
           where);
         const std::string layer_section = "Materials/" + layer_subsection(l);
         ply_heights[l] =
-          parse_ply_heights(prm.get("Ply heights"), where + "Ply heights");
+          MaterialParameters::parse_ply_heights(prm.get("Ply heights"),
+                                                where + "Ply heights");
+        ply_groups[l] =
+          MaterialParameters::parse_ply_groups(prm.get("Ply groups"),
+                                               where + "Ply groups");
+        AssertThrow(ply_heights[l].empty() || ply_groups[l].empty(),
+                    ExcMessage(where + "Ply heights and " + where +
+                               "Ply groups: give one of them (bands of the "
+                               "rectangle scene, or Gmsh physical surfaces), "
+                               "not both"));
+        const unsigned int n_layer_plies =
+          std::max(ply_heights[l].size(), ply_groups[l].size()) + 1;
         std::vector<GivenEntries> plies;
-        for (unsigned int j = 0;
-             !ply_heights[l].empty() && j < ply_heights[l].size() + 1;
-             ++j)
+        for (unsigned int j = 0; n_layer_plies > 1 && j < n_layer_plies; ++j)
           {
             const std::string name = "Ply " + std::to_string(j + 1);
             prm.enter_subsection(name);
@@ -599,30 +594,6 @@ namespace bilayer
         prm.leave_subsection();
       }
     prm.leave_subsection();
-  }
-
-
-  std::vector<LayerMaterial>
-  MaterialParameters::ply_materials(const Layer l, const Subdomain s) const
-  {
-    std::vector<LayerMaterial> materials;
-    for (unsigned int j = 0; j < n_plies(l); ++j)
-      materials.push_back(material(l, s, j));
-    return materials;
-  }
-
-
-  std::vector<double>
-  MaterialParameters::all_ply_heights() const
-  {
-    std::vector<double> heights;
-    for (unsigned int l = 0; l < n_layers; ++l)
-      heights.insert(heights.end(),
-                     ply_heights[l].begin(),
-                     ply_heights[l].end());
-    std::sort(heights.begin(), heights.end());
-    heights.erase(std::unique(heights.begin(), heights.end()), heights.end());
-    return heights;
   }
 
 

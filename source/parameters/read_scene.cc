@@ -44,6 +44,7 @@ namespace bilayer
         {
           first.enter_subsection(entries::layer_subsection(l));
           first.declare_entry("Ply heights", "", Patterns::Anything());
+          first.declare_entry("Ply groups", "", Patterns::Anything());
           first.leave_subsection();
         }
       first.leave_subsection();
@@ -82,10 +83,15 @@ namespace bilayer
         {
           first.enter_subsection("Materials");
           first.enter_subsection(entries::layer_subsection(l));
-          n_plies[l] = MaterialParameters::count_plies(overridden_value(
-            overrides,
-            {"Materials", entries::layer_subsection(l), "Ply heights"},
-            first.get("Ply heights")));
+          n_plies[l] = MaterialParameters::count_plies(
+            overridden_value(
+              overrides,
+              {"Materials", entries::layer_subsection(l), "Ply heights"},
+              first.get("Ply heights")),
+            overridden_value(
+              overrides,
+              {"Materials", entries::layer_subsection(l), "Ply groups"},
+              first.get("Ply groups")));
           first.leave_subsection();
           first.leave_subsection();
         }

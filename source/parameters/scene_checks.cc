@@ -106,6 +106,14 @@ namespace bilayer
     const auto &geometry = scene.geometry;
     for (unsigned int l = 0; l < scene.materials.n_layers; ++l)
       {
+        AssertThrow(scene.materials.ply_groups[l].empty() ||
+                      (parts.gmsh && scene.mesh.mesh_files.empty()),
+                    ExcMessage("Materials/Layer " + std::to_string(l + 1) +
+                               "/Ply groups names physical surfaces of a "
+                               "Gmsh scene; without Geometry/Gmsh file (or "
+                               "with Mesh/Mesh files) it must be empty: the "
+                               "rectangle scene states plies by Ply "
+                               "heights"));
         const auto &heights = scene.materials.ply_heights[l];
         if (heights.empty())
           continue;

@@ -225,7 +225,8 @@ namespace bilayer
         // (deal.II's text of this error leaves the file name's '<' open.)
         const std::string missing =
           Utilities::trim(message.substr(at + marker.size()));
-        // A ply beyond the layer's: the count comes from its Ply heights;
+        // A ply beyond the layer's: the count comes from its Ply heights
+        // or Ply groups;
         // a layer beyond the stack's: from Materials/Number of layers.
         const bool layer = (missing.rfind("Materials.Layer ", 0) == 0 ||
                             missing.rfind("Loads.Layer ", 0) == 0) &&
@@ -233,8 +234,9 @@ namespace bilayer
                            missing.find(".Omega") == std::string::npos;
         const std::string closest =
           missing.find(".Ply ") != std::string::npos ?
-            "; a layer with n Materials/Layer k/Ply heights has the "
-            "subsections Ply 1 ... Ply n+1 (none without heights)" :
+            "; a layer with n Materials/Layer k/Ply heights or n Ply "
+            "groups has the subsections Ply 1 ... Ply n+1 (none without "
+            "either)" :
           layer ? "; Materials/Number of layers = N gives the subsections "
                   "Layer 1 ... Layer max(2, N) of Materials and Loads" :
                   did_you_mean(prm, missing, true);

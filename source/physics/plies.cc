@@ -1,6 +1,7 @@
 #include <bilayer/physics/plies.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace bilayer
 {
@@ -16,10 +17,13 @@ namespace bilayer
 
 
   PlyLaws::PlyLaws(const std::vector<LayerMaterial> &materials,
-                   const std::vector<double>        &heights)
-    : heights(heights)
+                   const PlyDivision                &division)
+    : materials(materials)
+    , division(division)
   {
-    Assert(materials.size() == heights.size() + 1, ExcInternalError());
+    Assert(materials.size() == 1 || division.by_material_id.size() > 0 ||
+             materials.size() == division.heights.size() + 1,
+           ExcInternalError());
     for (const LayerMaterial &m : materials)
       laws.push_back(make_elastic_law(m));
   }
@@ -27,14 +31,34 @@ namespace bilayer
 
   unsigned int
   PlyLaws::ply_on_boundary(const Triangulation<2>  &tria,
-                           const types::boundary_id id) const
+                           const types::boundary_id id,
+                           const Point<2>          *point) const
   {
-    if (laws.size() > 1)
-      for (const auto &cell : tria.active_cell_iterators())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && face->boundary_id() == id)
-            return ply(*cell);
-    return 0;
+    if (laws.size() == 1)
+      return 0;
+    double       nearest = std::numeric_limits<double>::infinity();
+    unsigned int found   = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == id)
+          {
+            if (point == nullptr)
+              return ply(*cell);
+            const double d = face->center().distance(*point);
+            if (d < nearest)
+              nearest = d, found = ply(*cell);
+          }
+    return found;
+  }
+
+
+  bool
+  PlyLaws::differ(const unsigned int i, const unsigned int j) const
+  {
+    const Eigenstrain3D a = thermal_strain(materials[i]),
+                        b = thermal_strain(materials[j]);
+    return laws[i]->tangent() != laws[j]->tangent() ||
+           a.in_plane != b.in_plane || a.zz != b.zz;
   }
 
 
@@ -48,12 +72,54 @@ namespace bilayer
   }
 
 
-  PlyVolumeLoad::PlyVolumeLoad(std::vector<std::unique_ptr<VolumeLoad>> loads,
-                               const std::vector<double>               &heights)
-    : loads(std::move(loads))
-    , heights(heights)
+  std::vector<std::array<Point<2>, 2>>
+  material_boundaries(const Triangulation<2> &tria, const PlyLaws &laws)
   {
-    Assert(this->loads.size() == heights.size() + 1, ExcInternalError());
+    std::vector<std::array<Point<2>, 2>> faces;
+    if (laws.size() > 1)
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (!cell->at_boundary(f))
+            {
+              const auto neighbor = cell->neighbor(f);
+              // Each face once: from the cell of the smaller level and
+              // index (a coarser neighbour's face is seen from this side).
+              if (!cell->neighbor_is_coarser(f) &&
+                  (neighbor->has_children() ||
+                   neighbor->index() < cell->index()))
+                continue;
+              if (laws.differ(laws.ply(*cell), laws.ply(*neighbor)))
+                faces.push_back(
+                  {{cell->face(f)->vertex(0), cell->face(f)->vertex(1)}});
+            }
+    return faces;
+  }
+
+
+  PlyVolumeLoad::PlyVolumeLoad(std::vector<std::unique_ptr<VolumeLoad>> loads,
+                               const PlyDivision &division)
+    : loads(std::move(loads))
+    , division(division)
+  {
+    Assert(division.by_material_id.size() > 0 ||
+             this->loads.size() == division.heights.size() + 1,
+           ExcInternalError());
+  }
+
+
+  CellLoad
+  PlyVolumeLoad::in(const CellAccessor<2, 2> &cell) const
+  {
+    return {loads[division.ply(cell)].get(), 1, 1};
+  }
+
+
+  const VolumeLoad *
+  PlyVolumeLoad::at(const Point<2> &p) const
+  {
+    Assert(division.by_material_id.empty(),
+           ExcMessage("The load of a ply group is read by cell (in())."));
+    return loads[ply_of(division.heights, p[1])].get();
   }
 
 

@@ -49,3 +49,52 @@ namespace bilayer
              central_difference<SymmetricTensor<2, 2>>(strain, p, 1, h)}};
   }
 } // namespace bilayer
+
+
+namespace bilayer
+{
+  using namespace dealii;
+
+  Tensor<1, 2>
+  CellLoad::body_force(const Point<2> &p) const
+  {
+    return load != nullptr ? factor * load->body_force(p) : Tensor<1, 2>();
+  }
+
+
+  SymmetricTensor<2, 2>
+  CellLoad::eigenstrain(const Point<2> &p) const
+  {
+    if (load == nullptr)
+      return SymmetricTensor<2, 2>();
+    return preload == 1 ? load->eigenstrain(p) : preload * load->eigenstrain(p);
+  }
+
+
+  double
+  CellLoad::eigenstress_zz(const Point<2> &p) const
+  {
+    return load != nullptr ? preload * load->eigenstress_zz(p) : 0.;
+  }
+
+
+  Tensor<2, 2>
+  CellLoad::body_force_gradient(const Point<2> &p) const
+  {
+    return load != nullptr ? factor * load->body_force_gradient(p) :
+                             Tensor<2, 2>();
+  }
+
+
+  std::array<SymmetricTensor<2, 2>, 2>
+  CellLoad::eigenstrain_gradient(const Point<2> &p) const
+  {
+    if (load == nullptr)
+      return std::array<SymmetricTensor<2, 2>, 2>();
+    auto gradient = load->eigenstrain_gradient(p);
+    if (preload != 1)
+      for (auto &g : gradient)
+        g *= preload;
+    return gradient;
+  }
+} // namespace bilayer

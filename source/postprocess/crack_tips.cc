@@ -102,6 +102,7 @@ namespace bilayer
     void
     set_support_radius(const double support_radius,
                        const bool   interfaces,
+                       const bool   plies,
                        CrackTip    &tip)
     {
       if (support_radius == 0)
@@ -114,6 +115,7 @@ namespace bilayer
             << "Fracture/Support radius = " << support_radius
             << " reaches another tip, a corner of "
             << "Sigma" << (interfaces ? ", another interface" : "")
+            << (plies ? ", a ply boundary across the crack" : "")
             << " or the outer boundary from the crack tip at (x, "
             << "y) = (" << tip.point[0] << ", " << tip.point[1]
             << "); allowed: (0, " << tip.free_distance << "), or 0 (automatic)";
@@ -123,12 +125,41 @@ namespace bilayer
   } // namespace
 
 
+  namespace
+  {
+    /**
+     * The distance from @p tip to the nearest of the material boundaries
+     * @p faces that its theta would move: all of them (@p all: a support
+     * that follows a curve; a tip on an arc), or those across the tip's
+     * direction (a straight tip's theta is parallel to it and slides along
+     * a ply boundary parallel to the crack).
+     */
+    double
+    distance_to_ply_boundary(const CrackTip             &tip,
+                             const std::vector<Segment> &faces,
+                             const bool                  all)
+    {
+      double d = std::numeric_limits<double>::infinity();
+      for (const Segment &m : faces)
+        {
+          const Tensor<1, 2> t = m[1] - m[0];
+          if (all || tip.arc ||
+              std::abs(t[0] * tip.direction[1] - t[1] * tip.direction[0]) >
+                1e-10 * t.norm())
+            d = std::min(d, distance_to_segment(tip.point, m[0], m[1]));
+        }
+      return d;
+    }
+  } // namespace
+
+
   std::vector<CrackTip>
   crack_tips(const InterfaceCurve                          &curve,
              const std::array<const Triangulation<2> *, 2> &meshes,
              const double                                   support_radius,
              const unsigned int                             interface,
-             const std::vector<InterfaceCurve>             &other_interfaces)
+             const std::vector<InterfaceCurve>             &other_interfaces,
+             const std::vector<Segment>                    &material_boundaries)
   {
     const double          tol    = curve.tolerance();
     const auto           &pieces = curve.pieces();
@@ -172,8 +203,14 @@ namespace bilayer
             tip.centre = pieces[k].centre;
             tip.radius = pieces[k].radius;
           }
+        const double across_plies =
+                       distance_to_ply_boundary(tip,
+                                                material_boundaries,
+                                                false),
+                     any_ply =
+                       distance_to_ply_boundary(tip, material_boundaries, true);
         // Obstacles: the ends of the chain, the other pieces, the other
-        // tips, the outer boundary.
+        // tips, the outer boundary, the material boundaries.
         const auto obstacles = [&](const unsigned int from,
                                    const unsigned int to) {
           double d = std::min((tip.point - pieces[from].a).norm(),
@@ -189,6 +226,7 @@ namespace bilayer
               d = std::min(d, distance_to_outer_boundary(tip.point, *tria));
           for (const InterfaceCurve &other : other_interfaces)
             d = std::min(d, other.distance(tip.point));
+          d = std::min(d, from == first && to == last ? across_plies : any_ply);
           return d;
         };
         double d = obstacles(first, last);
@@ -229,7 +267,10 @@ namespace bilayer
         if (free_distance == 0)
           continue;
         tip.free_distance = free_distance;
-        set_support_radius(support_radius, !other_interfaces.empty(), tip);
+        set_support_radius(support_radius,
+                           !other_interfaces.empty(),
+                           !material_boundaries.empty(),
+                           tip);
       }
     return tips;
   }

@@ -105,7 +105,8 @@ namespace bilayer
 
 
     /**
-     * The same with the volume terms of @p volume (docs/fracture.md, "Body
+     * The same with the volume terms of @p volume, the load of the cell of
+     * the subproblem's load @p whole (docs/fracture.md, "Body
      * forces and eigenstrains"), the loads fixed in space:
      *   int sigma : (grad u grad theta) - W div theta
      *       + sigma : ((grad eps*) theta) + (f . u) div theta
@@ -118,11 +119,12 @@ namespace bilayer
                   const std::vector<Tensor<2, 2>> &grad_u,
                   const std::vector<Tensor<1, 2>> &u,
                   const ElasticLaw                &law,
-                  const VolumeLoad                &volume,
+                  const VolumeLoad                &whole,
+                  const CellLoad                  &volume,
                   const ThetaField                &field)
     {
-      const bool eigenstrain = volume.has_eigenstrain();
-      const bool body_force  = volume.has_body_force();
+      const bool eigenstrain = whole.has_eigenstrain();
+      const bool body_force  = whole.has_body_force();
       double     sum         = 0;
       for (const unsigned int q : fe_values.quadrature_point_indices())
         {
@@ -212,8 +214,13 @@ namespace bilayer
               integral(t) +=
                 volume == nullptr ?
                   cell_integral(fe_values, grad_u, law, fields[t]) :
-                  cell_integral(
-                    fe_values, grad_u, u_values, law, *volume, fields[t]);
+                  cell_integral(fe_values,
+                                grad_u,
+                                u_values,
+                                law,
+                                *volume,
+                                volume->in(*cell),
+                                fields[t]);
         }
     }
 

@@ -105,14 +105,15 @@ namespace bilayer
       const ElasticLaw                &law         = sub.law(*cell);
       const VolumeLoad *const          eigenstrain = eigenstrain_of(sub);
       const double                     scale       = law.energy_norm_scale();
+      const CellLoad                   load =
+        eigenstrain != nullptr ? eigenstrain->in(*cell) : CellLoad();
       fe_face.reinit(cell, f);
       fe_face[displacement].get_function_symmetric_gradients(w, strain);
       double sum = 0;
       for (const unsigned int q : fe_face.quadrature_point_indices())
         {
           if (eigenstrain != nullptr)
-            strain[q] -=
-              eigenstrain->eigenstrain(fe_face.quadrature_point(q)) / S;
+            strain[q] -= load.eigenstrain(fe_face.quadrature_point(q)) / S;
           const SymmetricTensor<2, 2> stress = law.stress(strain[q]);
           const Tensor<1, 2>          residual =
             stress * fe_face.normal_vector(q) -
@@ -210,6 +211,7 @@ namespace bilayer
           fe_values.reinit(cell);
           fe_values[displacement].get_function_hessians(w, hessians);
           const ElasticLaw &law   = sub.law(*cell);
+          const CellLoad    load  = volume->in(*cell);
           const double      scale = law.energy_norm_scale();
           double            sum   = 0;
           for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -217,10 +219,10 @@ namespace bilayer
               const Point<2> &x = fe_values.quadrature_point(q);
               Tensor<1, 2>    residual;
               if (volume->has_body_force())
-                residual = volume->body_force(x) / S;
+                residual = load.body_force(x) / S;
               std::array<SymmetricTensor<2, 2>, 2> d_eps_star;
               if (volume->has_eigenstrain())
-                d_eps_star = volume->eigenstrain_gradient(x);
+                d_eps_star = load.eigenstrain_gradient(x);
               for (unsigned int j = 0; j < 2; ++j)
                 {
                   // d eps(w) / d x_j - d eps* / d x_j.
@@ -285,8 +287,10 @@ namespace bilayer
                                 eps_b = symmetrize(grad_b[qb]);
           if (eigenstrain != nullptr)
             {
-              eps_a -= eigenstrain->eigenstrain(inside(a, x)) / S;
-              eps_b -= eigenstrain->eigenstrain(inside(b, x)) / S;
+              eps_a -=
+                eigenstrain->in(*a.get_cell()).eigenstrain(inside(a, x)) / S;
+              eps_b -=
+                eigenstrain->in(*b.get_cell()).eigenstrain(inside(b, x)) / S;
             }
           const Tensor<1, 2> gradient = (grad_a[q] - grad_b[qb]) * n;
           const Tensor<1, 2> traction =

@@ -81,7 +81,8 @@ namespace bilayer
   materials_agree_across(
     const PerSubproblem<const ElasticSubproblem *> &subproblems,
     const Topology                                 &topology,
-    const unsigned int                              i)
+    const unsigned int                              i,
+    const Point<2>                                 &tip)
   {
     // Each layer's two sides.
     for (const unsigned int l : Layout::indices(topology.n_slots()))
@@ -91,8 +92,10 @@ namespace bilayer
           *plus  = subproblems[topology.index(static_cast<Layer>(l), i + 1)];
         if (minus == nullptr || plus == nullptr)
           continue;
-        const SymmetricTensor<4, 2> C_minus = minus->interface_law(i).tangent(),
-                                    C_plus  = plus->interface_law(i).tangent();
+        const SymmetricTensor<4, 2> C_minus =
+                                      minus->interface_law(i, tip).tangent(),
+                                    C_plus =
+                                      plus->interface_law(i, tip).tangent();
         double largest = 0, difference = 0;
         for (unsigned int i = 0; i < 2; ++i)
           for (unsigned int j = 0; j < 2; ++j)
@@ -127,13 +130,18 @@ namespace bilayer
       {
         EnergyReleaseRate &g = release[t];
         // The materials at the tip's interface.
-        const unsigned int i = g.tip.interface;
-        const bool     agree = materials_agree_across(subproblems, topology, i);
-        const Coupling across = topology.coupling(i);
-        const double   stiffness =
-          subproblems[across.first] != nullptr ?
-              subproblems[across.first]->interface_law(i).energy_norm_scale() :
-              subproblems[across.second]->interface_law(i).energy_norm_scale();
+        const unsigned int i   = g.tip.interface;
+        const Point<2>    &tip = g.tip.point;
+        const bool         agree =
+          materials_agree_across(subproblems, topology, i, tip);
+        const Coupling across    = topology.coupling(i);
+        const double   stiffness = subproblems[across.first] != nullptr ?
+                                     subproblems[across.first]
+                                     ->interface_law(i, tip)
+                                     .energy_norm_scale() :
+                                     subproblems[across.second]
+                                     ->interface_law(i, tip)
+                                     .energy_norm_scale();
         g.G_I = g.G_II = g.phase_angle = g.mode_split_length = not_a_number;
         g.mode_split_note.clear();
         if (!std::isfinite(g.G))

@@ -42,14 +42,13 @@ namespace bilayer
     const Triangulation<2>           &triangulation,
     const unsigned int                degree,
     const std::vector<LayerMaterial> &materials,
-    const std::vector<double>        &ply_heights,
+    const PlyDivision                &plies,
     const Distribution               &distribution,
     const unsigned int                n_regions)
     : layer_(layer)
     , subdomain_(subdomain)
     , n_regions(n_regions)
-    , laws_(materials, ply_heights)
-    , sigma_ply(laws_.ply_on_boundary(triangulation, BoundaryIds::sigma))
+    , laws_(materials, plies)
     , moduli_entries_(
         materials[0].law == MaterialLaw::orthotropic ? "E_1, E_2, E_3, G_12" :
         materials[0].law == MaterialLaw::anisotropic ? "Stiffness" :
@@ -150,6 +149,8 @@ namespace bilayer
         fresh.apply(fe_values);
         fe_values.reinit(cell);
         const ElasticLaw &law = laws.law(*cell);
+        const CellLoad    load =
+          volume != nullptr ? volume->in(*cell) : CellLoad();
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             for (unsigned int i = 0; i < n; ++i)
@@ -159,9 +160,8 @@ namespace bilayer
             if (volume != nullptr)
               {
                 const Point<2>             &x = fe_values.quadrature_point(q);
-                const Tensor<1, 2>          f = volume->body_force(x);
-                const SymmetricTensor<2, 2> s =
-                  law.stress(volume->eigenstrain(x));
+                const Tensor<1, 2>          f = load.body_force(x);
+                const SymmetricTensor<2, 2> s = law.stress(load.eigenstrain(x));
                 for (unsigned int i = 0; i < n; ++i)
                   cell_rhs(i) +=
                     (fe_values[displacement].value(i, q) * f + s * eps[i]) *
@@ -644,9 +644,10 @@ namespace bilayer
       {
         fresh.apply(fe_values);
         fe_values.reinit(cell);
+        const CellLoad load = volume_->in(*cell);
         for (const unsigned int q : fe_values.quadrature_point_indices())
           sum += laws_.law(*cell).energy_density(
-                   volume_->eigenstrain(fe_values.quadrature_point(q))) *
+                   load.eigenstrain(fe_values.quadrature_point(q))) *
                  fe_values.JxW(q);
       }
     return sum;

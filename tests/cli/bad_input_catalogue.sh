@@ -107,7 +107,11 @@ check "entry of physics not modelled in a file" "No entry with name <Cohesive st
 # them is a misspelling.
 check "ply height outside Omega" "Materials/Layer 1/Ply heights must lie strictly inside Omega, -1 < y < 1, got 2" "$prm" --set "Materials/Layer 1/Ply heights=0.5, 2"
 check "ply heights not increasing" "Materials/Layer 1/Ply heights must be a list of heights y that increase strictly (the ply boundaries from the bottom), got '0.5, 0.2'" "$prm" --set "Materials/Layer 1/Ply heights=0.5, 0.2"
-check "ply beyond the layer's" "Line <4> of file <ply3.prm>: There is no such subsection to be entered: Materials.Layer 1.Ply 3; a layer with n Materials/Layer k/Ply heights has the subsections Ply 1 ... Ply n+1" ply3.prm
+check "ply beyond the layer's" "Line <4> of file <ply3.prm>: There is no such subsection to be entered: Materials.Layer 1.Ply 3; a layer with n Materials/Layer k/Ply heights or n Ply groups has the subsections Ply 1 ... Ply n+1" ply3.prm
+check "ply groups in the rectangle scene" "Materials/Layer 1/Ply groups names physical surfaces of a Gmsh scene; without Geometry/Gmsh file (or with Mesh/Mesh files) it must be empty" "$prm" --set "Materials/Layer 1/Ply groups=upper"
+check "ply heights and ply groups" "Materials/Layer 1/Ply heights and Materials/Layer 1/Ply groups: give one of them" "$prm" --set "Materials/Layer 1/Ply heights=0.5" --set "Materials/Layer 1/Ply groups=upper"
+check "ply group named twice" "Materials/Layer 1/Ply groups must be a list of the names of Gmsh physical surfaces inside Omega- or Omega+, each once (not the regions themselves), got 'upper, upper'" "$prm" --set "Materials/Layer 1/Ply groups=upper, upper"
+check "a region as a ply group" "Materials/Layer 2/Ply groups must be a list of the names of Gmsh physical surfaces" "$prm" --set "Materials/Layer 2/Ply groups=Omega+"
 check "layer beyond the stack" "Line <2> of file <layer3.prm>: There is no such subsection to be entered: Materials.Layer 3; Materials/Number of layers = N gives the subsections Layer 1 ... Layer max(2, N) of Materials and Loads" layer3.prm
 check "too many layers" "Materials/Number of layers=65: The string <65> does not match the given pattern <[Integer range 1...64 (inclusive)]>" "$prm" --set "Materials/Number of layers=65"
 check "misspelled friction entry" "no entry 'Contact/Friction coeficient' is declared; did you mean 'Contact/Friction coefficient'?" "$prm" --set "Contact/Friction coeficient=0.3"

@@ -165,6 +165,20 @@ case_ "interface edges in no group" "which is in neither 'Sigma' nor 'crack'" \
   's/Physical Curve("Sigma") = {11, 13, 15};/Physical Curve("Sigma") = {11, 15};/'
 case_ "geometry gmsh cannot mesh" "Unknown control point 99" 's/^Line(4) = {3, 4};/Line(4) = {3, 99};/'
 case_ "missing file" "no such file" 's/^$//' --set "Geometry/Gmsh file=missing.geo"
+# --- Ply groups (physical surfaces inside the regions).
+case_ "ply group not in the file" "Materials/Layer k/Ply groups names 'upper', which is not a physical surface of Geometry/Gmsh file 'scene.geo'" \
+  's/^$//' --set "Materials/Layer 1/Ply groups=upper"
+case_ "cell in two ply groups" "is in two ply groups, 'a' and 'b' (Materials/Layer k/Ply groups): a cell lies in one ply" \
+  '$a Physical Surface("a") = {2}; Physical Surface("b") = {2};' \
+  --set "Materials/Layer 1/Ply groups=a" --set "Materials/Layer 2/Ply groups=b"
+# A ply group of the layer's own law, and a named surface inside Omega+ that
+# no entry names (a note): the energy of two_cracks.prm.
+sed '$a Physical Surface("upper") = {2};' "$source_dir/two_cracks.geo" > scene.geo
+sed 's/two_cracks.geo/scene.geo/' "$source_dir/two_cracks.prm" > scene.prm
+accept "ply group of the layer's own law" --set "Materials/Layer 1/Ply groups=upper"
+accept "named surface inside a region, no ply group"
+grep -qF "note: the physical surface 'upper' of Geometry/Gmsh file is not among Materials/Layer k/Ply groups" run_stdout
+report "named surface inside a region: a note names it" "$([[ $? -eq 0 ]] || echo 'no note')"
 printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n' > other.msh
 case_ "mesh of format 4" "format 2" 's/^$//' --set "Geometry/Gmsh file=other.msh"
 

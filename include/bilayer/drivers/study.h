@@ -361,6 +361,12 @@ namespace bilayer
     /// their supports hold enough cells of the present meshes.
     void
     update_tips(const CycleRecord &record);
+
+    /// The faces between plies of different laws or thermal expansions, of
+    /// every layer in every region (material_boundaries()): obstacles of
+    /// the tips' theta where it would move them.
+    std::vector<Segment>
+    ply_boundaries() const;
     /**
      * One state on the present subproblems: the interface (and the
      * multipliers, from @p previous if given), the outer solve, the

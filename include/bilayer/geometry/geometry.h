@@ -96,10 +96,13 @@ namespace bilayer
   public:
     /// The rectangle or Gmsh scene @p geometry, meshed by @p mesh; the
     /// structured meshes fit a row of vertices to each of @p ply_heights
-    /// inside Omega (MaterialParameters::ply_heights).
-    Geometry(const GeometryParameters  &geometry,
-             const MeshParameters      &mesh,
-             const std::vector<double> &ply_heights = {});
+    /// inside Omega (MaterialParameters::ply_heights); the cells of the
+    /// Gmsh physical surfaces @p ply_groups (MaterialParameters::
+    /// all_ply_groups()) carry the material id of their group.
+    Geometry(const GeometryParameters       &geometry,
+             const MeshParameters           &mesh,
+             const std::vector<double>      &ply_heights = {},
+             const std::vector<std::string> &ply_groups  = {});
 
     /// Build both meshes of refinement cycle @p cycle (cells along Sigma
     /// times 2^cycle).
@@ -159,6 +162,15 @@ namespace bilayer
     }
 
     /// Every interface (Sigma first) as a curve.
+    /// The named physical surfaces of a Gmsh scene inside its regions that
+    /// no Materials/Layer k/Ply groups entry names (read, not used: their
+    /// cells take their region's law).
+    const std::vector<std::string> &
+    unread_surfaces() const
+    {
+      return unlisted_surfaces;
+    }
+
     const std::vector<InterfaceCurve> &
     interface_curves() const
     {
@@ -244,6 +256,18 @@ namespace bilayer
     void
     load_gmsh();
 
+    /// Take the cells of the ply groups out of @p g (they are cells of
+    /// Omega- or Omega+ as well), keeping their material ids by nodes.
+    void
+    take_ply_groups(GmshMesh &g, const std::string &where);
+
+    /// Refuse a ply group cell that is no cell of a region (@p surface:
+    /// the physical tags of Omega- and Omega+).
+    void
+    check_ply_cells(const GmshMesh           &g,
+                    const std::array<int, 2> &surface,
+                    const std::string        &where) const;
+
     /// The mesh of @p subdomain from the Gmsh scene: cells of the physical
     /// surface, boundary ids from the physical curves, polar manifolds on
     /// the circular arcs.
@@ -251,9 +275,17 @@ namespace bilayer
     make_gmsh_subdomain(const Subdomain           subdomain,
                         dealii::Triangulation<2> &tria) const;
 
-    const GeometryParameters  geometry;
-    const MeshParameters      mesh;
-    const std::vector<double> ply_heights;
+    const GeometryParameters       geometry;
+    const MeshParameters           mesh;
+    const std::vector<double>      ply_heights;
+    const std::vector<std::string> ply_groups;
+    /// The named physical surfaces of the Gmsh scene inside the regions
+    /// that no Ply groups entry names (their cells take their region's
+    /// law).
+    std::vector<std::string> unlisted_surfaces;
+    /// The material id (ply group k: k + 1) of the Gmsh cells in a ply
+    /// group, by their sorted Gmsh nodes.
+    std::map<std::vector<unsigned int>, dealii::types::material_id> ply_cells;
     /// One mesh per region, one curve per interface.
     std::vector<dealii::Triangulation<2>> triangulations;
     std::vector<InterfaceCurve>           curves;

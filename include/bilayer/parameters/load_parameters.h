@@ -114,14 +114,14 @@ namespace bilayer
                 const LayerMaterial &material,
                 const double         length_scale) const;
     /**
-     * The volume load of the subproblem of @p layer whose plies (between
-     * @p ply_heights) have the materials @p plies: that of its one
+     * The volume load of the subproblem of @p layer whose plies
+     * (@p division) have the materials @p plies: that of its one
      * material, or a PlyVolumeLoad of each ply's (null where none has one).
      */
     std::unique_ptr<VolumeLoad>
     volume_load(const Layer                       layer,
                 const std::vector<LayerMaterial> &plies,
-                const std::vector<double>        &ply_heights,
+                const PlyDivision                &division,
                 const double                      length_scale) const;
     /// Whether Loads/Temperature change is not "0" and @p material expands.
     bool

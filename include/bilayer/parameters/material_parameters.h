@@ -5,7 +5,9 @@
 
 #include <bilayer/core/layout.h>
 #include <bilayer/physics/elastic_law.h>
+#include <bilayer/physics/plies.h>
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -16,14 +18,16 @@
  * (LayerMaterial, elastic_law.h: the law's own parameters), in its
  * subsections Omega- and Omega+ the law entries that differ on one side of
  * Sigma (empty: as the layer), and its plies: the cell groups of the
- * regions, horizontal bands between the heights Ply heights, each with the
- * law entries that differ in it (subsections Ply 1, Ply 2, ... from the
- * bottom).
+ * regions, horizontal bands between the heights Ply heights (subsections
+ * Ply 1, Ply 2, ... from the bottom) or the Gmsh physical surfaces Ply
+ * groups (Ply 1 ... Ply n in their order, Ply n+1 the cells in none), each
+ * with the law entries that differ in it.
  */
 namespace bilayer
 {
   /// The number of plies of each layer (the subsections Ply 1 ... Ply n
-  /// that Materials/Layer k declares): one more than its ply heights; one
+  /// that Materials/Layer k declares): one more than its ply heights or
+  /// ply groups; one
   /// per layer slot (at least two: Layer 1 and Layer 2 are always
   /// declared), so its size also says how many Layer k subsections the
   /// Materials and Loads sections declare.
@@ -56,6 +60,13 @@ namespace bilayer
      */
     std::vector<std::vector<double>> ply_heights{2};
     /**
+     * ply_groups[l]: Materials/Layer k/Ply groups, the names of Gmsh
+     * physical surfaces inside the regions. Ply j (0-based; the entries'
+     * Ply j+1) is the cells of group j; ply n (Ply n+1) the cells in none
+     * of the n groups. Empty: plies by heights, or one ply.
+     */
+    std::vector<std::vector<std::string>> ply_groups{2};
+    /**
      * ply[l][s][j]: the material of ply j of layer l on the subdomain s
      * where Materials/Layer k/Ply j+1 gives a law entry: the side's
      * material with those entries; empty where the ply gives none (then
@@ -83,12 +94,24 @@ namespace bilayer
       return j < plies.size() && plies[j] ? *plies[j] : material(l, s);
     }
 
-    /// The number of plies of the layer @p l (1: no Ply heights).
+    /// The number of plies of the layer @p l (1: no Ply heights, no Ply
+    /// groups).
     unsigned int
     n_plies(const Layer l) const
     {
-      return ply_heights[static_cast<unsigned int>(l)].size() + 1;
+      const unsigned int i = static_cast<unsigned int>(l);
+      return std::max(ply_heights[i].size(), ply_groups[i].size()) + 1;
     }
+
+    /// How the layer @p l is cut into plies (the material ids of the ply
+    /// groups: all_ply_groups(), Geometry::ply_material_id()).
+    PlyDivision
+    division(const Layer l) const;
+
+    /// The ply groups of the layers present, each once, in the order in
+    /// which the layers name them: group k has the material id k + 1.
+    std::vector<std::string>
+    all_ply_groups() const;
 
     /// The materials of the layer @p l on the subdomain @p s, by ply.
     std::vector<LayerMaterial>
@@ -123,11 +146,22 @@ namespace bilayer
     declare_parameters(dealii::ParameterHandler &prm,
                        const PlyCounts          &n_plies = {1, 1});
 
-    /// The number of plies that the text @p heights of a Ply heights entry
-    /// states (one more than its items; 1 where it is empty or broken: the
-    /// full parse reports it).
+    /// The number of plies that the texts @p heights of a Ply heights entry
+    /// and @p groups of a Ply groups entry state (one more than the items of
+    /// the longer; 1 where both are empty or broken: the full parse reports
+    /// it).
     static unsigned int
-    count_plies(const std::string &heights);
+    count_plies(const std::string &heights, const std::string &groups);
+
+    /// The heights of the entry @p entry (Ply heights) of the text
+    /// @p text, checked to increase strictly.
+    static std::vector<double>
+    parse_ply_heights(const std::string &text, const std::string &entry);
+
+    /// The names of the entry @p entry (Ply groups) of the text @p text:
+    /// Gmsh physical surfaces, each once, none a region.
+    static std::vector<std::string>
+    parse_ply_groups(const std::string &text, const std::string &entry);
 
     /// The entries of a layer's law ("Law", "Young's modulus", ...,
     /// "Stiffness"), which its sides may override.

@@ -4,12 +4,44 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/grid/tria_accessor.h>
 
 #include <array>
 #include <memory>
 
 namespace bilayer
 {
+  class VolumeLoad;
+
+  /**
+   * The load in one cell (VolumeLoad::in()): the load of the cell's ply
+   * (null: none) under a load factor on its body force and one on its
+   * eigenstrain. Each value is the load's own times its factor; with
+   * factors 1 the load's value, bit for bit.
+   */
+  struct CellLoad
+  {
+    const VolumeLoad *load    = nullptr;
+    double            factor  = 1;
+    double            preload = 1;
+
+    dealii::Tensor<1, 2>
+    body_force(const dealii::Point<2> &p) const;
+
+    dealii::SymmetricTensor<2, 2>
+    eigenstrain(const dealii::Point<2> &p) const;
+
+    double
+    eigenstress_zz(const dealii::Point<2> &p) const;
+
+    dealii::Tensor<2, 2>
+    body_force_gradient(const dealii::Point<2> &p) const;
+
+    std::array<dealii::SymmetricTensor<2, 2>, 2>
+    eigenstrain_gradient(const dealii::Point<2> &p) const;
+  };
+
+
   /**
    * The volume terms of a layer's load: a body force f [stress / length]
    * and an eigenstrain eps* (thermal, misfit, swelling strains; in-plane,
@@ -105,6 +137,19 @@ namespace bilayer
     {
       return *this;
     }
+
+    /**
+     * The load in @p cell: this load itself, except for the loads that
+     * differ by the cell's ply (PlyVolumeLoad) and their scaled views
+     * (ScaledVolumeLoad). The readers that loop over cells read the load
+     * through it, so that a ply that a point alone does not identify (a
+     * Gmsh ply group) gets its own load.
+     */
+    virtual CellLoad
+    in(const dealii::CellAccessor<2, 2> &) const
+    {
+      return {this, 1, 1};
+    }
   };
 
 
@@ -197,6 +242,15 @@ namespace bilayer
     unit_load() const override
     {
       return load->unit_load();
+    }
+
+    CellLoad
+    in(const dealii::CellAccessor<2, 2> &cell) const override
+    {
+      CellLoad inner = load->in(cell);
+      inner.factor *= factor;
+      inner.preload *= preload_factor;
+      return inner;
     }
 
   private:

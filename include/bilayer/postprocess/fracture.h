@@ -72,7 +72,8 @@ namespace bilayer
      */
     double support_radius = 0;
     /// The distance from the tip to the nearest obstacle of theta (another
-    /// tip, a corner or another piece of Sigma, the outer boundary): the
+    /// tip, a corner or another piece of Sigma, the outer boundary, another
+    /// interface, a ply boundary across the direction of growth): the
     /// support radius must stay below it.
     double free_distance = 0;
 
@@ -94,11 +95,19 @@ namespace bilayer
     }
   };
 
+  /// A straight piece of a curve (a face): its two ends.
+  using Segment = std::array<dealii::Point<2>, 2>;
+
   /**
    * The tips of the crack of @p curve (interface @p interface), ordered by
    * s, with the outer boundary of @p meshes (their boundary faces off the
    * interfaces) and the other interfaces @p obstacles as obstacles: the
-   * support of theta stays inside the two regions of the interface.
+   * support of theta stays inside the two regions of the interface. The
+   * faces @p material_boundaries between plies of different materials are
+   * obstacles too, except where theta moves along them (a straight tip's
+   * support may cross a ply boundary parallel to its direction of growth):
+   * the domain integral of G holds where theta keeps every material
+   * boundary in place.
    * @p support_radius (Fracture/Support radius): 0 chooses half the free
    * distance; a given radius must be smaller than the free distance of
    * every tip (else an exception names the entry and the allowed range).
@@ -107,8 +116,9 @@ namespace bilayer
   crack_tips(const InterfaceCurve                                  &curve,
              const std::array<const dealii::Triangulation<2> *, 2> &meshes,
              const double                       support_radius,
-             const unsigned int                 interface = 0,
-             const std::vector<InterfaceCurve> &obstacles = {});
+             const unsigned int                 interface           = 0,
+             const std::vector<InterfaceCurve> &obstacles           = {},
+             const std::vector<Segment>        &material_boundaries = {});
 
   /**
    * The velocity field theta of a tip: theta(x) = psi(|x - tip|) T(x), with

@@ -60,9 +60,9 @@ namespace bilayer
 
   /**
    * Whether the materials of every present layer agree across interface
-   * @p i of @p topology (Sigma: 0): the tangents C of the laws at the
-   * interface of u- and u+ (and of v- and v+ where layer 2 exists) equal to
-   * 1e-12 of their largest entry. Then the field at a tip
+   * @p i of @p topology (Sigma: 0) at the crack tip @p tip: the tangents C
+   * of the laws of the plies next to the tip on either side, in every
+   * layer, equal to 1e-12 of their largest entry. Then the field at a tip
    * splits into the parts symmetric and antisymmetric about the crack line
    * and the closure ratio tends to the mode ratio as Delta -> 0; otherwise
    * (an interface crack between different materials) the near-tip field
@@ -72,7 +72,8 @@ namespace bilayer
   materials_agree_across(
     const PerSubproblem<const ElasticSubproblem *> &subproblems,
     const Topology                                 &topology,
-    const unsigned int                              i = 0);
+    const unsigned int                              i,
+    const dealii::Point<2>                         &tip);
 
   /**
    * Fill G_I, G_II, phase_angle, mode_split_length and mode_split_note of

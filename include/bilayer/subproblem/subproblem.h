@@ -71,15 +71,15 @@ namespace bilayer
                           distribution)
     {}
 
-    /// The subproblem of the plies of @p materials between @p ply_heights
-    /// (PlyLaws), on region @p subdomain of a scene of @p n_regions regions
-    /// (Topology; Omega- and Omega+ of Sigma: 0 and 1 of 2).
+    /// The subproblem of the plies @p plies of @p materials (PlyLaws), on
+    /// region @p subdomain of a scene of @p n_regions regions (Topology;
+    /// Omega- and Omega+ of Sigma: 0 and 1 of 2).
     ElasticSubproblem(const Layer                       layer,
                       const Subdomain                   subdomain,
                       const dealii::Triangulation<2>   &triangulation,
                       const unsigned int                degree,
                       const std::vector<LayerMaterial> &materials,
-                      const std::vector<double>        &ply_heights,
+                      const PlyDivision                &plies,
                       const Distribution &distribution = Distribution::world(),
                       const unsigned int  n_regions    = 2);
 
@@ -383,22 +383,15 @@ namespace bilayer
       return laws_;
     }
 
-    /// The law of the cells along Sigma (their ply).
+    /// The law of the cells on interface @p i next to @p point (a crack
+    /// tip: the ply of the cell with the face on the interface nearest to
+    /// it).
     const ElasticLaw &
-    sigma_law() const
+    interface_law(const unsigned int i, const dealii::Point<2> &point) const
     {
-      return laws_.law(sigma_ply);
-    }
-
-    /// The law of the cells on interface @p i (Sigma: 0; their ply, the
-    /// first's where none lies on it).
-    const ElasticLaw &
-    interface_law(const unsigned int i) const
-    {
-      return i == 0 ? sigma_law() :
-                      laws_.law(
-                        laws_.ply_on_boundary(dof_handler().get_triangulation(),
-                                              BoundaryIds::interface(i)));
+      return laws_.law(laws_.ply_on_boundary(dof_handler().get_triangulation(),
+                                             BoundaryIds::interface(i),
+                                             &point));
     }
     unsigned int
     n_dofs() const
@@ -437,7 +430,6 @@ namespace bilayer
     /// The regions of the scene (Topology): the subproblem's index.
     const unsigned int                 n_regions;
     PlyLaws                            laws_;
-    const unsigned int                 sigma_ply;
     std::string                        moduli_entries_; // named on overflow
     unsigned int                       factorisations = 0;
     const Distribution                &distribution;
