@@ -162,8 +162,10 @@ namespace bilayer
   {
     growth_steps.clear();
     followed.clear();
-    sigma_vertices   = domain.sigma_vertex_parameters();
-    const double tol = domain.interface_curve().tolerance();
+    const std::vector<InterfaceCurve> &curves = domain.interface_curves();
+    interface_vertices.clear();
+    for (const unsigned int i : Layout::indices(curves.size()))
+      interface_vertices.push_back(domain.sigma_vertex_parameters(i));
     AssertThrow(!tips.empty(),
                 ExcMessage("Fracture/Crack growth needs a crack with a tip "
                            "inside Omega (Geometry/Crack interval on Sigma, or "
@@ -171,34 +173,36 @@ namespace bilayer
     for (unsigned int t = 0; t < tips.size(); ++t)
       {
         FollowedTip tip;
-        tip.number           = t + 1;
-        tip.s                = tips[t].s;
-        tip.sign             = tips[t].sign;
-        const bool on_vertex = std::any_of(sigma_vertices.begin(),
-                                           sigma_vertices.end(),
-                                           [&](const double v) {
-                                             return std::abs(v - tip.s) <= tol;
-                                           });
+        tip.number         = t + 1;
+        tip.interface      = tips[t].interface;
+        tip.s              = tips[t].s;
+        tip.sign           = tips[t].sign;
+        const double tol   = curves[tip.interface].tolerance();
+        const auto  &on_it = interface_vertices[tip.interface];
+        const bool   on_vertex =
+          std::any_of(on_it.begin(), on_it.end(), [&](const double v) {
+            return std::abs(v - tip.s) <= tol;
+          });
         AssertThrow(on_vertex,
                     ExcMessage(
                       "Fracture/Crack growth: the crack tip at " +
                       tip_position(tips[t], scene.geometry.gmsh_file.empty()) +
-                      " is not a vertex of Sigma on both meshes "
+                      " is not a vertex of its interface on both meshes "
                       "(non-matching traces): give both meshes a "
                       "vertex there"));
         followed.push_back(tip);
       }
-    // The toughness, positive and finite at every vertex of Sigma where a
-    // tip may stand (off the crack: it never closes), before the first
-    // step.
-    const InterfaceCurve &curve = domain.interface_curve();
-    for (const double s : sigma_vertices)
-      if (!curve.crack().contains(s))
-        {
-          scene.fracture.toughness_at(curve.point(s), s);
-          if (scene.fracture.mixed_mode_law != MixedModeLaw::mode_independent)
-            scene.fracture.mode_ii_toughness_at(curve.point(s), s);
-        }
+    // The toughness, positive and finite at every vertex of every
+    // interface where a tip may stand (off the crack: it never closes),
+    // before the first step.
+    for (const unsigned int i : Layout::indices(curves.size()))
+      for (const double s : interface_vertices[i])
+        if (!curves[i].crack().contains(s))
+          {
+            scene.fracture.toughness_at(curves[i].point(s), s);
+            if (scene.fracture.mixed_mode_law != MixedModeLaw::mode_independent)
+              scene.fracture.mode_ii_toughness_at(curves[i].point(s), s);
+          }
     point_subproblems.clear();
     for (const Point<2> &p : scene.output.displacement_points)
       point_subproblems.push_back(point_subproblem(p));
@@ -359,15 +363,16 @@ namespace bilayer
                      const double       lambda,
                      const std::string &kind)
   {
-    const FractureParameters &fracture = scene.fracture;
-    const double              tol      = domain.interface_curve().tolerance();
-    const CrackSet           &crack    = domain.interface_curve().crack();
-    GrowthStep                step;
+    const FractureParameters          &fracture = scene.fracture;
+    const std::vector<InterfaceCurve> &curves   = domain.interface_curves();
+    GrowthStep                         step;
     step.step         = record.cycle;
     step.load_factor  = lambda;
     step.kind         = kind;
     step.energy       = record.energy;
-    step.crack_length = total_length(crack);
+    step.crack_length = 0;
+    for (const InterfaceCurve &curve : curves)
+      step.crack_length += total_length(curve.crack());
     measure_loading(step);
     for (FollowedTip &followed_tip : followed)
       {
@@ -379,10 +384,13 @@ namespace bilayer
             continue;
           }
         // The tip of this record at the followed position (none: the piece
-        // merged with another, or reached an end of Sigma).
+        // merged with another, or reached an end of its interface).
+        const CrackSet &crack      = curves[followed_tip.interface].crack();
+        const double    tol        = curves[followed_tip.interface].tolerance();
         const EnergyReleaseRate *g = nullptr;
         for (const EnergyReleaseRate &candidate : record.release)
-          if (std::abs(candidate.tip.s - followed_tip.s) <= 10 * tol &&
+          if (candidate.tip.interface == followed_tip.interface &&
+              std::abs(candidate.tip.s - followed_tip.s) <= 10 * tol &&
               candidate.tip.sign == followed_tip.sign)
             g = &candidate;
         if (!g)
@@ -466,32 +474,40 @@ namespace bilayer
   bool
   Study::advance_tips(const std::vector<unsigned int> &growing)
   {
-    const InterfaceCurve &curve = domain.interface_curve();
-    const double          tol   = curve.tolerance();
-    CrackSet              crack = curve.crack();
-    bool                  moved = false;
+    const std::vector<InterfaceCurve> &curves = domain.interface_curves();
+    std::vector<CrackSet>              cracks;
+    for (const InterfaceCurve &curve : curves)
+      cracks.push_back(curve.crack());
+    std::vector<bool> moved(curves.size(), false);
     for (const unsigned int i : growing)
       {
-        FollowedTip &tip   = followed[i];
-        auto         at    = std::lower_bound(sigma_vertices.begin(),
-                                   sigma_vertices.end(),
-                                   tip.s - tol);
-        int          index = at - sigma_vertices.begin();
-        double       s     = tip.s;
-        std::string  stop;
+        FollowedTip          &tip      = followed[i];
+        const InterfaceCurve &curve    = curves[tip.interface];
+        const auto           &vertices = interface_vertices[tip.interface];
+        CrackSet             &crack    = cracks[tip.interface];
+        const double          tol      = curve.tolerance();
+        auto                  at =
+          std::lower_bound(vertices.begin(), vertices.end(), tip.s - tol);
+        int         index = at - vertices.begin();
+        double      s     = tip.s;
+        std::string stop;
+        // Sigma, or interface K >= 2 by its number.
+        const std::string name =
+          tip.interface == 0 ? std::string("Sigma") :
+                               "interface " + std::to_string(tip.interface + 1);
         for (unsigned int k = 0; k < scene.fracture.growth_increment; ++k)
           {
             const int next = index + (tip.sign > 0 ? 1 : -1);
-            if (next < 0 || next >= static_cast<int>(sigma_vertices.size()))
+            if (next < 0 || next >= static_cast<int>(vertices.size()))
               {
-                stop = "at the end of Sigma";
+                stop = "at the end of " + name;
                 break;
               }
-            const double   candidate_s = sigma_vertices[next];
+            const double   candidate_s = vertices[next];
             const CrackSet candidate   = moved_end(crack, s, candidate_s, tol);
             std::string    refusal     = curve.crack_refusal(candidate);
             if (refusal.empty())
-              refusal = support_refusal(candidate);
+              refusal = support_refusal(candidate, tip.interface);
             if (!refusal.empty())
               {
                 stop = refusal;
@@ -503,45 +519,57 @@ namespace bilayer
             Tensor<1, 2> before, after;
             if (crack.contains(s) || crack.mouth(s))
               {
-                stop = crack.mouth(s) ? "reached the end of Sigma" :
+                stop = crack.mouth(s) ? "reached the end of " + name :
                                         "merged with the next crack piece";
                 break;
               }
             if (curve.corner(s, before, after))
               {
-                stop = "at a corner of Sigma";
+                stop = "at a corner of " + name;
                 break;
               }
           }
         if (s != tip.s)
           {
-            moved = true;
-            tip.s = s;
+            moved[tip.interface] = true;
+            tip.s                = s;
           }
         if (!stop.empty())
           tip.stopped = stop;
       }
-    if (moved)
-      set_crack(crack);
-    return moved;
+    bool any = false;
+    for (const unsigned int i : Layout::indices(curves.size()))
+      if (moved[i])
+        {
+          set_crack(cracks[i], i);
+          any = true;
+        }
+    return any;
   }
 
 
   std::string
-  Study::support_refusal(const CrackSet &crack) const
+  Study::support_refusal(const CrackSet &crack, const unsigned int i) const
   {
     // A given support radius must stay below the free distance of every
     // tip of the new crack (crack_tips() refuses it otherwise).
     if (!(scene.fracture.support_radius > 0))
       return "";
-    InterfaceCurve curve = domain.interface_curve();
+    const std::vector<InterfaceCurve> &curves = domain.interface_curves();
+    InterfaceCurve                     curve  = curves[i];
     curve.set_crack(crack);
+    std::vector<InterfaceCurve> others;
+    for (const unsigned int j : Layout::indices(curves.size()))
+      if (j != i)
+        others.push_back(curves[j]);
     try
       {
         crack_tips(curve,
-                   {{&domain.triangulation(Subdomain::minus),
-                     &domain.triangulation(Subdomain::plus)}},
-                   scene.fracture.support_radius);
+                   {{&domain.triangulation(i), &domain.triangulation(i + 1)}},
+                   scene.fracture.support_radius,
+                   i,
+                   others,
+                   ply_boundaries());
       }
     catch (const ExceptionBase &e)
       {
@@ -591,11 +619,12 @@ namespace bilayer
   unsigned int
   Study::point_subproblem(const Point<2> &p) const
   {
-    // Omega- first: a point on Sigma is read on the minus side.
-    for (const Subdomain d : {Subdomain::minus, Subdomain::plus})
+    // The regions from the bottom: a point on an interface is read in the
+    // region below it.
+    for (const unsigned int r : Layout::indices(topology.n_regions()))
       {
-        const unsigned int           s = Layout::index(Layer::first, d);
-        const GridTools::Cache<2, 2> cache(domain.triangulation(d),
+        const unsigned int           s = topology.index(Layer::first, r);
+        const GridTools::Cache<2, 2> cache(domain.triangulation(r),
                                            subproblems[s]->mapping());
         const auto found = GridTools::find_active_cell_around_point(cache, p);
         if (found.first.state() == IteratorState::valid)

@@ -348,9 +348,9 @@ namespace bilayer
 
 
   void
-  Study::set_crack(const CrackSet &crack)
+  Study::set_crack(const CrackSet &crack, const unsigned int i)
   {
-    domain.set_crack(crack);
+    domain.set_crack(crack, i);
     tips_found = false;
   }
 

@@ -201,9 +201,9 @@ namespace bilayer
 
 
   void
-  Geometry::set_crack(const CrackSet &crack)
+  Geometry::set_crack(const CrackSet &crack, const unsigned int i)
   {
-    InterfaceCurve   &curve   = curves[0];
+    InterfaceCurve   &curve   = curves[i];
     const std::string refusal = curve.crack_refusal(crack);
     AssertThrow(refusal.empty(), ExcMessage(refusal));
     const CrackSet previous = curve.crack();

@@ -93,10 +93,6 @@ namespace bilayer
                 ExcMessage(entry + " cuts the rectangle's structured meshes "
                                    "into regions: Mesh/Mesh files must be "
                                    "empty"));
-    AssertThrow(scene.fracture.growth == CrackGrowth::none,
-                ExcMessage("Fracture/Crack growth moves the tips of Sigma "
-                           "only: with " +
-                           entry + " it must be none"));
   }
 
 

@@ -220,6 +220,8 @@ namespace bilayer
     struct FollowedTip
     {
       unsigned int number = 0;
+      /// The tip's interface (Sigma: 0), its parameter on it, its sense.
+      unsigned int interface = 0;
       double       s = 0, sign = 1;
       bool         present = true;
       std::string  stopped;
@@ -230,7 +232,8 @@ namespace bilayer
     bool                      growth_run = false, onsets_exact = false;
     std::vector<GrowthStep>   growth_steps;
     std::vector<FollowedTip>  followed;
-    std::vector<double>       sigma_vertices;
+    /// The vertices of each interface (Sigma first) where a tip may stand.
+    std::vector<std::vector<double>> interface_vertices;
     std::vector<unsigned int> point_subproblems;
     std::string               growth_stop;
     /// What growth.csv holds: its head, and the rows of this many steps.
@@ -279,7 +282,7 @@ namespace bilayer
     bool
     advance_tips(const std::vector<unsigned int> &growing);
     std::string
-    support_refusal(const CrackSet &crack) const;
+    support_refusal(const CrackSet &crack, const unsigned int i = 0) const;
     void
     measure_loading(GrowthStep &step) const;
     unsigned int
@@ -320,7 +323,7 @@ namespace bilayer
     /// The crack of the geometry on the present meshes; the tips are found
     /// again (the one place where the crack changes).
     void
-    set_crack(const CrackSet &crack);
+    set_crack(const CrackSet &crack, const unsigned int i = 0);
     /// Refuses a cycle that would not fit into the memory (the estimate
     /// goes into @p record).
     void

@@ -185,10 +185,10 @@ namespace bilayer
      * only where it is not on Gamma_D: an edge crack, leaving some of Sigma
      * glued; InterfaceCurve::crack_refusal()) and end at vertices of both
      * meshes on Sigma; else nothing changes and the error names the piece or
-     * the end point.
+     * the end point. The crack of interface @p i (Sigma: 0).
      */
     void
-    set_crack(const CrackSet &crack);
+    set_crack(const CrackSet &crack, const unsigned int i = 0);
 
     /// The parameters s of the vertices of interface @p i (Sigma: 0) that
     /// both meshes have, increasing: where a crack tip may stand
