@@ -225,6 +225,7 @@ namespace bilayer
         , layers(n)
         , subdomains(n)
         , regions(n)
+        , plies(n)
         , piece_of(n)
         , simplex(n, false)
       {}
@@ -232,9 +233,12 @@ namespace bilayer
       // Declared before the DataOut objects that subscribe to them.
       PerSubproblem<std::unique_ptr<StressPostprocessor>> stresses;
       PerSubproblem<DataOut<2>>                           data_outs;
-      PerSubproblem<Vector<float>> layers, subdomains, regions;
-      PerSubproblem<std::string>   piece_of;
-      PerSubproblem<bool>          simplex;
+      PerSubproblem<Vector<float>> layers, subdomains, regions, plies;
+      /// Whether some subproblem has plies: then every piece has the field
+      /// ply (1 where its layer has one ply), so that the pieces agree.
+      bool                       any_plies = false;
+      PerSubproblem<std::string> piece_of;
+      PerSubproblem<bool>        simplex;
     };
 
 
@@ -313,6 +317,17 @@ namespace bilayer
           output.regions[s] = static_cast<float>(sub.region() + 1);
           data_out.add_data_vector(output.regions[s],
                                    "region",
+                                   DataOut<2>::type_cell_data);
+        }
+      // Plies: the ply 1, 2, ... of each cell (Materials/Layer k/Ply j).
+      if (output.any_plies)
+        {
+          output.plies[s].reinit(n_cells);
+          for (const auto &cell : sub.dof_handler().active_cell_iterators())
+            output.plies[s][cell->active_cell_index()] =
+              static_cast<float>(sub.laws().ply(*cell) + 1);
+          data_out.add_data_vector(output.plies[s],
+                                   "ply",
                                    DataOut<2>::type_cell_data);
         }
     }
@@ -483,7 +498,10 @@ namespace bilayer
     std::ostringstream stem;
     stem << "solution-" << std::setw(2) << std::setfill('0') << cycle;
 
-    SolutionPieces                 output(subproblems.size());
+    SolutionPieces output(subproblems.size());
+    for (const ElasticSubproblem *sub : subproblems)
+      output.any_plies =
+        output.any_plies || (sub != nullptr && sub->laws().size() > 1);
     const DataOutBase::VtkFlags    flags = vtk_flags(parameters.compression);
     const std::vector<std::string> pieces =
       name_pieces(stem.str(), subproblems, processes, output.piece_of);
