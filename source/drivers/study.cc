@@ -434,8 +434,7 @@ namespace bilayer
             {
               const unsigned int i = topology.index(layer, r);
               // The regions above Sigma take the material of Omega+.
-              const Subdomain side =
-                r == 0 ? Subdomain::minus : Subdomain::plus;
+              const Subdomain side = Topology::material_side(r);
               // (The subproblem of the previous cycle, which referred to
               // it, is gone.)
               const std::vector<LayerMaterial> plies =
@@ -483,9 +482,7 @@ namespace bilayer
                 check_temperature_change(
                   *subproblems[topology.index(layer, r)],
                   scene.loads,
-                  scene.materials.material(layer,
-                                           r == 0 ? Subdomain::minus :
-                                                    Subdomain::plus),
+                  scene.materials.material(layer, Topology::material_side(r)),
                   domain_diameter(domain));
         }
       catch (const ExceptionBase &e)

@@ -276,11 +276,10 @@ namespace bilayer
         if (scene.materials.has_layer(layer) &&
             scene.materials.n_plies(layer) > 1)
           {
-            const PlyLaws laws(scene.materials.ply_materials(
-                                 layer,
-                                 r == 0 ? Subdomain::minus : Subdomain::plus),
-                               scene.materials.division(layer));
-            const auto    faces =
+            const PlyLaws laws(
+              scene.materials.ply_materials(layer, Topology::material_side(r)),
+              scene.materials.division(layer));
+            const auto faces =
               material_boundaries(domain.triangulation(r), laws);
             material_faces.insert(material_faces.end(),
                                   faces.begin(),

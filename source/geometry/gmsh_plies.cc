@@ -35,7 +35,7 @@ namespace bilayer
                             g.physical_tag(2, "Omega+")};
     std::set<std::vector<unsigned int>> in_regions;
     for (const auto &e : g.elements)
-      if ((e.type == 2 || e.type == 3) && e.physical >= 0 &&
+      if ((e.type == 2 || e.type == 3) &&
           (e.physical == regions[0] || e.physical == regions[1]))
         in_regions.insert(sorted_nodes(e));
     std::map<int, types::material_id> id_of;
@@ -95,33 +95,23 @@ namespace bilayer
       }
     for (const auto &[tag, id] : id_of)
       g.surface_names.erase(tag);
-  }
-
-
-  void
-  Geometry::check_ply_cells(const GmshMesh           &g,
-                            const std::array<int, 2> &surface,
-                            const std::string        &where) const
-  {
-    std::set<std::vector<unsigned int>> in_regions;
-    for (const auto &e : g.elements)
-      if ((e.type == 2 || e.type == 3) &&
-          (e.physical == surface[0] || e.physical == surface[1]))
-        in_regions.insert(sorted_nodes(e));
-    for (const auto &[nodes, id] : ply_cells)
-      if (in_regions.count(nodes) == 0)
-        {
-          Point<2> centre;
-          for (const unsigned int n : nodes)
-            centre += g.nodes[n] / double(nodes.size());
-          AssertThrow(false,
-                      ExcMessage(where + ": the cell at " + point_text(centre) +
-                                 " of the ply group '" + ply_groups[id - 1] +
-                                 "' (Materials/Layer k/Ply groups) is in "
-                                 "neither 'Omega-' nor 'Omega+': a ply is a "
-                                 "part of a region; add its surfaces to one "
-                                 "of them"));
-        }
+    // Every ply cell a cell of a region (where both regions exist; else
+    // the region checks refuse the scene).
+    if (regions[0] >= 0 && regions[1] >= 0)
+      for (const auto &[nodes, id] : ply_cells)
+        if (in_regions.count(nodes) == 0)
+          {
+            Point<2> centre;
+            for (const unsigned int n : nodes)
+              centre += g.nodes[n] / double(nodes.size());
+            AssertThrow(false,
+                        ExcMessage(
+                          where + ": the cell at " + point_text(centre) +
+                          " of the ply group '" + ply_groups[id - 1] +
+                          "' (Materials/Layer k/Ply groups) is in neither "
+                          "'Omega-' nor 'Omega+': a ply is a part of a "
+                          "region; add its surfaces to one of them"));
+          }
   }
 
 

@@ -609,7 +609,6 @@ namespace bilayer
     // a conforming mesh.
     const GmshGroups groups = find_groups(g, geometry.parts.names, where);
     check_elements(g, groups, where);
-    check_ply_cells(g, groups.surface, where);
     const auto minus    = cell_edges(g, groups.surface[0]),
                plus     = cell_edges(g, groups.surface[1]);
     const auto on_sigma = shared_edges(g, groups, minus, plus, where);

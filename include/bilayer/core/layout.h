@@ -227,6 +227,13 @@ namespace bilayer
     {
       return regions - 1;
     }
+    /// The side whose material (Materials/Layer k/Omega- or Omega+) region
+    /// @p r takes: Omega- below Sigma, Omega+ for every region above it.
+    static Subdomain
+    material_side(const unsigned int r)
+    {
+      return r == 0 ? Subdomain::minus : Subdomain::plus;
+    }
     /// The layer slots (at least two with two regions).
     unsigned int
     n_slots() const

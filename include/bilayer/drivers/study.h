@@ -229,13 +229,13 @@ namespace bilayer
       /// the probe): an onset step at it makes the tip critical.
       double onset = std::numeric_limits<double>::infinity();
     };
-    bool                      growth_run = false, onsets_exact = false;
-    std::vector<GrowthStep>   growth_steps;
-    std::vector<FollowedTip>  followed;
+    bool                     growth_run = false, onsets_exact = false;
+    std::vector<GrowthStep>  growth_steps;
+    std::vector<FollowedTip> followed;
     /// The vertices of each interface (Sigma first) where a tip may stand.
     std::vector<std::vector<double>> interface_vertices;
-    std::vector<unsigned int> point_subproblems;
-    std::string               growth_stop;
+    std::vector<unsigned int>        point_subproblems;
+    std::string                      growth_stop;
     /// What growth.csv holds: its head, and the rows of this many steps.
     bool        growth_head_written = false;
     std::size_t growth_rows_written = 0;

@@ -161,7 +161,6 @@ namespace bilayer
       return curves[0];
     }
 
-    /// Every interface (Sigma first) as a curve.
     /// The named physical surfaces of a Gmsh scene inside its regions that
     /// no Materials/Layer k/Ply groups entry names (read, not used: their
     /// cells take their region's law).
@@ -171,6 +170,7 @@ namespace bilayer
       return unlisted_surfaces;
     }
 
+    /// Every interface (Sigma first) as a curve.
     const std::vector<InterfaceCurve> &
     interface_curves() const
     {
@@ -256,17 +256,12 @@ namespace bilayer
     void
     load_gmsh();
 
-    /// Take the cells of the ply groups out of @p g (they are cells of
-    /// Omega- or Omega+ as well), keeping their material ids by nodes.
+    /// Take the cells of the ply groups out of @p g, keeping their
+    /// material ids by nodes; refuse a ply cell that is no cell of Omega- or
+    /// Omega+.
     void
     take_ply_groups(GmshMesh &g, const std::string &where);
 
-    /// Refuse a ply group cell that is no cell of a region (@p surface:
-    /// the physical tags of Omega- and Omega+).
-    void
-    check_ply_cells(const GmshMesh           &g,
-                    const std::array<int, 2> &surface,
-                    const std::string        &where) const;
 
     /// The mesh of @p subdomain from the Gmsh scene: cells of the physical
     /// surface, boundary ids from the physical curves, polar manifolds on
