@@ -72,9 +72,9 @@ namespace bilayer
              const BoundaryParts &parts)
     {
       std::string names;
-      for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+      for (const unsigned int r : Layout::indices(geometry.n_regions()))
         for (const auto &face :
-             geometry.triangulation(s).active_face_iterators())
+             geometry.triangulation(r).active_face_iterators())
           if (face->at_boundary() && !on_sigma(face) &&
               face->boundary_id() < parts.size())
             for (const unsigned int v : face->vertex_indices())
@@ -89,26 +89,26 @@ namespace bilayer
     }
 
 
-    /// Cells, Sigma, the crack pieces and the boundary parts of the meshes
-    /// of cycle 0.
+    /// Interface @p i (Sigma: 0) with its crack pieces.
     void
-    print_meshes(const Geometry      &geometry,
-                 const BoundaryParts &parts,
-                 const bool           triangles,
-                 std::ostream        &out)
+    print_interface(const Geometry      &geometry,
+                    const BoundaryParts &parts,
+                    const unsigned int   i,
+                    std::ostream        &out)
     {
-      const char *kind = triangles ? " triangles" : " quadrilaterals";
-      out << "cells: Omega- "
-          << geometry.triangulation(Subdomain::minus).n_active_cells() << kind
-          << ", Omega+ "
-          << geometry.triangulation(Subdomain::plus).n_active_cells() << kind
-          << "\n";
-      const InterfaceCurve &curve = geometry.interface_curve();
-      out << "Sigma (with the crack): " << curve.description() << ", from "
+      const InterfaceCurve &curve = geometry.interface_curves()[i];
+      const std::string     name  = i == 0 ?
+                                      std::string("Sigma") :
+                                      "interface " + std::to_string(i + 1) + " ('" +
+                                   gmsh_interface_name(i, false) +
+                                   "', between '" + gmsh_region_name(i) +
+                                   "' and '" + gmsh_region_name(i + 1) + "')";
+      out << name << " (with the crack): " << curve.description() << ", from "
           << at(curve.point(curve.s_begin())) << " to "
           << at(curve.point(curve.s_end())) << "\n";
       const auto &cracks = curve.crack().pieces();
-      out << "crack: " << cracks.size()
+      out << (i == 0 ? "crack" : "crack of interface " + std::to_string(i + 1))
+          << ": " << cracks.size()
           << (cracks.size() == 1 ? " piece" : " pieces") << "\n";
       for (const auto &piece : cracks)
         {
@@ -130,11 +130,31 @@ namespace bilayer
             }
           out << "\n";
         }
-      // Edges of each boundary part (in both subdomain meshes).
+    }
+
+
+    /// Cells, the interfaces, their crack pieces and the boundary parts of
+    /// the meshes of cycle 0.
+    void
+    print_meshes(const Geometry      &geometry,
+                 const BoundaryParts &parts,
+                 const bool           triangles,
+                 std::ostream        &out)
+    {
+      const char *kind = triangles ? " triangles" : " quadrilaterals";
+      out << "cells:";
+      for (const unsigned int r : Layout::indices(geometry.n_regions()))
+        out << (r > 0 ? ", " : " ") << gmsh_region_name(r) << " "
+            << geometry.triangulation(r).n_active_cells() << kind;
+      out << "\n";
+      for (const unsigned int i :
+           Layout::indices(geometry.interface_curves().size()))
+        print_interface(geometry, parts, i, out);
+      // Edges of each boundary part (in all region meshes).
       std::map<types::boundary_id, unsigned int> edges;
-      for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+      for (const unsigned int r : Layout::indices(geometry.n_regions()))
         for (const auto &face :
-             geometry.triangulation(s).active_face_iterators())
+             geometry.triangulation(r).active_face_iterators())
           if (face->at_boundary())
             ++edges[face->boundary_id()];
       out << "boundary parts (name: edges):\n";
@@ -160,7 +180,7 @@ namespace bilayer
     GeometryParameters geometry;
     geometry.gmsh_file = file;
     geometry.parts =
-      BoundaryParts::of_gmsh(file, gmsh_boundary_names(file, options));
+      BoundaryParts::of_gmsh(file, gmsh_group_names(file, options));
     // Every part clamped but those at the mouth of an edge crack (named
     // in the report: a run must leave them free).
     geometry.clamped.assign(geometry.parts.size(), true);
@@ -178,7 +198,7 @@ namespace bilayer
     // may name in Materials/Layer k/Ply groups (checked as such).
     std::vector<std::string> plies;
     for (const auto &[tag, name] : g.surface_names)
-      if (name != "Omega-" && name != "Omega+")
+      if (gmsh_region_number(name) == 0)
         plies.push_back(name);
     if (!plies.empty())
       {

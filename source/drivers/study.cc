@@ -138,11 +138,15 @@ namespace bilayer
         std::to_string(scene.materials.n_layers) + " runs on at most " +
         std::to_string(Distribution::max_groups) + " MPI processes, got " +
         std::to_string(distribution.n_processes()));
-    // So do more regions than two (Geometry/Interfaces above Sigma).
+    // So do more regions than two (Geometry/Interfaces above Sigma, or
+    // the regions Region 3, ... of a Gmsh scene).
     if (topology.n_regions() > Layout::n_subdomains &&
         distribution.n_processes() > Distribution::max_groups)
       throw CollectiveError(
-        "Geometry/Interfaces above Sigma: a scene of " +
+        std::string(scene.geometry.gmsh_file.empty() ?
+                      "Geometry/Interfaces above Sigma" :
+                      "Geometry/Gmsh file") +
+        ": a scene of " +
         std::to_string(topology.n_regions()) + " regions runs on at most " +
         std::to_string(Distribution::max_groups) + " MPI processes, got " +
         std::to_string(distribution.n_processes()));

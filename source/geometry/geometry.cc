@@ -33,6 +33,9 @@ namespace bilayer
     // side spans all regions, so an end is clamped on both or neither).
     for (const unsigned int i : Layout::indices(curves.size()))
       {
+        // A Gmsh scene's interfaces come from its file (load_gmsh()).
+        if (i > 0 && !geometry.gmsh_file.empty())
+          break;
         InterfaceCurve &curve  = curves[i];
         const double    height = geometry.interface_height(i);
         curve = InterfaceCurve::segment({geometry.x_min, height},
@@ -65,11 +68,11 @@ namespace bilayer
         // their circles through the polar manifolds).
         if (!gmsh)
           load_gmsh();
-        for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+        for (const unsigned int r : Layout::indices(triangulations.size()))
           {
-            auto &tria = triangulations[static_cast<unsigned int>(s)];
+            auto &tria = triangulations[r];
             tria.clear();
-            make_gmsh_subdomain(s, tria);
+            make_gmsh_subdomain(r, tria);
             if (cycle > 0)
               tria.refine_global(cycle);
           }
@@ -236,20 +239,21 @@ namespace bilayer
     if (gmsh)
       {
         // Gmsh scenes: the crack end points are vertices of the meshes on
-        // Sigma (those of the file's crack group are by construction).
-        for (const Subdomain s : {Subdomain::minus, Subdomain::plus})
+        // the interface (those of the file's crack group are by
+        // construction).
+        for (const unsigned int r : {i, i + 1})
           for (const double c : ends)
             {
               bool found = false;
-              for (const auto &face : triangulation(s).active_face_iterators())
-                if (on_sigma(face))
+              for (const auto &face : triangulation(r).active_face_iterators())
+                if (on_interface(face, i))
                   for (const unsigned int v : face->vertex_indices())
                     found = found || std::abs(curve.parameter(face->vertex(v)) -
                                               c) <= curve.tolerance();
               std::ostringstream m;
               m << std::setprecision(10) << "the crack end point s = " << c
-                << " is not a vertex of the mesh of Omega"
-                << (s == Subdomain::minus ? "-" : "+") << " on Sigma";
+                << " is not a vertex of the mesh of '" << gmsh_region_name(r)
+                << "' on '" << gmsh_interface_name(i, false) << "'";
               AssertThrow(found, ExcMessage(m.str()));
             }
         return;

@@ -30,13 +30,15 @@ namespace bilayer
   {
     ply_cells.clear();
     unlisted_surfaces.clear();
-    // The cells of the regions, by nodes.
-    const int regions[2] = {g.physical_tag(2, "Omega-"),
-                            g.physical_tag(2, "Omega+")};
+    // The cells of the regions (the surfaces named as regions: Omega-,
+    // Omega+, Region K), by nodes.
+    std::set<int> regions;
+    for (const auto &[tag, name] : g.surface_names)
+      if (gmsh_region_number(name) > 0)
+        regions.insert(tag);
     std::set<std::vector<unsigned int>> in_regions;
     for (const auto &e : g.elements)
-      if ((e.type == 2 || e.type == 3) &&
-          (e.physical == regions[0] || e.physical == regions[1]))
+      if ((e.type == 2 || e.type == 3) && regions.count(e.physical) > 0)
         in_regions.insert(sorted_nodes(e));
     std::map<int, types::material_id> id_of;
     for (unsigned int k = 0; k < ply_groups.size(); ++k)
@@ -61,8 +63,8 @@ namespace bilayer
       {
         const bool cell  = e.type == 2 || e.type == 3;
         const auto group = id_of.find(e.physical);
-        if (cell && group == id_of.end() && e.physical != regions[0] &&
-            e.physical != regions[1] && g.surface_names.count(e.physical) > 0 &&
+        if (cell && group == id_of.end() && regions.count(e.physical) == 0 &&
+            g.surface_names.count(e.physical) > 0 &&
             in_regions.count(sorted_nodes(e)) > 0)
           {
             unlisted.insert(e.physical);
@@ -95,9 +97,9 @@ namespace bilayer
       }
     for (const auto &[tag, id] : id_of)
       g.surface_names.erase(tag);
-    // Every ply cell a cell of a region (where both regions exist; else
-    // the region checks refuse the scene).
-    if (regions[0] >= 0 && regions[1] >= 0)
+    // Every ply cell a cell of a region (where Omega- and Omega+ exist;
+    // else the region checks refuse the scene).
+    if (g.physical_tag(2, "Omega-") >= 0 && g.physical_tag(2, "Omega+") >= 0)
       for (const auto &[nodes, id] : ply_cells)
         if (in_regions.count(nodes) == 0)
           {
@@ -108,9 +110,10 @@ namespace bilayer
                         ExcMessage(
                           where + ": the cell at " + point_text(centre) +
                           " of the ply group '" + ply_groups[id - 1] +
-                          "' (Materials/Layer k/Ply groups) is in neither "
-                          "'Omega-' nor 'Omega+': a ply is a part of a "
-                          "region; add its surfaces to one of them"));
+                          "' (Materials/Layer k/Ply groups) is in no "
+                          "region ('Omega-', 'Omega+', 'Region K'): a ply is "
+                          "a part of a region; add its surfaces to one of "
+                          "them"));
           }
   }
 

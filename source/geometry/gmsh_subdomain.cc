@@ -175,8 +175,11 @@ namespace bilayer
       for (const auto &e : g.elements)
         if (e.type == 1)
           lines[gmsh_edge(e.nodes[0], e.nodes[1])] = &e;
-      const int sigma   = g.physical_tag(1, "Sigma"),
-                crack   = g.physical_tag(1, "crack");
+      // The interface of each interface curve's physical tag.
+      std::map<int, unsigned int> interface_of;
+      for (const auto &[tag, name] : g.curve_names)
+        if (const unsigned int k = gmsh_interface_number(name); k > 0)
+          interface_of[tag] = k - 1;
       bool clamped_part = false;
       for (const auto &cell : tria.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
@@ -191,8 +194,9 @@ namespace bilayer
                   continue;
                 }
               const GmshMesh::Element &line = *found->second;
-              if (line.physical == sigma || line.physical == crack)
-                face->set_boundary_id(BoundaryIds::sigma);
+              if (const auto i = interface_of.find(line.physical);
+                  i != interface_of.end())
+                face->set_boundary_id(BoundaryIds::interface(i->second));
               else if (g.curve_names.count(line.physical) > 0)
                 {
                   const auto        &names = part_names;
@@ -215,13 +219,12 @@ namespace bilayer
 
 
   void
-  Geometry::make_gmsh_subdomain(const Subdomain   subdomain,
-                                Triangulation<2> &tria) const
+  Geometry::make_gmsh_subdomain(const unsigned int region,
+                                Triangulation<2>  &tria) const
   {
     const GmshMesh   &g     = *gmsh;
     const std::string where = "Geometry/Gmsh file '" + geometry.gmsh_file + "'";
-    const std::string name =
-      subdomain == Subdomain::minus ? "Omega-" : "Omega+";
+    const std::string name  = gmsh_region_name(region);
     const int    tag     = g.physical_tag(2, name);
     SurfaceCells surface = surface_cells(g, tag, ply_cells);
     check_cell_kind(surface, mesh, name, where);
@@ -254,6 +257,6 @@ namespace bilayer
     AssertThrow(clamped_part,
                 ExcMessage(where + ": '" + name +
                            "' has no clamped part (Geometry/Clamped sides): "
-                           "each subdomain must touch Gamma_D"));
+                           "each region must touch Gamma_D"));
   }
 } // namespace bilayer

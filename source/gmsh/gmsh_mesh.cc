@@ -136,8 +136,8 @@ namespace bilayer
   }
 
 
-  std::vector<std::string>
-  gmsh_boundary_names(const std::string &file, const GmshOptions &options)
+  GmshGroupNames
+  gmsh_group_names(const std::string &file, const GmshOptions &options)
   {
     std::ifstream              in = open(file);
     std::map<int, std::string> names, surfaces;
@@ -174,12 +174,83 @@ namespace bilayer
                   ": bilayer reads the specimen's parts by "
                   "name, Physical Surface(\"Omega-\"), (\"Omega+\"), "
                   "Physical Curve(\"Sigma\"), ... (docs/geometry.md)"));
-    std::vector<std::string> result;
+    GmshGroupNames result;
     for (const auto &[tag, name] : names)
-      if (name != "Sigma" && name != "crack" &&
-          std::find(result.begin(), result.end(), name) == result.end())
-        result.push_back(name);
+      if (gmsh_interface_number(name) == 0 &&
+          std::find(result.parts.begin(), result.parts.end(), name) ==
+            result.parts.end())
+        result.parts.push_back(name);
+    for (const auto &[tag, name] : surfaces)
+      result.surfaces.push_back(name);
     return result;
+  }
+
+
+  std::string
+  gmsh_region_name(const unsigned int r)
+  {
+    return r == 0 ? "Omega-" :
+           r == 1 ? "Omega+" :
+                    "Region " + std::to_string(r + 1);
+  }
+
+
+  std::string
+  gmsh_interface_name(const unsigned int i, const bool crack)
+  {
+    const std::string name = crack ? "crack" : "Sigma";
+    return i == 0 ? name : name + " " + std::to_string(i + 1);
+  }
+
+
+  namespace
+  {
+    /// K where @p name is @p prefix, a blank and the decimal number K >= 1
+    /// (no sign, no leading zero); else 0.
+    unsigned int
+    numbered(const std::string &name, const std::string &prefix)
+    {
+      if (name.size() <= prefix.size() + 1 ||
+          name.compare(0, prefix.size() + 1, prefix + " ") != 0)
+        return 0;
+      const std::string digits = name.substr(prefix.size() + 1);
+      if (digits.size() > 6 || digits[0] == '0' ||
+          digits.find_first_not_of("0123456789") != std::string::npos)
+        return 0;
+      return std::stoul(digits);
+    }
+  } // namespace
+
+
+  unsigned int
+  gmsh_region_number(const std::string &name)
+  {
+    if (name == "Omega-")
+      return 1;
+    if (name == "Omega+")
+      return 2;
+    return numbered(name, "Region");
+  }
+
+
+  unsigned int
+  gmsh_interface_number(const std::string &name)
+  {
+    if (name == "Sigma" || name == "crack")
+      return 1;
+    return std::max(numbered(name, "Sigma"), numbered(name, "crack"));
+  }
+
+
+  unsigned int
+  gmsh_region_count(const std::vector<std::string> &surfaces)
+  {
+    unsigned int n = 2;
+    while (std::find(surfaces.begin(),
+                     surfaces.end(),
+                     gmsh_region_name(n)) != surfaces.end())
+      ++n;
+    return n;
   }
 
 

@@ -23,11 +23,11 @@ namespace bilayer
 
 
   BoundaryParts
-  BoundaryParts::of_gmsh(const std::string              &file,
-                         const std::vector<std::string> &names)
+  BoundaryParts::of_gmsh(const std::string &file, const GmshGroupNames &groups)
   {
     // A name becomes the entry "Traction on NAME" and a member of the
     // list Geometry/Clamped sides.
+    const std::vector<std::string> &names = groups.parts;
     for (const auto &name : names)
       AssertThrow(!name.empty() && name == Utilities::trim(name) &&
                     name.find_first_of(",|=#\\") == std::string::npos,
@@ -37,7 +37,7 @@ namespace bilayer
                              "'Traction on NAME'): rename it in the file "
                              "without ',', '|', '=', '#', '\\' and outer "
                              "blanks"));
-    return {names, true};
+    return {names, true, gmsh_region_count(groups.surfaces)};
   }
 
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <bilayer/gmsh/gmsh_mesh.h>
 #include <bilayer/parameters/material_parameters.h>
 #include <bilayer/parameters/parameter_entries.h>
 
@@ -46,11 +47,12 @@ namespace bilayer
         AssertThrow(!item.empty() &&
                       std::find(groups.begin(), groups.end(), item) ==
                         groups.end() &&
-                      item != "Omega-" && item != "Omega+",
+                      gmsh_region_number(item) == 0,
                     ExcMessage(entry +
                                " must be a list of the names of Gmsh "
-                               "physical surfaces inside Omega- or Omega+, "
-                               "each once (not the regions themselves), "
+                               "physical surfaces inside the regions, "
+                               "each once (not the regions 'Omega-', "
+                               "'Omega+', 'Region K' themselves), "
                                "got '" +
                                text + "'"));
         groups.push_back(item);

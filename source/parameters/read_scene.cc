@@ -120,7 +120,7 @@ namespace bilayer
         }
       catch (const std::exception &)
         {}
-      const auto names = gmsh_boundary_names(gmsh_file, options);
+      const auto names = gmsh_group_names(gmsh_file, options);
       return BoundaryParts::of_gmsh(gmsh_file, names);
     }
   } // namespace

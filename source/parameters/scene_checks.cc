@@ -79,9 +79,14 @@ namespace bilayer
   void
   check_interfaces(const Scene &scene)
   {
-    if (scene.geometry.further_interfaces.empty())
+    if (scene.geometry.n_regions() == Layout::n_subdomains)
       return;
-    const std::string entry = "Geometry/Interfaces above Sigma";
+    const std::string entry =
+      scene.geometry.further_interfaces.empty() ?
+        "Geometry/Gmsh file '" + scene.geometry.gmsh_file + "' has " +
+          std::to_string(scene.geometry.n_regions()) +
+          " regions (Region 3, ...); it" :
+        std::string("Geometry/Interfaces above Sigma");
     AssertThrow(scene.materials.n_layers == 1,
                 ExcMessage(entry +
                            " states a cross-section of regions of one "

@@ -99,6 +99,16 @@ case_() {
   refuse "$name" "$expect" "$@"
 }
 
+# case3_ NAME EXPECTED-FRAGMENT GEO-SED-SCRIPT [--set ...]: the scene of
+# three regions parameter_files/ply_drop.{geo,prm} with its .geo edited.
+case3_() {
+  local name=$1 expect=$2 edit=$3
+  shift 3
+  sed "$edit" "$source_dir/ply_drop.geo" > scene.geo
+  sed 's/ply_drop.geo/scene.geo/' "$source_dir/ply_drop.prm" > scene.prm
+  refuse "$name" "$expect" "$@"
+}
+
 # energy FILE.prm [ARGS]: the energy of cycle 0 of a successful run ("" else).
 energy() {
   local prm=$1
@@ -159,12 +169,24 @@ got=$(energy edge_crack.prm)
 report "edge crack with its mouth on a free part accepted" "$why"
 case_ "subdomain without a clamped part" "'Omega-' has no clamped part" 's/^$//' \
   --set "Geometry/Clamped sides=top" --set "Loads/Layer 1/Traction on top=0; 0"
-case_ "boundary curve in Sigma" "Sigma must separate the two subdomains" \
+case_ "boundary curve in Sigma" "an interface must separate the two regions it joins" \
   's/Physical Curve("Sigma") = {11, 13, 15};/Physical Curve("Sigma") = {11, 13, 15, 2};/; s/Physical Curve("right") = {2, 3};/Physical Curve("right") = {3};/'
 case_ "interface edges in no group" "which is in neither 'Sigma' nor 'crack'" \
   's/Physical Curve("Sigma") = {11, 13, 15};/Physical Curve("Sigma") = {11, 15};/'
 case_ "geometry gmsh cannot mesh" "Unknown control point 99" 's/^Line(4) = {3, 4};/Line(4) = {3, 99};/'
 case_ "missing file" "no such file" 's/^$//' --set "Geometry/Gmsh file=missing.geo"
+# --- Regions and interfaces beyond Omega-, Omega+ and Sigma (ply_drop.geo:
+# 'Region 3' above Omega+, interface 2 'Sigma 2'/'crack 2' between them).
+case3_ "regions numbered with a gap" "the physical surface 'Region 4' has no region 'Region 3' below it" \
+  's/Physical Surface("Region 3")/Physical Surface("Region 4")/'
+case3_ "a region named Region 1" "the physical surface 'Region 1' names a region that is called 'Omega-'" \
+  's/Physical Surface("Omega-")/Physical Surface("Region 1")/'
+case3_ "an interface curve of a missing region" "the physical curve 'Sigma 3' would join 'Region 3' and 'Region 4', but the file has no physical surface 'Region 4'" \
+  's/Physical Curve("Sigma 2")/Physical Curve("Sigma 3")/'
+case3_ "Sigma between the wrong regions" "the 'Sigma' edge at" \
+  's/Physical Curve("Sigma") = {10};/Physical Curve("Sigma") = {12};/; s/Physical Curve("Sigma 2") = {12};/Physical Curve("Sigma 2") = {10};/'
+case3_ "regions of two layers" "has 3 regions (Region 3, ...); it states a cross-section of regions of one layer: Materials/Number of layers must be 1" \
+  's/^$//' --set "Materials/Number of layers=2"
 # --- Ply groups (physical surfaces inside the regions).
 case_ "ply group not in the file" "Materials/Layer k/Ply groups names 'upper', which is not a physical surface of Geometry/Gmsh file 'scene.geo'" \
   's/^$//' --set "Materials/Layer 1/Ply groups=upper"

@@ -263,11 +263,11 @@ namespace bilayer
     take_ply_groups(GmshMesh &g, const std::string &where);
 
 
-    /// The mesh of @p subdomain from the Gmsh scene: cells of the physical
-    /// surface, boundary ids from the physical curves, polar manifolds on
-    /// the circular arcs.
+    /// The mesh of @p region from the Gmsh scene: cells of its physical
+    /// surface (gmsh_region_name()), boundary ids from the physical curves,
+    /// polar manifolds on the circular arcs.
     void
-    make_gmsh_subdomain(const Subdomain           subdomain,
+    make_gmsh_subdomain(const unsigned int        region,
                         dealii::Triangulation<2> &tria) const;
 
     const GeometryParameters       geometry;

@@ -103,15 +103,58 @@ namespace bilayer
   GmshMesh
   read_gmsh(const std::string &file, const GmshOptions &options);
 
+  /// The named physical groups of a Gmsh scene.
+  struct GmshGroupNames
+  {
+    /// The physical curves other than the interfaces ("Sigma", "crack",
+    /// "Sigma K", "crack K"), in the order of their tags: the boundary
+    /// parts of the entries of the Loads section.
+    std::vector<std::string> parts;
+    /// The physical surfaces, in the order of their tags.
+    std::vector<std::string> surfaces;
+  };
+
   /**
-   * The names of the physical curves of @p file other than "Sigma" and
-   * "crack", in the order of their tags, as Gmsh reports them: the .msh
+   * The named physical groups of @p file as Gmsh reports them: the .msh
    * file's $PhysicalNames, or for a .geo file those of the model gmsh builds
-   * from it (after scan_geo(), without meshing), for the entries of the
-   * Loads section.
+   * from it (after scan_geo(), without meshing).
    */
-  std::vector<std::string>
-  gmsh_boundary_names(const std::string &file, const GmshOptions &options);
+  GmshGroupNames
+  gmsh_group_names(const std::string &file, const GmshOptions &options);
+
+
+  /**
+   * The regions and interfaces of a Gmsh scene by name (docs/geometry.md).
+   * Region r (from 0, bottom up) is the physical surface "Omega-" (r = 0),
+   * "Omega+" (1), "Region 3" (2), "Region 4" (3), ...; interface i joins
+   * regions i and i + 1, its glued part the physical curve "Sigma" (i = 0)
+   * or "Sigma K" (K = i + 1), its crack pieces "crack" or "crack K".
+   */
+  std::string
+  gmsh_region_name(const unsigned int r);
+
+  /// The name of the glued part (@p crack false) or of the crack pieces of
+  /// interface @p i.
+  std::string
+  gmsh_interface_name(const unsigned int i, const bool crack);
+
+  /// The number K of the region that @p name states: 1 for "Omega-", 2
+  /// for "Omega+", K for "Region K" (any K >= 1, checked by the scene); 0
+  /// for any other name.
+  unsigned int
+  gmsh_region_number(const std::string &name);
+
+  /// The number K of the interface that the curve @p name states: 1 for
+  /// "Sigma" and "crack", K for "Sigma K" and "crack K" (any K >= 1,
+  /// checked by the scene); 0 for any other name (a boundary part).
+  unsigned int
+  gmsh_interface_number(const std::string &name);
+
+  /// The regions of a scene whose physical surfaces are @p surfaces:
+  /// Omega- and Omega+, then Region 3, 4, ... as far as they run without a
+  /// gap (a gap is refused when the meshes are read).
+  unsigned int
+  gmsh_region_count(const std::vector<std::string> &surfaces);
 } // namespace bilayer
 
 #endif

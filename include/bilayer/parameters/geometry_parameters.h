@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <bilayer/core/layout.h>
+#include <bilayer/gmsh/gmsh_mesh.h>
 
 #include <array>
 #include <string>
@@ -45,6 +46,9 @@ namespace bilayer
     /// Whether the parts come from a Gmsh file (entries "Traction on NAME")
     /// or are the rectangle's sides ("Traction on NAME side").
     bool gmsh = false;
+    /// The regions of the scene: 2 (Omega- and Omega+), or those of the
+    /// Gmsh file (Omega-, Omega+, Region 3, ...: gmsh_region_count()).
+    unsigned int regions = 2;
 
     unsigned int
     size() const
@@ -60,13 +64,13 @@ namespace bilayer
     }
 
     /**
-     * The parts of the Gmsh scene @p file: its boundary curve @p names.
-     * A name becomes the entry "Traction on NAME" and a member of the list
-     * Geometry/Clamped sides: names with ',', '|', '=', '#', '\\' or outer
-     * blanks are refused.
+     * The parts of the Gmsh scene @p file: the boundary curves of its
+     * groups @p names, and its regions. A name becomes the entry "Traction
+     * on NAME" and a member of the list Geometry/Clamped sides: names with
+     * ',', '|', '=', '#', '\\' or outer blanks are refused.
      */
     static BoundaryParts
-    of_gmsh(const std::string &file, const std::vector<std::string> &names);
+    of_gmsh(const std::string &file, const GmshGroupNames &names);
   };
 
   struct GeometryParameters
@@ -143,11 +147,12 @@ namespace bilayer
 
   public:
     /// The regions of the plane: Omega- and Omega+, and one more above
-    /// each interface above Sigma (bands of the rectangle, from the bottom).
+    /// each interface above Sigma (bands of the rectangle, from the bottom),
+    /// or those of the Gmsh file (Omega-, Omega+, Region 3, ...).
     unsigned int
     n_regions() const
     {
-      return 2 + further_interfaces.size();
+      return parts.regions + further_interfaces.size();
     }
 
     /// The height of interface @p i of the rectangle (Sigma: 0).
