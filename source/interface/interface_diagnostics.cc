@@ -401,8 +401,12 @@ namespace bilayer
           all.push_back(s);
         return all;
       }
-    return {topology.index(Layer::first, i),
-            topology.index(Layer::first, i + 1)};
+    // Each layer's regions below and above interface i.
+    std::vector<unsigned int> reported;
+    for (const unsigned int l : Layout::indices(topology.n_slots()))
+      for (const unsigned int r : {i, i + 1})
+        reported.push_back(topology.index(static_cast<Layer>(l), r));
+    return reported;
   }
 
 
@@ -421,7 +425,10 @@ namespace bilayer
     const Coupling                  across = topology.coupling(i);
     const unsigned int              below = across.first, above = across.second;
     const std::vector<unsigned int> reported = trace_subproblems(topology, i);
-    const bool two_regions = topology.n_regions() == Layout::n_subdomains;
+    // Layer 2 glued to layer 1 along interface i on each side (its slot
+    // absent on a one-layer scene of two regions: zero multipliers, its
+    // traces those of layer 1).
+    const bool                 layered = topology.n_slots() > 1;
     std::vector<InterfaceNode> nodes(space.n_nodes(i));
     for (unsigned int a = 0; a < nodes.size(); ++a)
       {
@@ -438,18 +445,20 @@ namespace bilayer
         for (const unsigned int c : {Layout::tangential, Layout::normal})
           {
             n.mu_g[c] = space.gluing_multiplier(mu, a, c, i);
-            if (two_regions)
+            if (layered)
               {
-                n.mu_minus[c] = space.value(mu, Layout::glue_minus, n.s, c);
-                n.mu_plus[c]  = space.value(mu, Layout::glue_plus, n.s, c);
+                n.mu_minus[c] = space.value(
+                  mu, topology.glue_block(Layer::second, i, i), n.s, c);
+                n.mu_plus[c] = space.value(
+                  mu, topology.glue_block(Layer::second, i + 1, i), n.s, c);
               }
           }
         // Layer 1 against layer 2 on each side.
-        if (two_regions)
+        if (layered)
           for (const unsigned int side : {0u, 1u})
             {
-              const unsigned int u = topology.index(Layer::first, side),
-                                 v = topology.index(Layer::second, side);
+              const unsigned int u = topology.index(Layer::first, i + side),
+                                 v = topology.index(Layer::second, i + side);
               n.layer_gap[side] =
                 Tensor<1, 2>({t[u](x) - t[v](x), t[u](y) - t[v](y)});
             }

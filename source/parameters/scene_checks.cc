@@ -79,21 +79,11 @@ namespace bilayer
   void
   check_interfaces(const Scene &scene)
   {
-    if (scene.geometry.n_regions() == Layout::n_subdomains)
+    // (The layers are glued along every interface; a Gmsh scene's regions
+    // come with its own meshes.)
+    if (scene.geometry.further_interfaces.empty())
       return;
-    const std::string entry =
-      scene.geometry.further_interfaces.empty() ?
-        "Geometry/Gmsh file '" + scene.geometry.gmsh_file + "' has " +
-          std::to_string(scene.geometry.n_regions()) +
-          " regions (Region 3, ...); it" :
-        std::string("Geometry/Interfaces above Sigma");
-    AssertThrow(scene.materials.n_layers == 1,
-                ExcMessage(entry +
-                           " states a cross-section of regions of one "
-                           "layer: Materials/Number of layers must be "
-                           "1 (layers are glued along Sigma only), "
-                           "got " +
-                           std::to_string(scene.materials.n_layers)));
+    const std::string entry = "Geometry/Interfaces above Sigma";
     AssertThrow(scene.mesh.mesh_files.empty(),
                 ExcMessage(entry + " cuts the rectangle's structured meshes "
                                    "into regions: Mesh/Mesh files must be "

@@ -188,7 +188,6 @@ run "no clamped part" "Geometry/Clamped sides must clamp a part of the boundary 
 run "interfaces above Sigma malformed" "Geometry/Interfaces above Sigma must be a list of 'y' or 'y: x_start, x_end' separated by ';', got '0.5: 1'" "Geometry/Interfaces above Sigma=0.5: 1"
 run "interfaces above Sigma out of order" "Geometry/Interfaces above Sigma: interface 3 lies at y = 0.25; allowed: above the interface below it (y = 0.5) and below y_max = 1, by increasing y" "Geometry/Interfaces above Sigma=0.5; 0.25"
 run "interface crack touching Gamma_D" "Geometry/Interfaces above Sigma: interface 2 = '-1, 0.5' reaches the left side (x = -1), which is clamped" "Geometry/Interfaces above Sigma=0.5: -1, 0.5"
-run "interfaces above Sigma with two layers" "Geometry/Interfaces above Sigma states a cross-section of regions of one layer: Materials/Number of layers must be 1 (layers are glued along Sigma only), got 2" "Geometry/Interfaces above Sigma=0.5"
 run "load does not parse" "Loads/Layer 1/Traction on bottom side: cannot evaluate '0; c*'" "Loads/Layer 1/Traction on bottom side=0; c*"
 run "load evaluates to NaN" "Loads/Layer 1/Traction on bottom side must be finite on the bottom side" "Loads/Layer 1/Traction on bottom side=0; sqrt(x-5)"
 run "prescribed displacement infinite" "Loads/Layer 2/Prescribed displacement must be finite on the left side" "Loads/Layer 2/Prescribed displacement=0; 1/(x-x)"

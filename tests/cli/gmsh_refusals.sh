@@ -185,8 +185,6 @@ case3_ "an interface curve of a missing region" "the physical curve 'Sigma 3' wo
   's/Physical Curve("Sigma 2")/Physical Curve("Sigma 3")/'
 case3_ "Sigma between the wrong regions" "the 'Sigma' edge at" \
   's/Physical Curve("Sigma") = {10};/Physical Curve("Sigma") = {12};/; s/Physical Curve("Sigma 2") = {12};/Physical Curve("Sigma 2") = {10};/'
-case3_ "regions of two layers" "has 3 regions (Region 3, ...); it states a cross-section of regions of one layer: Materials/Number of layers must be 1" \
-  's/^$//' --set "Materials/Number of layers=2"
 # --- Ply groups (physical surfaces inside the regions).
 case_ "ply group not in the file" "Materials/Layer k/Ply groups names 'upper', which is not a physical surface of Geometry/Gmsh file 'scene.geo'" \
   's/^$//' --set "Materials/Layer 1/Ply groups=upper"

@@ -174,9 +174,9 @@ namespace bilayer
    * One coupling of two subproblems by a multiplier block: across an
    * interface (layer 1 of the region below it against layer 1 of the region
    * above it: glue, and on the interface's crack contact and friction), or
-   * the gluing of layer k to layer k - 1 on one region along Sigma. The
-   * jump of the block is first - second; the multiplier acts on first with
-   * the sign -1 and on second with +1.
+   * the gluing of layer k to layer k - 1 on one region along one of the
+   * interfaces on its boundary. The jump of the block is first - second;
+   * the multiplier acts on first with the sign -1 and on second with +1.
    */
   struct Coupling
   {
@@ -186,7 +186,8 @@ namespace bilayer
       glue
     };
     Kind kind = Kind::across;
-    /// The interface that carries the block's nodes (Sigma: 0).
+    /// The interface that carries the block's nodes (Sigma: 0): the one
+    /// it couples across, or the one along which it glues the layers.
     unsigned int interface = 0;
     /// Across an interface: the region below it; gluing: the region whose
     /// layers it glues.
@@ -201,8 +202,13 @@ namespace bilayer
    * the thickness. Subproblem (layer l, region r) has the index R l + r;
    * the multiplier blocks are first the R - 1 blocks across the interfaces
    * (block i across interface i), then the gluing blocks of each layer
-   * k >= 2 on each region ((k - 2) R + r + R - 1). Several layers are
-   * stacked only on two regions (Sigma). A two-region scene keeps at least
+   * k >= 2: one per region and interface on its boundary, in the order
+   * (region 0, interface 0), (region 1, interface 0), (region 1,
+   * interface 1), (region 2, interface 1), ... (pair j: region
+   * (j + 1) / 2, interface j / 2; block R - 1 + (k - 2) 2 (R - 1) + j).
+   * The layers are glued along every interface (the paper's gluing along
+   * Sigma, on each curve that cuts the cross-section). A two-region scene
+   * keeps at least
    * two layer slots (a one-layer scene's layer 2 absent: null subproblems,
    * blocks without nodes), so u- = 0, u+ = 1, v- = 2, v+ = 3 as
    * Layout::index() numbers them.
@@ -245,10 +251,27 @@ namespace bilayer
     {
       return regions * slots;
     }
+    /// The gluing blocks of one layer k >= 2: one per region and
+    /// interface on its boundary.
+    unsigned int
+    n_glue_blocks() const
+    {
+      return 2 * n_interfaces();
+    }
     unsigned int
     n_blocks() const
     {
-      return n_interfaces() + regions * (slots - 1);
+      return n_interfaces() + n_glue_blocks() * (slots - 1);
+    }
+    /// The block that glues layer @p layer (>= 2) to the layer below it on
+    /// region @p r along interface @p i (on the boundary of r).
+    unsigned int
+    glue_block(const Layer        layer,
+               const unsigned int r,
+               const unsigned int i) const
+    {
+      return n_interfaces() +
+             n_glue_blocks() * (static_cast<unsigned int>(layer) - 1) + i + r;
     }
     unsigned int
     index(const Layer layer, const unsigned int region) const
@@ -280,10 +303,11 @@ namespace bilayer
           return c;
         }
       const unsigned int g     = b - n_interfaces();
-      const unsigned int upper = g / regions + 1;
+      const unsigned int upper = g / n_glue_blocks() + 1;
+      const unsigned int j     = g % n_glue_blocks();
       c.kind                   = Coupling::Kind::glue;
-      c.interface              = 0;
-      c.region                 = g % regions;
+      c.interface              = j / 2;
+      c.region                 = (j + 1) / 2;
       c.first                  = index(static_cast<Layer>(upper - 1), c.region);
       c.second                 = index(static_cast<Layer>(upper), c.region);
       return c;
