@@ -29,8 +29,8 @@
 #   cannot name an entry;
 # - scripts/check_geo (bilayer --check-geometry) on a hostile scene;
 #   bilayer --check-geometry on a quadrilateral and a triangle scene (the
-#   groups, cells and crack pieces, PASS) and on a scene without Omega+ (one
-#   error line).
+#   groups, cells and crack pieces, PASS), on a scene of three regions (each
+#   region and interface 2) and on a scene without Omega+ (one error line).
 # Usage: gmsh_refusals.sh BILAYER PARAMETER_FILES_DIRECTORY
 set -u
 bilayer=$(realpath "$1")
@@ -425,6 +425,19 @@ grep -qF "  piece (-2, 0) -- (-0.5, 0): length 1.5; edge crack: its mouth (-2, 0
   why="$why; mouth not named"
 grep -qxF "  piece (0.5, 0) -- (1.5, 0): length 1" check_stdout || why="$why; inner piece"
 report "--check-geometry on an edge crack" "$why"
+# Three regions (ply_drop.geo: 60, 60 and 40 cells of size 1 by its
+# transfinite curves): every region and interface 2 with its edge crack
+# from the end of the dropped ply (20, 2) to the tip (35, 2).
+why=""
+"$bilayer" --check-geometry "$source_dir/ply_drop.geo" > check_stdout 2> stderr || why="exit status $?"
+[[ $(tail -1 check_stdout) == PASS ]] || why="$why; no PASS"
+grep -qxF "cells: Omega- 60 quadrilaterals, Omega+ 60 quadrilaterals, Region 3 40 quadrilaterals" check_stdout ||
+  why="$why; not the three regions"
+grep -qF "interface 2 ('Sigma 2', between 'Omega+' and 'Region 3') (with the crack): 2 pieces, length 40, from (20, 2) to (60, 2)" check_stdout ||
+  why="$why; no interface 2"
+grep -qF "  piece (20, 2) -- (35, 2): length 15; edge crack: its mouth (20, 2)" check_stdout ||
+  why="$why; not the crack of interface 2"
+report "--check-geometry on three regions" "$why"
 sed -e '/Physical Surface("Omega+")/d' "$source_dir/two_cracks.geo" > no_plus.geo
 why=""
 "$bilayer" --check-geometry no_plus.geo > check_stdout 2> stderr
