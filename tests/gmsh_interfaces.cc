@@ -112,25 +112,24 @@ main()
       file_text(std::string(SOURCE_DIR) +
                 "/../parameter_files/two_delaminations.prm") +
       "subsection Mesh\n set Number of cycles = 5\nend\n";
-    std::string gmsh = replace_line(rectangle,
-                                    "  set Lower left corner",
-                                    "  set Gmsh file = " +
-                                      std::string(SOURCE_DIR) +
-                                      "/two_delaminations.geo");
+    std::string gmsh =
+      replace_line(rectangle,
+                   "  set Lower left corner",
+                   "  set Gmsh file = " + std::string(SOURCE_DIR) +
+                     "/two_delaminations.geo");
     for (const std::string key : {"  set Upper right corner",
                                   "  set Height of Sigma",
                                   "  set Crack interval on Sigma",
                                   "  set Interfaces above Sigma",
                                   "  set Fit crack tips"})
       gmsh = replace_line(gmsh, key, "");
-    gmsh = replace_line(gmsh,
+    gmsh            = replace_line(gmsh,
                         "    set Traction on left side",
                         "    set Traction on left = (y < 1 ? -12*M*(y - "
-                        "0.5) : (y > 2 ? 12*M*(y - 2.5) : 0)); 0");
+                                   "0.5) : (y > 2 ? 12*M*(y - 2.5) : 0)); 0");
     const Outcome r = run(rectangle), g = run(gmsh);
-    bool          same_energies =
-      r.accepted && g.accepted && r.energies.size() == 5 &&
-      g.energies.size() == r.energies.size();
+    bool same_energies = r.accepted && g.accepted && r.energies.size() == 5 &&
+                         g.energies.size() == r.energies.size();
     for (unsigned int k = 0; same_energies && k < r.energies.size(); ++k)
       same_energies = std::abs(g.energies[k] - r.energies[k]) <=
                       1e-10 * std::abs(r.energies[k]);
@@ -139,12 +138,11 @@ main()
               << yes(same_energies) << std::endl;
     bool same_tips = r.release.size() == 2 && g.release.size() == 2;
     for (unsigned int t = 0; same_tips && t < 2; ++t)
-      same_tips = g.release[t].tip.interface == t &&
-                  r.release[t].tip.interface == t &&
-                  g.release[t].tip.point.distance(r.release[t].tip.point) <
-                    1e-12 &&
-                  std::abs(g.release[t].G - r.release[t].G) <=
-                    1e-8 * std::abs(r.release[t].G);
+      same_tips =
+        g.release[t].tip.interface == t && r.release[t].tip.interface == t &&
+        g.release[t].tip.point.distance(r.release[t].tip.point) < 1e-12 &&
+        std::abs(g.release[t].G - r.release[t].G) <=
+          1e-8 * std::abs(r.release[t].G);
     std::cout << "two delaminations: tip t on interface t, G of both tips "
                  "equal to 1e-8: "
               << yes(same_tips) << std::endl;
@@ -155,17 +153,15 @@ main()
   {
     const double E = 1, nu = 0.3, P = 1e-3, e = 0.5, I = 27. / 12;
     const double E_prime = E / (1 - nu * nu);
-    const double G_beam =
-      P * P / (2 * E_prime) * (1. / 2 - 1. / 3 - e * e / I);
-    const bool one_tip = base.accepted && base.release.size() == 1 &&
+    const double G_beam = P * P / (2 * E_prime) * (1. / 2 - 1. / 3 - e * e / I);
+    const bool   one_tip = base.accepted && base.release.size() == 1 &&
                          base.release[0].tip.interface == 1 &&
                          base.release[0].tip.point.distance({35, 2}) < 1e-12;
     std::cout << "ply drop: accepted, one tip, at (35, 2) on interface 2: "
               << yes(one_tip) << std::endl;
     std::cout << "ply drop: G within 1 % of P^2 / (2 E') (1/2 - 1/3 - e^2 / "
                  "I): "
-              << yes(one_tip &&
-                     std::abs(base.release[0].G / G_beam - 1) < 0.01)
+              << yes(one_tip && std::abs(base.release[0].G / G_beam - 1) < 0.01)
               << std::endl;
 
     // 3. Finite differences of the energy.

@@ -146,10 +146,9 @@ namespace bilayer
         std::string(scene.geometry.gmsh_file.empty() ?
                       "Geometry/Interfaces above Sigma" :
                       "Geometry/Gmsh file") +
-        ": a scene of " +
-        std::to_string(topology.n_regions()) + " regions runs on at most " +
-        std::to_string(Distribution::max_groups) + " MPI processes, got " +
-        std::to_string(distribution.n_processes()));
+        ": a scene of " + std::to_string(topology.n_regions()) +
+        " regions runs on at most " + std::to_string(Distribution::max_groups) +
+        " MPI processes, got " + std::to_string(distribution.n_processes()));
     const IterationClock clock;
     std::vector<double>  seconds, dofs;
     for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)

@@ -33,7 +33,9 @@ namespace bilayer
     // side spans all regions, so an end is clamped on both or neither).
     for (const unsigned int i : Layout::indices(curves.size()))
       {
-        // A Gmsh scene's interfaces come from its file (load_gmsh()).
+        // A Gmsh scene's interfaces come from its file (load_gmsh(); Sigma
+        // holds the rectangle's segment until then, as before the scene
+        // had further interfaces).
         if (i > 0 && !geometry.gmsh_file.empty())
           break;
         InterfaceCurve &curve  = curves[i];

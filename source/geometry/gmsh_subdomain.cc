@@ -225,8 +225,8 @@ namespace bilayer
     const GmshMesh   &g     = *gmsh;
     const std::string where = "Geometry/Gmsh file '" + geometry.gmsh_file + "'";
     const std::string name  = gmsh_region_name(region);
-    const int    tag     = g.physical_tag(2, name);
-    SurfaceCells surface = surface_cells(g, tag, ply_cells);
+    const int         tag   = g.physical_tag(2, name);
+    SurfaceCells      surface = surface_cells(g, tag, ply_cells);
     check_cell_kind(surface, mesh, name, where);
     orient_cells(surface, name, where);
     if (surface.quads)

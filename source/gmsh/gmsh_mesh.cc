@@ -246,9 +246,8 @@ namespace bilayer
   gmsh_region_count(const std::vector<std::string> &surfaces)
   {
     unsigned int n = 2;
-    while (std::find(surfaces.begin(),
-                     surfaces.end(),
-                     gmsh_region_name(n)) != surfaces.end())
+    while (std::find(surfaces.begin(), surfaces.end(), gmsh_region_name(n)) !=
+           surfaces.end())
       ++n;
     return n;
   }
