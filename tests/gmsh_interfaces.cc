@@ -36,32 +36,22 @@
 #include <vector>
 
 #include "quiet_output.h"
+#include "study_outcome.h"
 #include "verdict.h"
 
 using namespace bilayer;
 
 namespace
 {
-  struct Outcome
-  {
-    bool                           accepted = false;
-    std::vector<double>            energies;
-    std::vector<EnergyReleaseRate> release;
-  };
+  using Outcome = StudyOutcome;
 
   Outcome
   run(const std::string &text)
   {
     std::ostringstream sink;
-    Study   study(scene_from_string(text + quiet_output(), "gmsh_interfaces"),
+    Study study(scene_from_string(text + quiet_output(), "gmsh_interfaces"),
                 sink);
-    Outcome r;
-    r.accepted = study.run();
-    for (const auto &record : study.records())
-      r.energies.push_back(record.energy);
-    if (!study.records().empty())
-      r.release = study.records().back().release;
-    return r;
+    return study_outcome(study, study.run());
   }
 
   std::string

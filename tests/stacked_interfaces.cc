@@ -47,17 +47,15 @@
 #include <vector>
 
 #include "quiet_output.h"
+#include "study_outcome.h"
 #include "verdict.h"
 
 using namespace bilayer;
 
 namespace
 {
-  struct Outcome
+  struct Outcome : StudyOutcome
   {
-    bool                           accepted = false;
-    std::vector<double>            energies;
-    std::vector<EnergyReleaseRate> release;
     /// Over both interfaces: the largest gluing multiplier of layer 2
     /// (mu_minus, mu_plus), the largest multiplier across the interface
     /// (mu_c, mu_g), the largest layer gap and the largest trace.
@@ -73,12 +71,9 @@ namespace
     Study study(scene_from_string(text + quiet_output(), "stacked_interfaces"),
                 sink);
     Outcome r;
-    r.accepted = study.run();
-    for (const auto &record : study.records())
-      r.energies.push_back(record.energy);
+    static_cast<StudyOutcome &>(r) = study_outcome(study, study.run());
     if (!r.accepted)
       return r;
-    r.release = study.records().back().release;
     for (unsigned int i = 0; i < study.interface().n_interfaces(); ++i)
       for (const InterfaceNode &n : interface_nodes(study.interface(),
                                                     study.solutions(),
