@@ -5,9 +5,6 @@
 // interface and solves on Sigma from the multipliers of the step before.
 
 #include <deal.II/base/exceptions.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/grid_tools_cache.h>
-#include <deal.II/numerics/vector_tools.h>
 
 #include <bilayer/drivers/resources.h>
 #include <bilayer/drivers/study.h>
@@ -103,10 +100,8 @@ namespace bilayer
     // once for all steps.
     Timer       total;
     CycleRecord first;
-    build_meshes(first, scene.mesh.n_cycles - 1);
-    check_memory(first);
-    set_up_subproblems();
-    count_subproblems(first);
+    model.keep_meshes();
+    set_up_cycle(first, scene.mesh.n_cycles - 1);
     onsets_exact = !sweep && fracture.exact_onsets && proportional_loading();
     start_growth();
 
@@ -162,10 +157,12 @@ namespace bilayer
   {
     growth_steps.clear();
     followed.clear();
-    const std::vector<InterfaceCurve> &curves = domain.interface_curves();
+    const std::vector<CrackTip>       &tips = model.tips();
+    const std::vector<InterfaceCurve> &curves =
+      model.geometry().interface_curves();
     interface_vertices.clear();
     for (const unsigned int i : Layout::indices(curves.size()))
-      interface_vertices.push_back(domain.sigma_vertex_parameters(i));
+      interface_vertices.push_back(model.geometry().sigma_vertex_parameters(i));
     AssertThrow(!tips.empty(),
                 ExcMessage("Fracture/Crack growth needs a crack with a tip "
                            "inside Omega (Geometry/Crack interval on Sigma, or "
@@ -205,7 +202,7 @@ namespace bilayer
           }
     point_subproblems.clear();
     for (const Point<2> &p : scene.output.displacement_points)
-      point_subproblems.push_back(point_subproblem(p));
+      point_subproblems.push_back(model.point_subproblem(p));
     for (const unsigned int n : scene.fracture.growing_tips)
       AssertThrow(n <= tips.size(),
                   ExcMessage("Fracture/Growing tips: tip " + std::to_string(n) +
@@ -244,8 +241,8 @@ namespace bilayer
     try
       {
         set_load_factor(lambda);
-        set_up_interface(probe, nullptr);
-        solve(probe);
+        model.set_up_interface(probe, nullptr);
+        model.solve(probe);
         assess(probe);
       }
     catch (...)
@@ -341,10 +338,9 @@ namespace bilayer
       }
     Timer timer;
     set_load_factor(lambda);
-    MultiplierSpace::Functions previous;
-    const bool                 warm = step > 0 && mu.size() > 0;
-    if (warm)
-      previous = coupling.space().functions(mu);
+    const bool warm = step > 0 && model.multipliers().size() > 0;
+    const MultiplierSpace::Functions previous =
+      warm ? model.multiplier_functions() : MultiplierSpace::Functions();
     record.cycle = step;
     if (step > 0)
       reuse_meshes(record);
@@ -364,8 +360,9 @@ namespace bilayer
                      const std::string &kind)
   {
     const FractureParameters          &fracture = scene.fracture;
-    const std::vector<InterfaceCurve> &curves   = domain.interface_curves();
-    GrowthStep                         step;
+    const std::vector<InterfaceCurve> &curves =
+      model.geometry().interface_curves();
+    GrowthStep step;
     step.step         = record.cycle;
     step.load_factor  = lambda;
     step.kind         = kind;
@@ -474,8 +471,9 @@ namespace bilayer
   bool
   Study::advance_tips(const std::vector<unsigned int> &growing)
   {
-    const std::vector<InterfaceCurve> &curves = domain.interface_curves();
-    std::vector<CrackSet>              cracks;
+    const std::vector<InterfaceCurve> &curves =
+      model.geometry().interface_curves();
+    std::vector<CrackSet> cracks;
     for (const InterfaceCurve &curve : curves)
       cracks.push_back(curve.crack());
     std::vector<bool> moved(curves.size(), false);
@@ -507,7 +505,7 @@ namespace bilayer
             const CrackSet candidate   = moved_end(crack, s, candidate_s, tol);
             std::string    refusal     = curve.crack_refusal(candidate);
             if (refusal.empty())
-              refusal = support_refusal(candidate, tip.interface);
+              refusal = model.support_refusal(candidate, tip.interface);
             if (!refusal.empty())
               {
                 stop = refusal;
@@ -541,41 +539,10 @@ namespace bilayer
     for (const unsigned int i : Layout::indices(curves.size()))
       if (moved[i])
         {
-          set_crack(cracks[i], i);
+          model.set_crack(cracks[i], i);
           any = true;
         }
     return any;
-  }
-
-
-  std::string
-  Study::support_refusal(const CrackSet &crack, const unsigned int i) const
-  {
-    // A given support radius must stay below the free distance of every
-    // tip of the new crack (crack_tips() refuses it otherwise).
-    if (!(scene.fracture.support_radius > 0))
-      return "";
-    const std::vector<InterfaceCurve> &curves = domain.interface_curves();
-    InterfaceCurve                     curve  = curves[i];
-    curve.set_crack(crack);
-    std::vector<InterfaceCurve> others;
-    for (const unsigned int j : Layout::indices(curves.size()))
-      if (j != i)
-        others.push_back(curves[j]);
-    try
-      {
-        crack_tips(curve,
-                   {{&domain.triangulation(i), &domain.triangulation(i + 1)}},
-                   scene.fracture.support_radius,
-                   i,
-                   others,
-                   ply_boundaries());
-      }
-    catch (const ExceptionBase &e)
-      {
-        return "Fracture/Support radius no longer fits: " + one_line_message(e);
-      }
-    return "";
   }
 
 
@@ -584,56 +551,12 @@ namespace bilayer
   {
     // The work of the unit proportional loads, and layer 1's displacement
     // at the named points, each from the owner of its subproblem.
-    PerSubproblem<double> work(subproblems.size(), 0.);
-    for (const unsigned int s : Layout::indices(subproblems.size()))
-      if (subproblems[s] && distribution.owns(s))
-        work[s] = subproblems[s]->load_work(w[s]);
-    distribution.share(work);
-    step.conjugate_displacement = 0;
-    for (const double value : work)
-      step.conjugate_displacement += value;
-    const auto &points = scene.output.displacement_points;
+    step.conjugate_displacement = model.load_work();
+    const auto &points          = scene.output.displacement_points;
     for (unsigned int i = 0; i < points.size(); ++i)
-      {
-        const unsigned int    s = point_subproblems[i];
-        Vector<double>        u(2);
-        PerSubproblem<double> ux(subproblems.size(), 0.),
-          uy(subproblems.size(), 0.);
-        if (distribution.owns(s))
-          {
-            VectorTools::point_value(subproblems[s]->mapping(),
-                                     subproblems[s]->dof_handler(),
-                                     w[s],
-                                     points[i],
-                                     u);
-            ux[s] = u[0];
-            uy[s] = u[1];
-          }
-        distribution.share(ux);
-        distribution.share(uy);
-        step.point_displacements.push_back(Tensor<1, 2>({ux[s], uy[s]}));
-      }
+      step.point_displacements.push_back(
+        model.point_displacement(points[i], point_subproblems[i]));
   }
 
 
-  unsigned int
-  Study::point_subproblem(const Point<2> &p) const
-  {
-    // The regions from the bottom: a point on an interface is read in the
-    // region below it.
-    for (const unsigned int r : Layout::indices(topology.n_regions()))
-      {
-        const unsigned int           s = topology.index(Layer::first, r);
-        const GridTools::Cache<2, 2> cache(domain.triangulation(r),
-                                           subproblems[s]->mapping());
-        const auto found = GridTools::find_active_cell_around_point(cache, p);
-        if (found.first.state() == IteratorState::valid)
-          return s;
-      }
-    std::ostringstream msg;
-    msg << "Output/Displacement points: (" << p[0] << ", " << p[1]
-        << ") lies outside the domain";
-    AssertThrow(false, ExcMessage(msg.str()));
-    return 0;
-  }
 } // namespace bilayer

@@ -1,5 +1,5 @@
-// The study's checks: the memory a cycle needs, the supports of the crack
-// tips' velocity fields, and the acceptance checks of each record.
+// The study's checks: the memory a cycle needs and the acceptance checks of
+// each record.
 
 #include <bilayer/drivers/resources.h>
 #include <bilayer/drivers/study.h>
@@ -12,108 +12,6 @@
 namespace bilayer
 {
   using namespace dealii;
-
-  void
-  Study::check_supports(const CycleRecord &record)
-  {
-    const bool rectangle =
-      scene.geometry.gmsh_file.empty() && scene.mesh.mesh_files.empty();
-    const bool uniform = scene.mesh.refinement != Refinement::adaptive;
-    // Cycles after this one, each halving the cells under uniform
-    // refinement.
-    const unsigned int n_later =
-      !growth_run && scene.mesh.n_cycles > record.cycle + 1 ?
-        scene.mesh.n_cycles - record.cycle - 1 :
-        0;
-    unresolved_tips.assign(tips.size(), "");
-    tip_cell_sizes.assign(tips.size(), 0.);
-    for (unsigned int t = 0; t < tips.size(); ++t)
-      {
-        const CrackTip &tip = tips[t];
-        if (!tip.defined())
-          continue;
-        // On the meshes of the subproblems (the later states of a study on
-        // one mesh), from their cell extents.
-        // (The two regions of the tip's interface.)
-        const unsigned int             i = tip.interface;
-        const ElasticSubproblem *const minus =
-          subproblems[topology.index(Layer::first, i)].get();
-        const ElasticSubproblem *const plus =
-          subproblems[topology.index(Layer::first, i + 1)].get();
-        const TipCells cells =
-          minus != nullptr && plus != nullptr ?
-            support_cells(tip,
-                          {{&minus->cell_extents(), &plus->cell_extents()}}) :
-            support_cells(
-              tip, {{&domain.triangulation(i), &domain.triangulation(i + 1)}});
-        tip_cell_sizes[t] = cells.size;
-        const double R    = tip.support_radius;
-        if (support_holds(R, cells.size))
-          continue;
-        const double last_size =
-          uniform ? std::ldexp(cells.size, -int(n_later)) : cells.size;
-        const bool         last_resolved = support_holds(R, last_size);
-        std::ostringstream m;
-        m << std::setprecision(3);
-        if (scene.fracture.support_radius > 0)
-          m << "Fracture/Support radius = " << R;
-        else
-          m << "the automatic support radius R = " << R
-            << " (Fracture/Support radius = 0: half the distance "
-            << tip.free_distance << " to the nearest obstacle of theta)";
-        m << " at the crack tip at "
-          << tip_position(tip, scene.geometry.gmsh_file.empty()) << " holds "
-          << R / cells.size << " cells of the mesh of Omega"
-          << (cells.mesh == 0 ? "-" : "+")
-          << " along its radius (cells of size " << cells.size
-          << " at the tip on cycle " << record.cycle;
-        if (uniform && n_later > 0)
-          m << ", " << last_size << " on the last cycle";
-        m << "): G needs at least " << min_cells_per_support_radius
-          << " (R >= the cell size, else G tends to 0 with R)";
-        // The remedies: a larger radius where the obstacles allow it, or
-        // cells no larger than R at the tip.
-        std::vector<std::string> remedies;
-        const double             needed =
-          min_cells_per_support_radius * (uniform ? last_size : cells.size);
-        if (needed < tip.free_distance)
-          {
-            std::ostringstream r;
-            r << std::setprecision(3) << "Fracture/Support radius in ["
-              << needed << ", " << tip.free_distance << ")";
-            remedies.push_back(r.str());
-          }
-        if (rectangle)
-          {
-            std::ostringstream r;
-            r << "at least "
-              << std::ceil(scene.mesh.cells_along_sigma *
-                           (uniform ? last_size : cells.size) / R)
-              << " Mesh/Cells along Sigma"
-              << (scene.mesh.cells_along_sigma_plus > 0 ?
-                    " (and on the plus side in proportion)" :
-                    "")
-              << (uniform ? "" : " or more adaptive cycles");
-            remedies.push_back(r.str());
-          }
-        else
-          remedies.push_back(uniform ? "more Mesh/Number of cycles" :
-                                       "more adaptive cycles");
-        m << ": use ";
-        for (unsigned int i = 0; i < remedies.size(); ++i)
-          m << (i == 0 ? "" : ", or ") << remedies[i];
-        // A given radius under uniform refinement: the last cycle is known
-        // now; refuse the scene before anything is computed if it cannot
-        // hold the support. (The automatic radius: G is not reported at
-        // this tip on this cycle, the run goes on; G is a by-product of
-        // every scene with a crack, coarse meshes included.)
-        AssertThrow(!(scene.fracture.support_radius > 0 &&
-                      (record.cycle == 0 || growth_run) && uniform &&
-                      !last_resolved),
-                    ExcMessage(m.str()));
-        unresolved_tips[t] = m.str();
-      }
-  }
 
 
   void
@@ -168,7 +66,7 @@ namespace bilayer
                      "prescribed displacements of the sides or layers glued "
                      "there must agree at that point";
     if (scene.contact.non_penetration &&
-        !domain.interface_curve().crack().empty())
+        !model.geometry().interface_curve().crack().empty())
       {
         record.checks.emplace_back("contact multiplier mu_c >= 0",
                                    r.min_contact_multiplier >= 0);
@@ -264,28 +162,6 @@ namespace bilayer
                 "Contact/Multiplier bound p";
         record.note += (record.note.empty() ? "" : "; ") + note.str();
       }
-  }
-  std::vector<Segment>
-  Study::ply_boundaries() const
-  {
-    // The faces between plies of different materials, of every layer in
-    // every region.
-    std::vector<Segment> material_faces;
-    for (const Layer layer : scene.materials.layers())
-      for (const unsigned int r : Layout::indices(topology.n_regions()))
-        if (scene.materials.has_layer(layer) &&
-            scene.materials.n_plies(layer) > 1)
-          {
-            const PlyLaws laws(
-              scene.materials.ply_materials(layer, Topology::material_side(r)),
-              scene.materials.division(layer));
-            const auto faces =
-              material_boundaries(domain.triangulation(r), laws);
-            material_faces.insert(material_faces.end(),
-                                  faces.begin(),
-                                  faces.end());
-          }
-    return material_faces;
   }
 
 } // namespace bilayer

@@ -96,8 +96,12 @@ namespace bilayer
                                                record.accepted()));
     if (fields)
       writing([&]() {
-        write_solution(
-          dir, record.cycle, subproblem_views(), w, scene.output, outputs);
+        write_solution(dir,
+                       record.cycle,
+                       model.subproblem_views(),
+                       model.solutions(),
+                       scene.output,
+                       outputs);
       });
     record.total_seconds = distribution.max(total.wall_time());
     Utilities::System::MemoryStats memory;
@@ -136,8 +140,12 @@ namespace bilayer
     try
       {
         if (scene.output.write_vtu || scene.output.write_hdf5)
-          write_solution(
-            dir, step, subproblem_views(), w, scene.output, outputs);
+          write_solution(dir,
+                         step,
+                         model.subproblem_views(),
+                         model.solutions(),
+                         scene.output,
+                         outputs);
         if (distribution.is_root())
           write_interface_files(step, scene.output.write_vtu, true);
       }
@@ -166,13 +174,18 @@ namespace bilayer
     if (!csv && !interface_vtu)
       return;
     // One file of each kind per interface.
-    for (const unsigned int i : Layout::indices(topology.n_interfaces()))
+    for (const unsigned int i :
+         Layout::indices(model.topology().n_interfaces()))
       {
-        const std::vector<InterfaceNode> nodes = interface_nodes(
-          coupling, w, mu, scene.solver.acceptance_tolerance, i);
+        const std::vector<InterfaceNode> nodes =
+          interface_nodes(model.interface(),
+                          model.solutions(),
+                          model.multipliers(),
+                          scene.solver.acceptance_tolerance,
+                          i);
         std::vector<std::string> trace_names;
-        for (const unsigned int s : trace_subproblems(topology, i))
-          trace_names.push_back(topology.field_name(s));
+        for (const unsigned int s : trace_subproblems(model.topology(), i))
+          trace_names.push_back(model.topology().field_name(s));
         if (csv)
           write_atomically(dir + "/" + interface_stem(i) + "-" +
                              two_digits(cycle) + ".csv",
@@ -339,18 +352,22 @@ namespace bilayer
         int          a_max   = -1;
         unsigned int i_max   = 0;
         double       largest = 0;
-        for (const unsigned int i : Layout::indices(coupling.n_interfaces()))
+        for (const unsigned int i :
+             Layout::indices(model.interface().n_interfaces()))
           {
-            const std::vector<double> opening = normal_opening(coupling, w, i);
-            for (unsigned int a = 0; a < coupling.space().n_nodes(i); ++a)
-              if (coupling.space().on_crack(a, i) &&
+            const std::vector<double> opening =
+              normal_opening(model.interface(), model.solutions(), i);
+            for (unsigned int a = 0; a < model.interface().space().n_nodes(i);
+                 ++a)
+              if (model.interface().space().on_crack(a, i) &&
                   (a_max < 0 || opening[a] > largest))
                 a_max = a, i_max = i, largest = opening[a];
           }
         if (a_max >= 0)
           {
             // The position: s = x on the rectangle, else s and the point.
-            const double s_max = coupling.space().node_position(a_max, i_max);
+            const double s_max =
+              model.interface().space().node_position(a_max, i_max);
             std::ostringstream x;
             x << std::setprecision(6);
             if (scene.geometry.gmsh_file.empty())
@@ -361,7 +378,7 @@ namespace bilayer
               }
             else
               {
-                const Point<2> p = coupling.curve().point(s_max);
+                const Point<2> p = model.interface().curve().point(s_max);
                 x << "s = " << s_max << ", (x, y) = (" << p[0] << ", " << p[1]
                   << ")";
               }

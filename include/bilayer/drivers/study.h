@@ -9,6 +9,7 @@
 #include <bilayer/core/layout.h>
 #include <bilayer/geometry/geometry.h>
 #include <bilayer/interface/interface.h>
+#include <bilayer/model/model.h>
 #include <bilayer/output/cycle_record.h>
 #include <bilayer/output/growth_record.h>
 #include <bilayer/output/output.h>
@@ -92,13 +93,16 @@ namespace bilayer
      * by a group of processes (more than four processes).
      */
     void
-    set_load_factor(const double lambda);
+    set_load_factor(const double lambda)
+    {
+      model.set_load_factor(lambda);
+    }
 
     /// The load factor of set_load_factor() (1 at the start).
     double
     load_factor() const
     {
-      return lambda;
+      return model.load_factor();
     }
 
     /**
@@ -113,7 +117,10 @@ namespace bilayer
      * of no preload; with all, any load.
      */
     bool
-    proportional_loading() const;
+    proportional_loading() const
+    {
+      return model.proportional_loading();
+    }
 
 
     /**
@@ -144,36 +151,43 @@ namespace bilayer
     {
       return cycle_records;
     }
+    /// The model the drivers ask (meshes, subproblems, couplings, the
+    /// crack and its tips, the solution).
+    const Model &
+    state() const
+    {
+      return model;
+    }
     const Interface &
     interface() const
     {
-      return coupling;
+      return model.interface();
     }
     const Solutions &
     solutions() const
     {
-      return w;
+      return model.solutions();
     }
     const dealii::BlockVector<double> &
     multipliers() const
     {
-      return mu;
+      return model.multipliers();
     }
     const ElasticSubproblem &
     subproblem(const Layer layer, const Subdomain subdomain) const
     {
-      return *subproblems[Layout::index(layer, subdomain)];
+      return model.subproblem(Layout::index(layer, subdomain));
     }
     /// Subproblem @p s (Topology::index()).
     const ElasticSubproblem &
     subproblem(const unsigned int s) const
     {
-      return *subproblems[s];
+      return model.subproblem(s);
     }
     const Topology &
     layout() const
     {
-      return topology;
+      return model.topology();
     }
 
     /**
@@ -183,7 +197,10 @@ namespace bilayer
      * driver can refine by a criterion of its own.
      */
     void
-    set_indicators(const std::vector<dealii::Vector<double>> &new_indicators);
+    set_indicators(const std::vector<dealii::Vector<double>> &new_indicators)
+    {
+      model.set_indicators(new_indicators);
+    }
 
     /// As above, from single precision indicators.
     void
@@ -193,7 +210,7 @@ namespace bilayer
     const std::vector<dealii::Vector<double>> &
     error_indicators() const
     {
-      return indicators;
+      return model.error_indicators();
     }
 
     /**
@@ -234,8 +251,9 @@ namespace bilayer
     std::vector<FollowedTip> followed;
     /// The vertices of each interface (Sigma first) where a tip may stand.
     std::vector<std::vector<double>> interface_vertices;
-    std::vector<unsigned int>        point_subproblems;
-    std::string                      growth_stop;
+    /// The subproblem of each Output/Displacement point.
+    std::vector<unsigned int> point_subproblems;
+    std::string               growth_stop;
     /// What growth.csv holds: its head, and the rows of this many steps.
     bool        growth_head_written = false;
     std::size_t growth_rows_written = 0;
@@ -281,12 +299,8 @@ namespace bilayer
     /// Advance the followed tips @p growing; false if none moved.
     bool
     advance_tips(const std::vector<unsigned int> &growing);
-    std::string
-    support_refusal(const CrackSet &crack, const unsigned int i = 0) const;
     void
     measure_loading(GrowthStep &step) const;
-    unsigned int
-    point_subproblem(const dealii::Point<2> &p) const;
     std::string
     growth_mode() const;
     /// growth.csv's rows of the steps that are final; with @p final (the
@@ -311,6 +325,13 @@ namespace bilayer
                           const bool         interface_csv);
     // The steps of run_cycle(), in this order.
 
+    /// The meshes of mesh cycle @p cycle (build_meshes()), with @p crack
+    /// if given, checked against the memory, and the subproblems set up on
+    /// them; their sizes, dofs and set-up times in @p record.
+    void
+    set_up_cycle(CycleRecord       &record,
+                 const unsigned int cycle,
+                 const CrackSet    *crack = nullptr);
     /// The meshes of mesh cycle @p cycle (created, or refined from the
     /// last cycle's), their sizes in @p record, and the tips.
     void
@@ -320,56 +341,22 @@ namespace bilayer
     /// present crack) checked on those meshes.
     void
     reuse_meshes(CycleRecord &record);
-    /// The crack of the geometry on the present meshes; the tips are found
-    /// again (the one place where the crack changes).
-    void
-    set_crack(const CrackSet &crack, const unsigned int i = 0);
     /// Refuses a cycle that would not fit into the memory (the estimate
     /// goes into @p record).
     void
     check_memory(CycleRecord &record) const;
 
-    /// Whether the support of theta at each crack tip holds enough cells
-    /// of this cycle's meshes (min_cells_per_support_radius): refuses a
-    /// scene whose last cycle cannot (uniform refinement), else keeps in
-    /// unresolved_tips why G is not reported at a tip on this cycle.
-    void
-    check_supports(const CycleRecord &record);
     /// "# tip k: <where>, grows towards ..." for each crack tip (none
     /// without tips): the head of table.txt and of the terminal's table.
     void
     write_tip_notes(std::ostream &out) const;
-    /// The subproblems of the present layers, assembled and factorised as
-    /// parallel tasks.
-    void
-    set_up_subproblems();
-    /// Their dofs and the set-up times of the busiest process.
-    void
-    count_subproblems(CycleRecord &record) const;
-    /// The interface and the multipliers, started from @p previous (the
-    /// previous cycle's multipliers) if given.
-    void
-    set_up_interface(CycleRecord                      &record,
-                     const MultiplierSpace::Functions *previous);
-    /// The outer solve, with its times and the MPI exchange.
-    void
-    solve(CycleRecord &record);
     /// The energy, the residuals, the acceptance checks and (adaptive
     /// refinement) the error indicators of the next cycle.
     void
     assess(CycleRecord &record);
     void
     check(CycleRecord &record) const;
-    /// The crack tips (found again after the crack changed) and whether
-    /// their supports hold enough cells of the present meshes.
-    void
-    update_tips(const CycleRecord &record);
 
-    /// The faces between plies of different laws or thermal expansions, of
-    /// every layer in every region (material_boundaries()): obstacles of
-    /// the tips' theta where it would move them.
-    std::vector<Segment>
-    ply_boundaries() const;
     /**
      * One state on the present subproblems: the interface (and the
      * multipliers, from @p previous if given), the outer solve, the
@@ -398,50 +385,18 @@ namespace bilayer
     void
     print_release(const CycleRecord &record) const;
 
-    /// The subproblems as the interface reads them and as the solvers use
-    /// them (null where a layer is absent).
-    PerSubproblem<const ElasticSubproblem *>
-    subproblem_views() const;
-
     const Scene         scene;
     std::ostream       &out;
     const Distribution &distribution;
-    /// The regions, interfaces and layers of the scene.
-    const Topology topology;
-
-    /// Per subproblem: its body force and eigenstrain (Loads/Layer k, and
-    /// the thermal strain of its material under Loads/Temperature change),
-    /// null where it has none; the subproblem refers to it (so declared
-    /// before them).
-    PerSubproblem<std::unique_ptr<ScaledVolumeLoad>> volume_loads;
-    /// The load factor (set_load_factor()).
-    double lambda = 1;
-
     /// Progress (Output/Terminal output = full) and the checks, both on the
     /// first process only.
-    dealii::ConditionalOStream                        pcout, rout;
-    Geometry                                          domain;
-    PerSubproblem<std::unique_ptr<ElasticSubproblem>> subproblems;
-    Interface                                         coupling;
-    Solutions                                         w;
-    dealii::BlockVector<double>                       mu;
-    std::vector<CycleRecord>                          cycle_records;
-    SolutionRecords                                   outputs;
+    dealii::ConditionalOStream pcout, rout;
+    /// The meshes, subproblems, couplings, crack and solution.
+    Model                    model;
+    std::vector<CycleRecord> cycle_records;
+    SolutionRecords          outputs;
     /// The mesh-size table of the cycles so far.
     dealii::ConvergenceTable table;
-    /// The crack tips and the supports of their velocity fields (from the
-    /// meshes of cycle 0, or of the state's crack).
-    std::vector<CrackTip> tips;
-    bool                  tips_found = false;
-    /// Per tip: why its support holds too few cells of this cycle's meshes
-    /// (empty where it holds enough).
-    std::vector<std::string> unresolved_tips;
-    /// Per tip: the size of the largest cell at it on this cycle's meshes
-    /// (support_cells()), 0 where G is not defined.
-    std::vector<double> tip_cell_sizes;
-    /// Error indicators of the last cycle, per subdomain (adaptive
-    /// refinement).
-    std::vector<dealii::Vector<double>> indicators;
   };
 } // namespace bilayer
 
