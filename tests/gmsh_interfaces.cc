@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "quiet_output.h"
+#include "scene_text.h"
 #include "study_outcome.h"
 #include "verdict.h"
 
@@ -66,27 +67,6 @@ namespace
     return study_outcome(study, study.run());
   }
 
-  std::string
-  file_text(const std::string &path)
-  {
-    std::ifstream      in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
-  /// @p text with the line that starts with @p key replaced by @p line.
-  std::string
-  replace_line(std::string        text,
-               const std::string &key,
-               const std::string &line)
-  {
-    const auto at  = text.find(key);
-    const auto end = text.find('\n', at);
-    if (at == std::string::npos)
-      return text;
-    return text.replace(at, end - at, line);
-  }
 
   /// The scene parameter_files/ply_drop.prm with the tip at x = @p a (its
   /// .geo written into the working directory with that a).

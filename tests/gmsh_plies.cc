@@ -37,6 +37,7 @@
 
 #include "cross_ply_beam.h"
 #include "quiet_output.h"
+#include "scene_text.h"
 #include "verdict.h"
 
 using namespace bilayer;
@@ -90,14 +91,6 @@ namespace
     return o;
   }
 
-  std::string
-  file_text(const std::string &file)
-  {
-    std::ifstream      in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
 
   /// The 0 ply (fibres along x) as the law of Materials/Layer 1.
   const std::string zero_ply = "  set Law = orthotropic\n  set E_1 = 140\n"

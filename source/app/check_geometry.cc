@@ -97,12 +97,13 @@ namespace bilayer
                     std::ostream        &out)
     {
       const InterfaceCurve &curve = geometry.interface_curves()[i];
-      const std::string     name  = i == 0 ?
-                                      std::string("Sigma") :
-                                      "interface " + std::to_string(i + 1) + " ('" +
-                                   gmsh_interface_name(i, false) +
-                                   "', between '" + gmsh_region_name(i) +
-                                   "' and '" + gmsh_region_name(i + 1) + "')";
+      const std::string     name =
+        i == 0 ?
+              std::string("Sigma") :
+              "interface " + std::to_string(i + 1) + " ('" +
+            gmsh_interface_name(i, false) + "', between '" +
+            gmsh_region_name(geometry.interface_regions()[i][0]) + "' and '" +
+            gmsh_region_name(geometry.interface_regions()[i][1]) + "')";
       out << name << " (with the crack): " << curve.description() << ", from "
           << at(curve.point(curve.s_begin())) << " to "
           << at(curve.point(curve.s_end())) << "\n";

@@ -378,9 +378,11 @@ namespace bilayer
               }
             else
               {
-                const Point<2> p = model.interface().curve().point(s_max);
+                const Point<2> p = model.interface().curve(i_max).point(s_max);
                 x << "s = " << s_max << ", (x, y) = (" << p[0] << ", " << p[1]
                   << ")";
+                if (i_max > 0)
+                  x << " on interface " << i_max + 1;
               }
             rout << "cycle " << record.cycle << ": largest crack opening "
                  << scaled(largest) << " at " << x.str() << std::endl;

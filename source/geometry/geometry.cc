@@ -26,7 +26,8 @@ namespace bilayer
     , ply_heights(ply_heights)
     , ply_groups(ply_groups)
     , triangulations(geometry.n_regions())
-    , curves(triangulations.size() - 1)
+    , curves(geometry.n_interfaces())
+    , between(Topology::chain(triangulations.size()))
   {
     // The rectangle's interfaces: horizontal segments, s = x, nu = (0, 1);
     // their ends lie on Gamma_D where the left or right side is clamped (a
@@ -243,7 +244,7 @@ namespace bilayer
         // Gmsh scenes: the crack end points are vertices of the meshes on
         // the interface (those of the file's crack group are by
         // construction).
-        for (const unsigned int r : {i, i + 1})
+        for (const unsigned int r : between[i])
           for (const double c : ends)
             {
               bool found = false;
@@ -262,7 +263,7 @@ namespace bilayer
       }
     // The crack end points must be mesh vertices: no face on Sigma may
     // straddle one.
-    for (const unsigned int r : {i, i + 1})
+    for (const unsigned int r : between[i])
       for (const auto &cell : triangulations[r].active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (on_interface(face, i))
@@ -423,7 +424,7 @@ namespace bilayer
       {
         auto &list = on_sigma[side];
         for (const auto &cell :
-             triangulations[i + side].active_cell_iterators())
+             triangulations[between[i][side]].active_cell_iterators())
           for (const auto &face : cell->face_iterators())
             if (on_interface(face, i))
               for (const unsigned int v : face->vertex_indices())

@@ -85,8 +85,14 @@ namespace bilayer
               const std::string              &where)
   {
     GmshGroups groups;
-    groups.surface                  = find_regions(g, where);
-    const unsigned int n_interfaces = groups.surface.size() - 1;
+    groups.surface            = find_regions(g, where);
+    unsigned int n_interfaces = 1;
+    for (const auto &[tag, name] : g.curve_names)
+      n_interfaces = std::max(n_interfaces, gmsh_interface_number(name));
+    AssertThrow(n_interfaces <= BoundaryIds::max_interfaces,
+                ExcMessage(where + ": " + std::to_string(n_interfaces) +
+                           " interfaces; a scene may have at most " +
+                           std::to_string(BoundaryIds::max_interfaces)));
     for (const unsigned int i : Layout::indices(n_interfaces))
       {
         const std::array<int, 2> tags = {
@@ -95,9 +101,12 @@ namespace bilayer
         AssertThrow(tags[0] >= 0 || tags[1] >= 0,
                     ExcMessage(where + ": no physical curve named " +
                                interface_names(i) +
-                               " (the glued part of the interface between '" +
-                               gmsh_region_name(i) + "' and '" +
-                               gmsh_region_name(i + 1) + "', its crack)"));
+                               (i == 0 ? " (the glued part of the interface "
+                                         "between 'Omega-' and 'Omega+', its "
+                                         "crack)" :
+                                         " (the interfaces are 'Sigma', "
+                                         "'Sigma 2', 'Sigma 3', ... without "
+                                         "gaps)")));
         groups.interface.push_back(tags);
       }
     for (const auto &[tag, name] : g.curve_names)
@@ -105,17 +114,11 @@ namespace bilayer
         const unsigned int k = gmsh_interface_number(name);
         if (k > 0)
           {
-            AssertThrow(
-              k <= n_interfaces && groups.interface_of(tag) == int(k) - 1,
-              ExcMessage(where + ": the physical curve '" + name + "' " +
-                         (k > n_interfaces ?
-                            "would join '" + gmsh_region_name(k - 1) +
-                              "' and '" + gmsh_region_name(k) +
-                              "', but the file has no physical surface '" +
-                              gmsh_region_name(k) + "'" :
-                            "names interface " + std::to_string(k) +
-                              ", whose curves are " + interface_names(k - 1)) +
-                         " (interface K joins region K and region K + 1)"));
+            AssertThrow(groups.interface_of(tag) == int(k) - 1,
+                        ExcMessage(where + ": the physical curve '" + name +
+                                   "' names interface " + std::to_string(k) +
+                                   ", whose curves are " +
+                                   interface_names(k - 1)));
           }
         else
           AssertThrow(std::find(part_names.begin(), part_names.end(), name) !=
@@ -209,16 +212,14 @@ namespace bilayer
   /// cells of the two regions each joins (@p edges).
   InterfaceEdges
   shared_edges(const GmshMesh    &g,
-               const GmshGroups  &groups,
+               GmshGroups        &groups,
                const RegionEdges &edges,
                const std::string &where)
   {
     const auto edge_text = [&](const GmshEdge &e) {
       return point_text(0.5 * (g.nodes[e.first] + g.nodes[e.second]));
     };
-    // Interface i is the edges regions i and i + 1 share, and nothing
-    // else is shared; every other edge of a region belongs to one cell or
-    // two.
+    // Every edge of a region belongs to one cell or two.
     for (const unsigned int r : Layout::indices(edges.size()))
       {
         const std::string name = gmsh_region_name(r);
@@ -235,29 +236,70 @@ namespace bilayer
     for (const auto &e : g.elements)
       if (const int i = groups.interface_of(e.physical); e.type == 1 && i >= 0)
         on_interface[i][gmsh_edge(e.nodes[0], e.nodes[1])] = &e;
-    for (const unsigned int i : Layout::indices(on_interface.size()))
-      for (const auto &[e, element] : on_interface[i])
-        {
-          const auto m = edges[i].find(e), p = edges[i + 1].find(e);
-          AssertThrow(
-            m != edges[i].end() && p != edges[i + 1].end() && m->second == 1 &&
-              p->second == 1,
-            ExcMessage(
-              where + ": the '" +
-              gmsh_interface_name(i,
-                                  element->physical == groups.interface[i][1]) +
-              "' edge at " + edge_text(e) +
-              " is not a boundary edge of both '" + gmsh_region_name(i) +
-              "' and '" + gmsh_region_name(i + 1) +
-              "': an interface must separate the two regions it "
-              "joins (curves shared by both surfaces)"));
-        }
-    // The regions of each edge: two regions share only the edges of the
-    // interface between them.
+    // The regions of each edge.
     std::map<GmshEdge, std::vector<unsigned int>> regions_of;
     for (const unsigned int r : Layout::indices(edges.size()))
       for (const auto &[e, n] : edges[r])
         regions_of[e].push_back(r);
+    // Interface i joins the two regions whose cells share its edges: every
+    // edge of it a boundary edge of the same two regions.
+    groups.between.assign(on_interface.size(), {{0, 0}});
+    for (const unsigned int i : Layout::indices(on_interface.size()))
+      {
+        AssertThrow(!on_interface[i].empty(),
+                    ExcMessage(where + ": the physical curves " +
+                               interface_names(i) + " have no line elements"));
+        bool first = true;
+        for (const auto &[e, element] : on_interface[i])
+          {
+            const std::string name =
+              gmsh_interface_name(i,
+                                  element->physical == groups.interface[i][1]);
+            const auto it = regions_of.find(e);
+            AssertThrow(it != regions_of.end() && it->second.size() == 2 &&
+                          edges[it->second[0]].at(e) == 1 &&
+                          edges[it->second[1]].at(e) == 1,
+                        ExcMessage(
+                          where + ": the '" + name + "' edge at " +
+                          edge_text(e) +
+                          " is not a boundary edge of two regions: an "
+                          "interface must separate the two regions it joins "
+                          "(curves shared by both surfaces)"));
+            const std::array<unsigned int, 2> pair = {
+              {it->second[0], it->second[1]}};
+            if (first)
+              groups.between[i] = pair;
+            first = false;
+            AssertThrow(
+              pair == groups.between[i],
+              ExcMessage(
+                where + ": the '" + name + "' edge at " + edge_text(e) +
+                " separates '" + gmsh_region_name(pair[0]) + "' and '" +
+                gmsh_region_name(pair[1]) + "', other edges of interface " +
+                std::to_string(i + 1) + " '" +
+                gmsh_region_name(groups.between[i][0]) + "' and '" +
+                gmsh_region_name(groups.between[i][1]) +
+                "': an interface joins two regions (give the curves between "
+                "other regions an interface of their own, 'Sigma K')"));
+          }
+      }
+    AssertThrow(groups.between[0] == (std::array<unsigned int, 2>{{0, 1}}),
+                ExcMessage(where + ": Sigma separates '" +
+                           gmsh_region_name(groups.between[0][0]) + "' and '" +
+                           gmsh_region_name(groups.between[0][1]) +
+                           "'; Sigma is the interface between 'Omega-' and "
+                           "'Omega+'"));
+    // Two regions share only the edges of the interfaces between them;
+    // every region meets another along an interface.
+    std::vector<bool> joined(edges.size(), false);
+    for (const auto &pair : groups.between)
+      joined[pair[0]] = joined[pair[1]] = true;
+    for (const unsigned int r : Layout::indices(edges.size()))
+      AssertThrow(joined[r],
+                  ExcMessage(where + ": the region '" + gmsh_region_name(r) +
+                             "' lies on no interface: every region meets "
+                             "another along an interface ('Sigma K', "
+                             "'crack K')"));
     for (const auto &[e, regions] : regions_of)
       if (regions.size() > 1)
         {
@@ -266,19 +308,16 @@ namespace bilayer
                                  " is an edge of " +
                                  std::to_string(regions.size()) +
                                  " regions (overlapping cells)"));
-          const unsigned int a = regions[0], b = regions[1];
-          AssertThrow(
-            b == a + 1 && on_interface[a].count(e) == 1,
-            ExcMessage(
-              where + ": '" + gmsh_region_name(a) + "' and '" +
-              gmsh_region_name(b) + "' share the edge at " + edge_text(e) +
-              (b == a + 1 ?
-                 ", which is in neither '" + gmsh_interface_name(a, false) +
-                   "' nor '" + gmsh_interface_name(a, true) + "'" :
-                 std::string(": a region meets only the regions "
-                             "next to it in the order 'Omega-', "
-                             "'Omega+', 'Region 3', ..., along "
-                             "the interface between them"))));
+          bool on_one = false;
+          for (const auto &interface : on_interface)
+            on_one = on_one || interface.count(e) == 1;
+          AssertThrow(on_one,
+                      ExcMessage(
+                        where + ": '" + gmsh_region_name(regions[0]) +
+                        "' and '" + gmsh_region_name(regions[1]) +
+                        "' share the edge at " + edge_text(e) +
+                        ", which is in no interface's curves ('Sigma', "
+                        "'crack', 'Sigma K', 'crack K')"));
         }
     return on_interface;
   }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace bilayer
@@ -309,8 +310,53 @@ namespace bilayer
     }
 
 
-    /// Whether the normal of @p curve, interface @p i, points into region
-    /// i (then the curve is to be reversed).
+    /// The nodes of the outer boundary: those of the edges of one cell
+    /// (@p edges: the edges of each region with their cells).
+    std::set<unsigned int>
+    outer_nodes(const RegionEdges &edges)
+    {
+      std::map<GmshEdge, unsigned int> cells;
+      for (const auto &region : edges)
+        for (const auto &[e, n] : region)
+          cells[e] += n;
+      std::set<unsigned int> outer;
+      for (const auto &[e, n] : cells)
+        if (n == 1)
+          outer.insert({e.first, e.second});
+      return outer;
+    }
+
+
+    /// An end of interface @p i inside the specimen (not in @p outer) is a
+    /// point where it meets other interfaces (three regions or more meet
+    /// there, a cross-point): a crack piece that reaches it (@p mouths) is
+    /// refused, a crack ends before.
+    void
+    check_cross_points(const GmshMesh               &g,
+                       const SigmaChain             &sigma,
+                       const std::array<bool, 2>    &mouths,
+                       const std::set<unsigned int> &outer,
+                       const unsigned int            i,
+                       const std::string            &where)
+    {
+      for (const unsigned int k : {0u, 1u})
+        {
+          const unsigned int node =
+            k == 0 ? sigma.nodes.front() : sigma.nodes.back();
+          AssertThrow(!mouths[k] || outer.count(node) == 1,
+                      ExcMessage(where + ": a piece of '" +
+                                 gmsh_interface_name(i, true) + "' reaches " +
+                                 point_text(g.nodes[node]) +
+                                 ", where its interface meets other "
+                                 "interfaces inside the specimen: a crack "
+                                 "must end before a point where three "
+                                 "regions meet"));
+        }
+    }
+
+
+    /// Whether the normal of @p curve, interface @p i, points into its
+    /// first region (then the curve is to be reversed).
     bool
     against_orientation(const GmshMesh       &g,
                         const GmshGroups     &groups,
@@ -320,13 +366,15 @@ namespace bilayer
     {
       const auto &chain   = sigma.edges;
       const auto &surface = groups.surface;
-      // Orientation: the normal points out of region i (Sigma: Omega-).
+      // Orientation: the normal points out of the first region of the
+      // interface (Sigma: Omega-).
       {
         const auto    &first = *chain.front();
         const Point<2> mid =
           0.5 * (g.nodes[first.nodes[0]] + g.nodes[first.nodes[1]]);
         for (const auto &e : g.elements)
-          if ((e.type == 2 || e.type == 3) && e.physical == surface[i] &&
+          if ((e.type == 2 || e.type == 3) &&
+              e.physical == surface[groups.between[i][0]] &&
               std::count(e.nodes.begin(), e.nodes.end(), first.nodes[0]) > 0 &&
               std::count(e.nodes.begin(), e.nodes.end(), first.nodes[1]) > 0)
             {
@@ -360,12 +408,15 @@ namespace bilayer
     // The groups, every cell and line element in exactly one, each
     // interface the edges its two regions share, the boundary parts on the
     // outer boundary, a conforming mesh.
-    const GmshGroups groups = find_groups(g, geometry.parts.names, where);
-    AssertThrow(groups.surface.size() == curves.size() + 1,
-                ExcMessage(where + ": the file changed while it was read (" +
-                           std::to_string(groups.surface.size()) +
-                           " regions, " + std::to_string(curves.size() + 1) +
-                           " before)"));
+    GmshGroups groups = find_groups(g, geometry.parts.names, where);
+    AssertThrow(groups.surface.size() == triangulations.size() &&
+                  groups.interface.size() == curves.size(),
+                ExcMessage(
+                  where + ": the file changed while it was read (" +
+                  std::to_string(groups.surface.size()) + " regions and " +
+                  std::to_string(groups.interface.size()) + " interfaces, " +
+                  std::to_string(triangulations.size()) + " and " +
+                  std::to_string(curves.size()) + " before)"));
     check_elements(g, groups, where);
     RegionEdges edges;
     for (const int surface : groups.surface)
@@ -390,6 +441,8 @@ namespace bilayer
           arc_radii[entity]   = circle->second;
         }
 
+    const std::set<unsigned int> outer = outer_nodes(edges);
+
     // Each interface: its pieces, crack pieces, clamped ends and
     // orientation.
     for (const unsigned int i : Layout::indices(curves.size()))
@@ -403,8 +456,9 @@ namespace bilayer
         // An edge crack's mouth must stay free. --check-geometry takes
         // every part as clamped but those at a mouth, which it names
         // instead.
-        const std::array<bool, 2> mouths  = crack_mouths(curve.crack(), curve);
-        std::vector<bool>         clamped = geometry.clamped;
+        const std::array<bool, 2> mouths = crack_mouths(curve.crack(), curve);
+        check_cross_points(g, chain, mouths, outer, i, where);
+        std::vector<bool> clamped = geometry.clamped;
         if (geometry.free_parts_at_crack_mouths)
           for (const unsigned int k : {0u, 1u})
             if (mouths[k])
@@ -419,8 +473,8 @@ namespace bilayer
                                               groups,
                                               geometry.parts.names,
                                               clamped,
-                                              edges[i],
-                                              edges[i + 1],
+                                              edges[groups.between[i][0]],
+                                              edges[groups.between[i][1]],
                                               chain);
         check_crack_mouths(g,
                            groups,
@@ -432,9 +486,12 @@ namespace bilayer
                            i,
                            where);
         curve.set_clamped_ends(clamped_end);
+        curve.set_inner_ends({{outer.count(chain.nodes.front()) == 0,
+                               outer.count(chain.nodes.back()) == 0}});
         if (against_orientation(g, groups, chain, curve, i))
           curve.reverse();
       }
-    gmsh = mesh_ptr;
+    between = groups.between;
+    gmsh    = mesh_ptr;
   }
 } // namespace bilayer

@@ -280,14 +280,16 @@ namespace bilayer
       cracks.push_back(
         {start + (start + length - c.end), start + (start + length - c.start)});
     std::reverse(cracks.begin(), cracks.end());
-    // The clamped ends, kept across the assignment below (which resets
-    // them) and swapped: the end at s_begin is the old end at s_end.
+    // The clamped and inner ends, kept across the assignment below (which
+    // resets them) and swapped: the end at s_begin is the old end at s_end.
     auto clamped = clamped_ends;
     for (auto &ends : clamped)
       std::swap(ends[0], ends[1]);
-    *this = InterfaceCurve(reversed, start);
+    const std::array<bool, 2> inner = {{inner_ends[1], inner_ends[0]}};
+    *this                           = InterfaceCurve(reversed, start);
     set_crack(CrackSet(cracks, tolerance()));
     clamped_ends = clamped;
+    inner_ends   = inner;
   }
 
 
@@ -336,6 +338,15 @@ namespace bilayer
               << "]): some of Sigma must stay glued";
             return m.str();
           }
+        for (const unsigned int k : {0u, 1u})
+          if ((k == 0 ? at_begin : at_end) && inner_ends[k])
+            {
+              m << " reaches the end s = " << (k == 0 ? s_begin() : s_end())
+                << ", a cross-point inside the specimen where other "
+                   "interfaces meet it: a crack must end before a point "
+                   "where three regions meet";
+              return m.str();
+            }
         for (const unsigned int k : {0u, 1u})
           if ((k == 0 ? at_begin : at_end) && end_on_gamma_d(k))
             {

@@ -176,6 +176,9 @@ namespace bilayer
                   "Physical Curve(\"Sigma\"), ... (docs/geometry.md)"));
     GmshGroupNames result;
     for (const auto &[tag, name] : names)
+      result.interfaces =
+        std::max(result.interfaces, gmsh_interface_number(name));
+    for (const auto &[tag, name] : names)
       if (gmsh_interface_number(name) == 0 &&
           std::find(result.parts.begin(), result.parts.end(), name) ==
             result.parts.end())

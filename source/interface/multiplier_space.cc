@@ -97,7 +97,7 @@ namespace bilayer
           // share the region's mesh, so its trace on Sigma, with the smaller
           // of the two degrees.
           choice[b] = {
-            traces[c.interface][Topology::side(c.interface, c.region)],
+            traces[c.interface][topology.side(c.interface, c.region)],
             std::min(
               degrees[static_cast<unsigned int>(topology.layer(c.first))],
               degrees[static_cast<unsigned int>(topology.layer(c.second))])};
@@ -137,21 +137,52 @@ namespace bilayer
 
 
     /// Whether the coordinate @p s is an end of its interface @p curve on
-    /// Gamma_D for the coupling @p c.
+    /// Gamma_D for the coupling @p c, whose region lies on side @p side.
     bool
     end_on_gamma_d(const InterfaceCurve &curve,
                    const double          s,
-                   const Coupling       &c)
+                   const Coupling       &c,
+                   const unsigned int    side)
     {
       // For the gluing across Sigma where both sides' end nodes are clamped,
       // for the gluing of the layers on one subdomain where that subdomain's
       // end node is clamped. Where only one side of Sigma is clamped the end
       // keeps its multiplier: its row couples the free dof of the other side
       // to the prescribed value.
-      return c.kind == Coupling::Kind::across ?
-               curve.on_gamma_d(s) :
-               curve.on_gamma_d(s, Topology::side(c.interface, c.region));
+      return c.kind == Coupling::Kind::across ? curve.on_gamma_d(s) :
+                                                curve.on_gamma_d(s, side);
     }
+
+
+    /// The sets of a union-find over the elements 0 ... n - 1.
+    class Connections
+    {
+    public:
+      explicit Connections(const unsigned int n)
+        : parent(n)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          parent[i] = i;
+      }
+      unsigned int
+      find(unsigned int i)
+      {
+        while (parent[i] != i)
+          i = parent[i] = parent[parent[i]];
+        return i;
+      }
+      /// Join the sets of @p i and @p j; false if they were one.
+      bool
+      join(const unsigned int i, const unsigned int j)
+      {
+        const unsigned int a = find(i), b = find(j);
+        parent[a] = b;
+        return a != b;
+      }
+
+    private:
+      std::vector<unsigned int> parent;
+    };
   } // namespace
 
 
@@ -188,8 +219,109 @@ namespace bilayer
         compute_dual_basis(*mesh.fe, mesh.degree, mesh.dual);
       }
 
+    drop_cross_point_ends(curves);
     build_set(curves, contact);
     join_end_rows(curves);
+  }
+
+
+  bool
+  MultiplierSpace::end_removed(const unsigned int    a,
+                               const unsigned int    b,
+                               const InterfaceCurve &curve) const
+  {
+    const Coupling c = topology_.coupling(b);
+    return (a == 0 && dropped_ends[b][0]) ||
+           (a + 1 == n_nodes(b) && dropped_ends[b][1]) ||
+           end_on_gamma_d(curve,
+                          meshes[b].node_x[a],
+                          c,
+                          topology_.side(c.interface, c.region));
+  }
+
+
+  void
+  MultiplierSpace::drop_cross_point_ends(
+    const std::vector<InterfaceCurve> &curves)
+  {
+    dropped_ends.assign(meshes.size(), {{false, false}});
+    // The ends of the blocks with nodes, and their points.
+    struct End
+    {
+      unsigned int b, k;
+      Point<2>     point;
+    };
+    std::vector<End> ends;
+    for (const unsigned int b : Layout::indices(meshes.size()))
+      if (n_nodes(b) > 0)
+        for (const unsigned int k : {0u, 1u})
+          ends.push_back(
+            {b,
+             k,
+             curves[topology_.coupling(b).interface].point(
+               k == 0 ? meshes[b].node_x.front() : meshes[b].node_x.back())});
+    const double      tol = curves[0].tolerance();
+    std::vector<bool> seen(ends.size(), false);
+    for (unsigned int e = 0; e < ends.size(); ++e)
+      {
+        if (seen[e])
+          continue;
+        // The ends at the point of end e, in block order.
+        std::vector<unsigned int> here;
+        std::vector<unsigned int> interfaces;
+        for (unsigned int f = e; f < ends.size(); ++f)
+          if (!seen[f] && ends[f].point.distance(ends[e].point) <= tol)
+            {
+              seen[f] = true;
+              here.push_back(f);
+              const unsigned int i = topology_.coupling(ends[f].b).interface;
+              if (std::count(interfaces.begin(), interfaces.end(), i) == 0)
+                interfaces.push_back(i);
+            }
+        if (interfaces.size() < 2)
+          continue;
+        // The copies of the point: one per subproblem, and Gamma_D (the
+        // last element).
+        const unsigned int ground = topology_.n_subproblems();
+        Connections        connected(ground + 1);
+        for (const unsigned int f : here)
+          {
+            const unsigned int i = topology_.coupling(ends[f].b).interface;
+            const double s = ends[f].k == 0 ? meshes[ends[f].b].node_x.front() :
+                                              meshes[ends[f].b].node_x.back();
+            for (const unsigned int side : {0u, 1u})
+              if (curves[i].on_gamma_d(s, side))
+                for (const unsigned int l :
+                     Layout::indices(topology_.n_slots()))
+                  connected.join(ground,
+                                 topology_.index(static_cast<Layer>(l),
+                                                 topology_.regions_of(
+                                                   i)[side]));
+          }
+        // A block whose traces both lie in its multiplier space ties the
+        // point's copies (its rows there are nodal jumps, or a mass matrix
+        // times them): where the nodal blocks before it or Gamma_D connect
+        // its two subproblems, its end is implied exactly. A mortar block (a
+        // side not nodal) ties weighted means near the point; around a
+        // cycle these are dependent too, through the traces' higher modes
+        // (seen with layers of degrees 2 and 1 at a T-joint), and its end's
+        // basis function joins its neighbour's, as at Gamma_D (the mortar
+        // modification at cross-points: join_end_rows()). So the nodal
+        // blocks come first, and a cycle is broken at a mortar block where
+        // it has one.
+        for (const bool nodal_pass : {true, false})
+          for (const unsigned int f : here)
+            {
+              const unsigned int b = ends[f].b;
+              const unsigned int a = ends[f].k == 0 ? 0 : n_nodes(b) - 1;
+              if ((meshes[b].nodal[0] && meshes[b].nodal[1]) != nodal_pass ||
+                  end_removed(a, b, curves[topology_.coupling(b).interface]))
+                continue;
+              const Coupling c = topology_.coupling(b);
+              if (!connected.join(c.first, c.second))
+                dropped_ends[b][ends[f].k] = true;
+            }
+      }
   }
 
 
@@ -257,7 +389,7 @@ namespace bilayer
       {
         const unsigned int s = j == 0 ? c.first : c.second;
         const auto        &trace =
-          traces[c.interface][Topology::side(c.interface, topology_.region(s))];
+          traces[c.interface][topology_.side(c.interface, topology_.region(s))];
         const unsigned int degree_s =
           degrees[static_cast<unsigned int>(topology_.layer(s))];
         bool        inside = degree_s <= mesh.degree;
@@ -301,7 +433,7 @@ namespace bilayer
           const bool across   = coupling.kind == Coupling::Kind::across;
           const bool on_crack = across && curve.crack().contains(x);
           crack_nodes[b][a]   = on_crack;
-          if (end_on_gamma_d(curve, x, coupling))
+          if (end_removed(a, b, curve))
             continue;
           for (unsigned int c = 0; c < Layout::n_components; ++c)
             set_.set_glued(b, Layout::entry(a, c), p);
@@ -358,9 +490,7 @@ namespace bilayer
         for (const auto &[end, neighbour] :
              {std::make_pair(0u, mesh.degree),
               std::make_pair(n - 1, n - 1 - mesh.degree)})
-          if (end_on_gamma_d(curves[topology_.coupling(b).interface],
-                             mesh.node_x[end],
-                             topology_.coupling(b)))
+          if (end_removed(end, b, curves[topology_.coupling(b).interface]))
             {
               mesh.row[end] = neighbour;
               mesh.node_weight[neighbour] += mesh.node_mass[end];

@@ -80,11 +80,12 @@ namespace bilayer
       for (const unsigned int side : {0u, 1u})
         {
           auto &f = faces[i][side];
-          f       = sigma_faces(subs[topology.index(Layer::first, i + side)]
-                            ->dof_handler()
-                            .get_triangulation(),
-                          curves_[i],
-                          i);
+          f       = sigma_faces(
+            subs[topology.index(Layer::first, topology.regions_of(i)[side])]
+              ->dof_handler()
+              .get_triangulation(),
+            curves_[i],
+            i);
           auto &t = traces[i][side];
           t.clear();
           for (const auto &face : f)
@@ -163,7 +164,7 @@ namespace bilayer
               else
                 for_gauss_points(
                   merge_breakpoints(space.breakpoints(b),
-                                    traces[c.interface][Topology::side(
+                                    traces[c.interface][topology.side(
                                       c.interface, topology.region(s))],
                                     tol),
                   [&](const double x, const double w) {
@@ -244,7 +245,7 @@ namespace bilayer
     const unsigned int       n_rows = frames.size();
     const ElasticSubproblem &sub    = *subproblems[s];
     const auto              &fe     = sub.fe();
-    const auto &sfaces = faces[i][Topology::side(i, topology.region(s))];
+    const auto         &sfaces = faces[i][topology.side(i, topology.region(s))];
     std::vector<double> starts;
     for (const auto &face : sfaces)
       starts.push_back(face.x0);

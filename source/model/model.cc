@@ -134,6 +134,9 @@ namespace bilayer
                   << "' of Geometry/Gmsh file is not among Materials/Layer "
                      "k/Ply groups: its cells take their region's law\n";
       }
+    regions_and_layers = Topology(domain.n_regions(),
+                                  scene.materials.n_layers,
+                                  domain.interface_regions());
     describe_meshes(record);
     update_tips(record);
   }

@@ -49,13 +49,14 @@ namespace bilayer
     for (const unsigned int j : Layout::indices(curves.size()))
       if (j != i)
         others.push_back(curves[j]);
-    return crack_tips(curve,
-                      {{&domain.triangulation(i),
-                        &domain.triangulation(i + 1)}},
-                      scene.fracture.support_radius,
-                      i,
-                      others,
-                      material_faces);
+    return crack_tips(
+      curve,
+      {{&domain.triangulation(regions_and_layers.regions_of(i)[0]),
+        &domain.triangulation(regions_and_layers.regions_of(i)[1])}},
+      scene.fracture.support_radius,
+      i,
+      others,
+      material_faces);
   }
 
 
@@ -102,17 +103,18 @@ namespace bilayer
         // On the meshes of the subproblems (the later states of a study on
         // one mesh), from their cell extents.
         // (The two regions of the tip's interface.)
-        const unsigned int             i = tip.interface;
+        const auto &regions = regions_and_layers.regions_of(tip.interface);
         const ElasticSubproblem *const minus =
-          subproblems[regions_and_layers.index(Layer::first, i)].get();
+          subproblems[regions_and_layers.index(Layer::first, regions[0])].get();
         const ElasticSubproblem *const plus =
-          subproblems[regions_and_layers.index(Layer::first, i + 1)].get();
+          subproblems[regions_and_layers.index(Layer::first, regions[1])].get();
         const TipCells cells =
           minus != nullptr && plus != nullptr ?
             support_cells(tip,
                           {{&minus->cell_extents(), &plus->cell_extents()}}) :
-            support_cells(
-              tip, {{&domain.triangulation(i), &domain.triangulation(i + 1)}});
+            support_cells(tip,
+                          {{&domain.triangulation(regions[0]),
+                            &domain.triangulation(regions[1])}});
         tip_cell_sizes[t] = cells.size;
         const double R    = tip.support_radius;
         if (support_holds(R, cells.size))
@@ -130,8 +132,10 @@ namespace bilayer
             << tip.free_distance << " to the nearest obstacle of theta)";
         m << " at the crack tip at "
           << tip_position(tip, scene.geometry.gmsh_file.empty()) << " holds "
-          << R / cells.size << " cells of the mesh of Omega"
-          << (cells.mesh == 0 ? "-" : "+")
+          << R / cells.size << " cells of the mesh of "
+          << (rectangle ?
+                std::string(regions[cells.mesh] == 0 ? "Omega-" : "Omega+") :
+                gmsh_region_name(regions[cells.mesh]))
           << " along its radius (cells of size " << cells.size
           << " at the tip on cycle " << record.cycle;
         if (uniform && n_later > 0)

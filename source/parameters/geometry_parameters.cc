@@ -37,7 +37,10 @@ namespace bilayer
                              "'Traction on NAME'): rename it in the file "
                              "without ',', '|', '=', '#', '\\' and outer "
                              "blanks"));
-    return {names, true, gmsh_region_count(groups.surfaces)};
+    return {names,
+            true,
+            gmsh_region_count(groups.surfaces),
+            std::max(1u, groups.interfaces)};
   }
 
 

@@ -88,8 +88,10 @@ namespace bilayer
     for (const unsigned int l : Layout::indices(topology.n_slots()))
       {
         const ElasticSubproblem
-          *minus = subproblems[topology.index(static_cast<Layer>(l), i)],
-          *plus  = subproblems[topology.index(static_cast<Layer>(l), i + 1)];
+          *minus = subproblems[topology.index(static_cast<Layer>(l),
+                                              topology.regions_of(i)[0])],
+          *plus  = subproblems[topology.index(static_cast<Layer>(l),
+                                             topology.regions_of(i)[1])];
         if (minus == nullptr || plus == nullptr)
           continue;
         const SymmetricTensor<4, 2> C_minus =

@@ -262,7 +262,7 @@ namespace bilayer
     const IndexSet on_sigma =
       DoFTools::extract_boundary_dofs(dofs,
                                       ComponentMask(),
-                                      BoundaryIds::interfaces(n_regions));
+                                      BoundaryIds::interfaces());
     trace_dofs_.assign(on_sigma.begin(), on_sigma.end());
     extents.reinit(dofs);
     if (!owned())

@@ -54,11 +54,12 @@ namespace bilayer
 
     /// The ids of the interfaces of a scene of @p n_regions regions (the
     /// faces of the subproblems' traces).
+    /// The ids of every interface a scene may have.
     inline std::set<dealii::types::boundary_id>
-    interfaces(const unsigned int n_regions)
+    interfaces()
     {
       std::set<dealii::types::boundary_id> ids;
-      for (unsigned int i = 0; i + 1 < n_regions; ++i)
+      for (unsigned int i = 0; i < max_interfaces; ++i)
         ids.insert(interface(i));
       return ids;
     }

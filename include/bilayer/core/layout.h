@@ -189,39 +189,60 @@ namespace bilayer
     /// The interface that carries the block's nodes (Sigma: 0): the one
     /// it couples across, or the one along which it glues the layers.
     unsigned int interface = 0;
-    /// Across an interface: the region below it; gluing: the region whose
+    /// Across an interface: the first of its regions; gluing: the region whose
     /// layers it glues.
     unsigned int region = 0;
     unsigned int first = 0, second = 0;
   };
 
   /**
-   * The decomposition as data: R regions of the plane, stacked from the
-   * bottom and separated by the R - 1 interfaces (Sigma is interface 0,
-   * between region 0 = Omega- and region 1 = Omega+), and N layers through
-   * the thickness. Subproblem (layer l, region r) has the index R l + r;
-   * the multiplier blocks are first the R - 1 blocks across the interfaces
-   * (block i across interface i), then the gluing blocks of each layer
-   * k >= 2: one per region and interface on its boundary, in the order
-   * (region 0, interface 0), (region 1, interface 0), (region 1,
-   * interface 1), (region 2, interface 1), ... (pair j: region
-   * (j + 1) / 2, interface j / 2; block R - 1 + (k - 2) 2 (R - 1) + j).
-   * The layers are glued along every interface (the paper's gluing along
-   * Sigma, on each curve that cuts the cross-section). A two-region scene
-   * keeps at least
-   * two layer slots (a one-layer scene's layer 2 absent: null subproblems,
-   * blocks without nodes), so u- = 0, u+ = 1, v- = 2, v+ = 3 as
-   * Layout::index() numbers them.
+   * The decomposition as data: R regions of the plane and the interfaces
+   * between them, each joining two regions (interface i: the regions
+   * regions_of(i), the lower number first; by default a chain stacked from
+   * the bottom, interface i between regions i and i + 1, Sigma = interface
+   * 0 between region 0 = Omega- and region 1 = Omega+), and N layers
+   * through the thickness. Subproblem (layer l, region r) has the index
+   * R l + r; the multiplier blocks are first the blocks across the
+   * interfaces (block i across interface i), then the gluing blocks of each
+   * layer k >= 2: two per interface, one for each region it joins, in the
+   * order (interface 0, its first region), (interface 0, its second
+   * region), (interface 1, its first region), ... (pair j: interface j / 2,
+   * side j % 2; block I + (k - 2) 2 I + j with I interfaces). The layers
+   * are glued along every interface (the paper's gluing along Sigma, on
+   * each curve that cuts the cross-section). A two-region scene keeps at
+   * least two layer slots (a one-layer scene's layer 2 absent: null
+   * subproblems, blocks without nodes), so u- = 0, u+ = 1, v- = 2, v+ = 3
+   * as Layout::index() numbers them.
    */
   class Topology
   {
   public:
     explicit Topology(const unsigned int regions = 2,
                       const unsigned int layers  = 2)
+      : Topology(regions, layers, chain(regions))
+    {}
+
+    /// The regions @p regions joined by the interfaces @p between (the two
+    /// regions of each, the lower number first).
+    Topology(const unsigned int                       regions,
+             const unsigned int                       layers,
+             std::vector<std::array<unsigned int, 2>> between)
       : regions(regions)
       , slots(regions == Layout::n_subdomains ? Layout::n_slots(layers) :
                                                 layers)
+      , between(std::move(between))
     {}
+
+    /// The interfaces of a chain of @p regions regions stacked from the
+    /// bottom: interface i between regions i and i + 1.
+    static std::vector<std::array<unsigned int, 2>>
+    chain(const unsigned int regions)
+    {
+      std::vector<std::array<unsigned int, 2>> pairs;
+      for (unsigned int i = 0; i + 1 < regions; ++i)
+        pairs.push_back({{i, i + 1}});
+      return pairs;
+    }
 
     unsigned int
     n_regions() const
@@ -231,7 +252,20 @@ namespace bilayer
     unsigned int
     n_interfaces() const
     {
-      return regions - 1;
+      return between.size();
+    }
+    /// The two regions that interface @p i joins, the lower number first
+    /// (side 0 and side 1 of the interface).
+    const std::array<unsigned int, 2> &
+    regions_of(const unsigned int i) const
+    {
+      return between[i];
+    }
+    /// Whether region @p r lies on one side of interface @p i.
+    bool
+    joins(const unsigned int i, const unsigned int r) const
+    {
+      return between[i][0] == r || between[i][1] == r;
     }
     /// The side whose material (Materials/Layer k/Omega- or Omega+) region
     /// @p r takes: Omega- below Sigma, Omega+ for every region above it.
@@ -271,7 +305,8 @@ namespace bilayer
                const unsigned int i) const
     {
       return n_interfaces() +
-             n_glue_blocks() * (static_cast<unsigned int>(layer) - 1) + i + r;
+             n_glue_blocks() * (static_cast<unsigned int>(layer) - 1) + 2 * i +
+             side(i, r);
     }
     unsigned int
     index(const Layer layer, const unsigned int region) const
@@ -297,9 +332,9 @@ namespace bilayer
         {
           c.kind      = Coupling::Kind::across;
           c.interface = b;
-          c.region    = b;
-          c.first     = index(Layer::first, b);
-          c.second    = index(Layer::first, b + 1);
+          c.region    = between[b][0];
+          c.first     = index(Layer::first, between[b][0]);
+          c.second    = index(Layer::first, between[b][1]);
           return c;
         }
       const unsigned int g     = b - n_interfaces();
@@ -307,7 +342,7 @@ namespace bilayer
       const unsigned int j     = g % n_glue_blocks();
       c.kind                   = Coupling::Kind::glue;
       c.interface              = j / 2;
-      c.region                 = (j + 1) / 2;
+      c.region                 = between[j / 2][j % 2];
       c.first                  = index(static_cast<Layer>(upper - 1), c.region);
       c.second                 = index(static_cast<Layer>(upper), c.region);
       return c;
@@ -318,12 +353,12 @@ namespace bilayer
     {
       return b < n_interfaces();
     }
-    /// The side of interface @p i that region @p r lies on: 0 below (Omega-
-    /// of Sigma), 1 above.
-    static unsigned int
-    side(const unsigned int i, const unsigned int r)
+    /// The side of interface @p i that region @p r lies on: 0 for the
+    /// first of its regions (Omega- of Sigma), 1 for the second.
+    unsigned int
+    side(const unsigned int i, const unsigned int r) const
     {
-      return r - i;
+      return r == between[i][0] ? 0 : 1;
     }
     /// "u_minus", "u_plus", "v_minus", ..., "w3_plus" (two regions), or
     /// "u_1", "u_2", ... (layer 1 of the regions 1, 2, ...): the subproblem
@@ -347,8 +382,9 @@ namespace bilayer
     }
 
   private:
-    unsigned int regions;
-    unsigned int slots;
+    unsigned int                             regions;
+    unsigned int                             slots;
+    std::vector<std::array<unsigned int, 2>> between;
   };
 
   /// One value per subproblem, indexed by Topology::index(): sized

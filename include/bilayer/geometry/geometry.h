@@ -177,6 +177,16 @@ namespace bilayer
       return curves;
     }
 
+    /// The two regions each interface joins, the lower number first (side
+    /// 0 and side 1 of its curve): the rectangle's bands a chain from the
+    /// bottom, a Gmsh scene's the regions whose cells share the
+    /// interface's edges (known once the meshes are built).
+    const std::vector<std::array<unsigned int, 2>> &
+    interface_regions() const
+    {
+      return between;
+    }
+
     /**
      * Replace the crack gamma_c by @p crack on the present meshes (the one
      * source of the crack: the multiplier spaces, the coupling, the
@@ -282,8 +292,9 @@ namespace bilayer
     /// group, by their sorted Gmsh nodes.
     std::map<std::vector<unsigned int>, dealii::types::material_id> ply_cells;
     /// One mesh per region, one curve per interface.
-    std::vector<dealii::Triangulation<2>> triangulations;
-    std::vector<InterfaceCurve>           curves;
+    std::vector<dealii::Triangulation<2>>    triangulations;
+    std::vector<InterfaceCurve>              curves;
+    std::vector<std::array<unsigned int, 2>> between;
     /// The Gmsh scene (null for the rectangle and mesh files).
     std::shared_ptr<const GmshMesh> gmsh;
     /// Centres of the circular Gmsh curves, by entity tag.

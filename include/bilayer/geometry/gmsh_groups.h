@@ -28,6 +28,9 @@ namespace bilayer
     /// Per interface (Sigma first): the glued part and the crack (-1
     /// where absent).
     std::vector<std::array<int, 2>> interface;
+    /// Per interface: the two regions it joins, the lower number first
+    /// (found by shared_edges()).
+    std::vector<std::array<unsigned int, 2>> between;
 
     /// The interface of the physical curve @p tag, or -1 (a boundary
     /// part).
@@ -71,10 +74,11 @@ namespace bilayer
                  const std::string &where);
 
   /// The edges of the interfaces, checked to be the edges shared by the
-  /// cells of the two regions each joins (@p edges).
+  /// cells of the two regions each joins (@p edges), and those regions
+  /// (GmshGroups::between).
   InterfaceEdges
   shared_edges(const GmshMesh    &g,
-               const GmshGroups  &groups,
+               GmshGroups        &groups,
                const RegionEdges &edges,
                const std::string &where);
 

@@ -219,6 +219,18 @@ namespace bilayer
     }
 
     /**
+     * Which ends of the curve (0 at s_begin, 1 at s_end) lie inside the
+     * specimen: cross-points, where it meets other interfaces (three
+     * regions or more meet there). A crack must not reach them
+     * (crack_refusal()).
+     */
+    void
+    set_inner_ends(const std::array<bool, 2> &inner)
+    {
+      inner_ends = inner;
+    }
+
+    /**
      * Whether the point s of Sigma is an end of Sigma on Gamma_D for the
      * gluing across Sigma: the end node is clamped on both sides, so that
      * the jump there is fixed by the Dirichlet data alone.
@@ -262,6 +274,7 @@ namespace bilayer
     CrackSet                           crack_;
     std::array<std::array<bool, 2>, 2> clamped_ends = {
       {{{false, false}}, {{false, false}}}};
+    std::array<bool, 2> inner_ends = {{false, false}};
   };
 } // namespace bilayer
 

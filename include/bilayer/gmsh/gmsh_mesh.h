@@ -112,6 +112,9 @@ namespace bilayer
     std::vector<std::string> parts;
     /// The physical surfaces, in the order of their tags.
     std::vector<std::string> surfaces;
+    /// The interfaces: the largest K of the curves "Sigma K" and "crack
+    /// K" (Sigma and crack: 1), 0 without any.
+    unsigned int interfaces = 0;
   };
 
   /**
@@ -127,8 +130,9 @@ namespace bilayer
    * The regions and interfaces of a Gmsh scene by name (docs/geometry.md).
    * Region r (from 0, bottom up) is the physical surface "Omega-" (r = 0),
    * "Omega+" (1), "Region 3" (2), "Region 4" (3), ...; interface i joins
-   * regions i and i + 1, its glued part the physical curve "Sigma" (i = 0)
-   * or "Sigma K" (K = i + 1), its crack pieces "crack" or "crack K".
+   * the two regions whose cells share its edges (Sigma: Omega- and Omega+),
+   * its glued part the physical curve "Sigma" (i = 0) or "Sigma K"
+   * (K = i + 1), its crack pieces "crack" or "crack K".
    */
   std::string
   gmsh_region_name(const unsigned int r);

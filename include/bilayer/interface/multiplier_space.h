@@ -517,10 +517,49 @@ namespace bilayer
     void
     join_end_rows(const std::vector<InterfaceCurve> &curves);
 
+    /**
+     * The ends of the blocks at a point where several interfaces end (a
+     * cross-point, where three regions or more meet, or a point of the
+     * outer boundary shared by interfaces) whose constraint the others
+     * there already imply: the copies of a point that the blocks at it tie
+     * together (or to Gamma_D) form a graph, and a block whose two
+     * subproblems the blocks before it or Gamma_D already connect has its
+     * end removed, as an end on Gamma_D is (the equations of a cycle are
+     * linearly dependent: a singular Schur complement). The kept blocks
+     * form a spanning forest of the graph. The blocks nodal on both sides
+     * (nodal()) come first, in block order, then the mortar blocks: a
+     * nodal block's removed end is implied exactly (no jump there), a
+     * mortar block's end basis function joins its neighbour's
+     * (join_end_rows()), its jump there a discretisation error like its
+     * jumps between the nodes.
+     */
+    void
+    drop_cross_point_ends(const std::vector<InterfaceCurve> &curves);
+
+  public:
+    /// Whether node @p a of block @p b is an end removed at a point where
+    /// several interfaces end (drop_cross_point_ends()).
+    bool
+    cross_point_end(const unsigned int a, const unsigned int b) const
+    {
+      return (a == 0 && dropped_ends[b][0]) ||
+             (a + 1 == meshes[b].node_x.size() && dropped_ends[b][1]);
+    }
+
+  private:
+    /// Whether node @p a of block @p b carries no multiplier: an end on
+    /// Gamma_D or one dropped at a cross-point.
+    bool
+    end_removed(const unsigned int    a,
+                const unsigned int    b,
+                const InterfaceCurve &curve) const;
+
     Topology       topology_;
     PerBlock<Mesh> meshes;
     /// Per node of each block (none on a gluing block's crack).
     PerBlock<std::vector<bool>> crack_nodes, corner_nodes;
+    /// Per block: its first and last node dropped at a cross-point.
+    PerBlock<std::array<bool, 2>> dropped_ends;
     /// The bound p of the multiplier sets (Contact/Multiplier bound p).
     double        multiplier_bound = 0;
     MultiplierSet set_;

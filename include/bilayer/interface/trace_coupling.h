@@ -125,8 +125,7 @@ namespace bilayer
     bool
     touches(const unsigned int s, const unsigned int i) const
     {
-      const unsigned int r = topology.region(s);
-      return present(s) && (r == i || r == i + 1);
+      return present(s) && topology.joins(i, topology.region(s));
     }
 
     /// The trace of subproblem @p s at the nodes of the block across

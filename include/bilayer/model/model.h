@@ -256,7 +256,9 @@ namespace bilayer
     const Distribution         &distribution;
     dealii::ConditionalOStream &pcout;
     /// The regions, interfaces and layers of the scene.
-    const Topology regions_and_layers;
+    /// The regions, interfaces and layers (the interfaces' regions known
+    /// once the meshes are built: build_meshes()).
+    Topology regions_and_layers;
 
     /// Per subproblem: its body force and eigenstrain (Loads/Layer k, and
     /// the thermal strain of its material under Loads/Temperature change),

@@ -49,6 +49,10 @@ namespace bilayer
     /// The regions of the scene: 2 (Omega- and Omega+), or those of the
     /// Gmsh file (Omega-, Omega+, Region 3, ...: gmsh_region_count()).
     unsigned int regions = 2;
+    /// The interfaces of the scene: 1 (Sigma), or those of the Gmsh file
+    /// (Sigma, Sigma 2, ...: GmshGroupNames::interfaces), each joining the
+    /// two regions whose cells share its edges.
+    unsigned int interfaces = 1;
 
     unsigned int
     size() const
@@ -153,6 +157,14 @@ namespace bilayer
     n_regions() const
     {
       return parts.regions + further_interfaces.size();
+    }
+
+    /// The interfaces: Sigma and those above it (the rectangle: one below
+    /// each region but the lowest), or those of the Gmsh file.
+    unsigned int
+    n_interfaces() const
+    {
+      return parts.interfaces + further_interfaces.size();
     }
 
     /// The height of interface @p i of the rectangle (Sigma: 0).
