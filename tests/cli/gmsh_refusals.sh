@@ -171,7 +171,7 @@ case_ "subdomain without a clamped part" "'Omega-' has no clamped part" 's/^$//'
   --set "Geometry/Clamped sides=top" --set "Loads/Layer 1/Traction on top=0; 0"
 case_ "boundary curve in Sigma" "an interface must separate the two regions it joins" \
   's/Physical Curve("Sigma") = {11, 13, 15};/Physical Curve("Sigma") = {11, 13, 15, 2};/; s/Physical Curve("right") = {2, 3};/Physical Curve("right") = {3};/'
-case_ "interface edges in no group" "which is in neither 'Sigma' nor 'crack'" \
+case_ "interface edges in no group" "'Omega-' and 'Omega+' share the edge at (-0.4375, 0), which is in no interface's curves" \
   's/Physical Curve("Sigma") = {11, 13, 15};/Physical Curve("Sigma") = {11, 15};/'
 case_ "geometry gmsh cannot mesh" "Unknown control point 99" 's/^Line(4) = {3, 4};/Line(4) = {3, 99};/'
 case_ "missing file" "no such file" 's/^$//' --set "Geometry/Gmsh file=missing.geo"
@@ -181,10 +181,12 @@ case3_ "regions numbered with a gap" "the physical surface 'Region 4' has no reg
   's/Physical Surface("Region 3")/Physical Surface("Region 4")/'
 case3_ "a region named Region 1" "the physical surface 'Region 1' names a region that is called 'Omega-'" \
   's/Physical Surface("Omega-")/Physical Surface("Region 1")/'
-case3_ "an interface curve of a missing region" "the physical curve 'Sigma 3' would join 'Region 3' and 'Region 4', but the file has no physical surface 'Region 4'" \
-  's/Physical Curve("Sigma 2")/Physical Curve("Sigma 3")/'
-case3_ "Sigma between the wrong regions" "the 'Sigma' edge at" \
+case3_ "interfaces numbered with a gap" "no physical curve named 'Sigma 2' or 'crack 2' (the interfaces are 'Sigma', 'Sigma 2', 'Sigma 3', ... without gaps)" \
+  's/Physical Curve("Sigma 2")/Physical Curve("Sigma 3")/; s/Physical Curve("crack 2")/Physical Curve("crack 3")/'
+case3_ "an interface between two pairs of regions" "the 'crack 2' edge at (20.5, 2) separates 'Omega+' and 'Region 3', other edges of interface 2 'Omega-' and 'Omega+': an interface joins two regions" \
   's/Physical Curve("Sigma") = {10};/Physical Curve("Sigma") = {12};/; s/Physical Curve("Sigma 2") = {12};/Physical Curve("Sigma 2") = {10};/'
+case3_ "Sigma between the wrong regions" "Sigma separates 'Omega+' and 'Region 3'; Sigma is the interface between 'Omega-' and 'Omega+'" \
+  's/Physical Curve("Sigma") = {10};/Physical Curve("Sigma") = {11, 12};/; s/Physical Curve("Sigma 2") = {12};/Physical Curve("Sigma 2") = {10};/; /Physical Curve("crack 2")/d'
 # --- Ply groups (physical surfaces inside the regions).
 case_ "ply group not in the file" "Materials/Layer k/Ply groups names 'upper', which is not a physical surface of Geometry/Gmsh file 'scene.geo'" \
   's/^$//' --set "Materials/Layer 1/Ply groups=upper"
