@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <bilayer/core/progress.h>
+#include <bilayer/drivers/resources.h>
 #include <bilayer/drivers/study.h>
 
 #include <iomanip>
@@ -63,11 +64,33 @@ namespace bilayer
         " MPI processes, got " + std::to_string(distribution.n_processes()));
     const IterationClock clock;
     std::vector<double>  seconds, dofs;
+    const bool           target = scene.mesh.target_accuracy > 0;
     for (unsigned int cycle = 0; cycle < scene.mesh.n_cycles; ++cycle)
       {
-        const CycleRecord &record = run_cycle(cycle);
+        const CycleRecord *done = nullptr;
+        try
+          {
+            done = &run_cycle(cycle);
+          }
+        catch (const RunFailure &e)
+          {
+            // A mesh that does not fit before the target is met: the
+            // accuracy reached so far is part of the failure.
+            if (!target || cycle_records.empty())
+              throw;
+            std::ostringstream t;
+            t << "Mesh/Target accuracy = " << scene.mesh.target_accuracy
+              << " is not reached: " << e.what() << "; after cycle "
+              << cycle_records.back().cycle << " "
+              << target_estimate(cycle_records.back())
+                   .text(scene.mesh.target_quantity);
+            throw RunFailure(e.cycle, t.str());
+          }
+        const CycleRecord &record = *done;
         if (!record.accepted())
           return false;
+        if (target && target_met(record))
+          break;
         // The time left (progress.h): silent until it can be estimated.
         seconds.push_back(record.total_seconds);
         dofs.push_back(record.dofs);

@@ -44,6 +44,83 @@ namespace bilayer
   }
 
 
+  std::string
+  Study::TargetEstimate::text(const TargetQuantity quantity) const
+  {
+    std::ostringstream t;
+    t << std::setprecision(3) << "the estimated relative error of "
+      << (quantity == TargetQuantity::G ? "G" : "the energy");
+    if (std::isnan(relative))
+      t << " is not known yet" << (where.empty() ? "" : " (" + where + ")");
+    else
+      t << " is " << relative << (where.empty() ? "" : " (" + where + ")");
+    if (round_off)
+      t << ", the energy-norm estimate at round-off (a scene without "
+           "stresses)";
+    return t.str();
+  }
+
+
+  Study::TargetEstimate
+  Study::target_estimate(const CycleRecord &record) const
+  {
+    TargetEstimate e;
+    const double   scale =
+      std::sqrt(model.stiffness_scale()) * record.report.displacement_scale;
+    e.round_off = record.eta <= 1e-10 * scale;
+    if (scene.mesh.target_quantity == TargetQuantity::energy)
+      {
+        e.relative = record.eta * record.eta / (2 * std::abs(record.energy));
+        return e;
+      }
+    if (record.release.empty())
+      e.where = "no crack tip";
+    for (unsigned int t = 0; t < record.release.size(); ++t)
+      {
+        const EnergyReleaseRate &g = record.release[t];
+        // (0 / 0: an exact zero of G and of its bar.)
+        const double relative =
+          g.error == 0 ? 0. : std::abs(g.error) / std::abs(g.G);
+        if (std::isnan(relative))
+          {
+            e.relative = relative;
+            e.where    = "tip " + std::to_string(t + 1) + " has no error bar";
+            break;
+          }
+        if (t == 0 || relative > e.relative)
+          {
+            e.relative = relative;
+            e.where    = "tip " + std::to_string(t + 1);
+          }
+      }
+    return e;
+  }
+
+
+  bool
+  Study::target_met(const CycleRecord &record) const
+  {
+    const double         target = scene.mesh.target_accuracy;
+    const TargetQuantity what   = scene.mesh.target_quantity;
+    const TargetEstimate e      = target_estimate(record);
+    const bool           met    = e.round_off || e.relative <= target;
+    std::ostringstream   line;
+    line << std::setprecision(3) << "Mesh/Target accuracy = " << target << ": "
+         << e.text(what);
+    rout << "cycle " << record.cycle << ": " << line.str()
+         << (met ? ": met, the cycles stop" : ": not met") << std::endl;
+    if (!met && record.cycle + 1 == scene.mesh.n_cycles)
+      throw RunFailure(record.cycle,
+                       line.str() +
+                         " after the last of Mesh/Number of "
+                         "cycles = " +
+                         std::to_string(scene.mesh.n_cycles) +
+                         ": the target is not reached (more cycles, or a "
+                         "larger target)");
+    return met;
+  }
+
+
   void
   Study::check(CycleRecord &record) const
   {

@@ -12,6 +12,7 @@
 #include <bilayer/parameters/expressions.h>
 #include <bilayer/parameters/scene_checks.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -79,6 +80,20 @@ namespace bilayer
     for (const double value : work)
       sum += value;
     return sum;
+  }
+
+
+  double
+  Model::stiffness_scale() const
+  {
+    double largest = 0;
+    for (const auto &sub : subproblems)
+      if (sub)
+        for (unsigned int j = 0; j < sub->laws().size(); ++j)
+          largest = std::max(largest, sub->laws().law(j).tangent().norm());
+    // (Every process holds the subproblems' laws; the largest of all
+    // decides alike everywhere.)
+    return distribution.max(largest);
   }
 
 

@@ -115,6 +115,25 @@ namespace bilayer
                       Patterns::Double(0, 1),
                       "The bulk parameter or the fraction of cells refined "
                       "per adaptive cycle [-], in (0, 1].");
+    prm.declare_entry(
+      "Target accuracy",
+      "0",
+      Patterns::Double(0, 1),
+      "The relative accuracy wanted of the Target quantity [-], in [0, 1): "
+      "the cycles stop at the first whose estimated relative error is at "
+      "most it (or whose estimate is at round-off: a scene without "
+      "stresses), and the run fails (exit 2, its results in DIR.failed, "
+      "the accuracy reached named) when Number of cycles pass first or "
+      "the next mesh does not fit the memory. Number of cycles is then the "
+      "most cycles. 0: no target, every one of the Number of cycles. "
+      "docs/fracture.md, \"A target accuracy\".");
+    prm.declare_entry(
+      "Target quantity",
+      "G",
+      Patterns::Selection("G|energy"),
+      "What Target accuracy measures: G (the largest relative error bar "
+      "dG / |G| over the crack tips) or energy (eta^2 / (2 |Pi|), eta the "
+      "energy-norm estimate of the cycle).");
     prm.declare_entry("Interface terms in the estimator",
                       "true",
                       Patterns::Bool(),
@@ -183,6 +202,13 @@ namespace bilayer
     AssertThrow(refinement_fraction > 0 && refinement_fraction <= 1,
                 ExcMessage("Mesh/Refinement fraction must lie in (0, 1], got " +
                            prm.get("Refinement fraction")));
+    target_accuracy = get_double(prm, "Mesh", "Target accuracy");
+    AssertThrow(target_accuracy >= 0 && target_accuracy < 1,
+                ExcMessage("Mesh/Target accuracy must lie in [0, 1), got " +
+                           prm.get("Target accuracy")));
+    target_quantity     = prm.get("Target quantity") == "energy" ?
+                            TargetQuantity::energy :
+                            TargetQuantity::G;
     interface_terms     = prm.get_bool("Interface terms in the estimator");
     contact_weight      = get_double(prm, "Mesh", "Weight of the contact term");
     refuse_above_memory = prm.get_bool("Refuse above available memory");

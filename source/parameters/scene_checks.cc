@@ -131,6 +131,22 @@ namespace bilayer
     const auto &fracture = scene.fracture;
     const auto &factors  = scene.loads.load_factors;
     const bool  growth   = fracture.growth != CrackGrowth::none;
+    if (scene.mesh.target_accuracy > 0)
+      {
+        AssertThrow(!growth,
+                    ExcMessage("Mesh/Target accuracy applies to the mesh "
+                               "cycles of a static run, not to Fracture/Crack "
+                               "growth (its steps run on one mesh)"));
+        AssertThrow(scene.mesh.n_cycles >= 2,
+                    ExcMessage("Mesh/Target accuracy needs Mesh/Number of "
+                               "cycles >= 2 (the most cycles to reach it), "
+                               "got 1"));
+        AssertThrow(scene.mesh.target_quantity != TargetQuantity::G ||
+                      fracture.energy_release_rate,
+                    ExcMessage("Mesh/Target quantity = G needs Fracture/Energy "
+                               "release rate = true (or Mesh/Target quantity = "
+                               "energy)"));
+      }
     AssertThrow(growth || (factors.size() == 1 && factors[0] == 1),
                 ExcMessage("Loads/Load factor must be 1 without "
                            "Fracture/Crack growth (it sets the loads of the "

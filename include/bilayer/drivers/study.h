@@ -346,6 +346,33 @@ namespace bilayer
     void
     check_memory(CycleRecord &record) const;
 
+    /// What Mesh/Target accuracy reads of a cycle.
+    struct TargetEstimate
+    {
+      /// The estimated relative error of Mesh/Target quantity (NaN where
+      /// the cycle has none: G's error bar on the first cycle).
+      double relative = std::numeric_limits<double>::quiet_NaN();
+      /// Where: the tip of the largest relative error of G.
+      std::string where;
+      /// The energy-norm estimate eta is at round-off: at most 1e-10
+      /// sqrt(|C|) d (Model::stiffness_scale(), the displacement scale d),
+      /// a scene whose discrete solution is exact (no stresses).
+      bool round_off = false;
+
+      /// "the estimated relative error of G is 3.2e-4 (tip 2)".
+      std::string
+      text(const TargetQuantity quantity) const;
+    };
+
+    TargetEstimate
+    target_estimate(const CycleRecord &record) const;
+
+    /// Whether the cycles stop after @p record (its target met, or its
+    /// estimate at round-off), with a line on the terminal; throws
+    /// RunFailure where the last cycle passes without it.
+    bool
+    target_met(const CycleRecord &record) const;
+
     /// "# tip k: <where>, grows towards ..." for each crack tip (none
     /// without tips): the head of table.txt and of the terminal's table.
     void

@@ -184,6 +184,12 @@ namespace bilayer
     double
     load_work() const;
 
+    /// The largest norm |C| of the tangents of the laws of all plies of
+    /// all subproblems [stress]: with the displacement scale d, sqrt(|C|) d
+    /// is the scale of the energy norm (round-off of the estimates).
+    double
+    stiffness_scale() const;
+
     /// Layer 1's displacement at @p p, read in subproblem @p s.
     dealii::Tensor<1, 2>
     point_displacement(const dealii::Point<2> &p, const unsigned int s) const;

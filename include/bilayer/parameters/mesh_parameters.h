@@ -30,6 +30,15 @@ namespace bilayer
     adaptive
   };
 
+  /// The quantity whose accuracy Mesh/Target accuracy asks for.
+  enum class TargetQuantity
+  {
+    /// G at every crack tip: its error bar dG relative to |G|.
+    G,
+    /// The energy: eta^2 / (2 |Pi|), eta the energy-norm estimate.
+    energy
+  };
+
   /// Marking of cells for adaptive refinement (one threshold over the
   /// cells of both subdomains), named as in deal.II's GridRefinement.
   enum class Marking
@@ -54,6 +63,10 @@ namespace bilayer
     /// fraction, which is bulk).
     bool   marking_spelled_fixed_fraction = false;
     double refinement_fraction            = 0.5;
+    /// The relative accuracy wanted of target_quantity: the cycles stop at
+    /// the first that meets it; 0: none (n_cycles cycles).
+    double         target_accuracy = 0;
+    TargetQuantity target_quantity = TargetQuantity::G;
     /// Add the interface residuals on Sigma to Kelly's indicators.
     bool interface_terms = true;
     /// Factor on the complementarity term of the estimator.
