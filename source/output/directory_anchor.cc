@@ -3,6 +3,7 @@
 #include <bilayer/output/directory_anchor.h>
 
 #include <cctype>
+#include <climits>
 #include <fcntl.h>
 #include <map>
 #include <mutex>
@@ -85,5 +86,39 @@ namespace bilayer
           }
       }
     return text;
+  }
+
+
+  std::string
+  moved_location(const std::uintmax_t device, const std::uintmax_t inode)
+  {
+    const std::lock_guard<std::mutex> hold(anchors_guard);
+    for (const auto &[anchored, path] : anchors())
+      {
+        struct stat through;
+        if (::stat(anchored.c_str(), &through) != 0 ||
+            static_cast<std::uintmax_t>(through.st_dev) != device ||
+            static_cast<std::uintmax_t>(through.st_ino) != inode)
+          continue;
+        struct stat named;
+        if (::lstat(path.c_str(), &named) == 0 &&
+            named.st_dev == through.st_dev && named.st_ino == through.st_ino)
+          return "";
+        char          target[PATH_MAX + 1];
+        const ssize_t length =
+          ::readlink(anchored.c_str(), target, sizeof(target) - 1);
+        if (length <= 0)
+          return "";
+        const std::string now(target, length);
+        // (A removed directory's link ends in " (deleted)"; the name must
+        // still be this directory's.)
+        struct stat there;
+        if (::lstat(now.c_str(), &there) != 0 || !S_ISDIR(there.st_mode) ||
+            static_cast<std::uintmax_t>(there.st_dev) != device ||
+            static_cast<std::uintmax_t>(there.st_ino) != inode)
+          return "";
+        return now;
+      }
+    return "";
   }
 } // namespace bilayer

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <bilayer/output/directory_anchor.h>
 #include <bilayer/output/output_directory.h>
 #include <bilayer/output/output_marker.h>
 
@@ -393,8 +394,13 @@ namespace bilayer
   {
     if (committed || staging_path.empty())
       return;
-    const std::string staged = staging_path;
+    std::string staged = staging_path;
     staging_path.clear();
+    // Moved under another name during the run: the files written into it
+    // since are this run's too, removed where the directory is now.
+    const std::string moved = moved_location(device, inode);
+    if (!moved.empty())
+      staged = moved;
     // Only the directory this run made (its marker or, if the marker was
     // removed, its extended attribute holds the token), and only its own
     // files in it.
@@ -406,7 +412,8 @@ namespace bilayer
       return;
     std::string path = staged;
     // (Writes still under way then fail instead of adding files.)
-    if (move_first && rename_new(staged, staged + ".stopped-" + token))
+    if (move_first && moved.empty() &&
+        rename_new(staged, staged + ".stopped-" + token))
       path = staged + ".stopped-" + token;
     const std::string left = remove_own(path, true);
     if (!left.empty())

@@ -166,11 +166,30 @@ midrun() { # NAME ACTION FRAGMENT: a run into out; ACTION (shell code) once cycl
 }
 midrun "staging removed mid-run: exit 1, nothing published" "rm -rf out.partial" "was removed during the run"
 [[ ! -e out.partial ]] && verdict "  and no staging re-created" "" || verdict "  and no staging re-created" "out.partial exists"
+# Moved aside: the run writes on into the moved directory (its anchor) and
+# then refuses; the files it wrote there are its own and go with it.
+midrun "staging moved aside mid-run: exit 1, nothing published" "mv out.partial aside.partial" "was removed during the run"
+[[ ! -e aside.partial && ! -e out.partial ]] && verdict "  and the moved staging removed with the run's files" "" ||
+  verdict "  and the moved staging removed with the run's files" "left: $(ls -A aside.partial out.partial 2>&1 | head -3)"
+rm -rf aside.partial
+# (A file of the user's added: the directory is kept, said in a note.)
+"$bilayer" "$prm" "${fast[@]}" "${long[@]}" --set "Output/Output directory=out" > mid.out 2> mid.err &
+pid=$!
+staged out.partial $pid && mv out.partial aside.partial && echo mine > aside.partial/mine.txt
+wait $pid 2> /dev/null
+rc=$?
+why=""
+[[ $rc -eq 1 ]] || why="exit status $rc"
+grep -q "was removed during the run" mid.err || why="$why; no refusal: $(head -2 mid.err)"
+grep -q "note: kept '.*aside.partial': it holds 'mine.txt'" mid.err || why="$why; no note: $(head -2 mid.err)"
+[[ $(ls -A aside.partial 2>&1) == mine.txt ]] || why="$why; left: $(ls -A aside.partial 2>&1 | head -3)"
+verdict "staging moved aside mid-run, a file of the user's added: refused, only that file kept, a note" "$why"
+rm -rf aside.partial
 # (Between rm and mkdir the staging does not exist: a run that looks then
 # finds it removed, also a refusal.)
 midrun "staging replaced mid-run: refused, the user's directory kept" \
   "rm -rf out.partial && mkdir out.partial && echo mine > out.partial/mine.txt" \
-  "was (replaced|removed) during the run"
+  "was (replaced|removed) (from '[^']*' )?during the run"
 [[ $(cat out.partial/mine.txt 2> /dev/null) == mine && $(ls -A out.partial | wc -l) -eq 1 ]] &&
   verdict "  and the user's out.partial untouched" "" || verdict "  and the user's out.partial untouched" "$(ls -A out.partial)"
 rm -rf out.partial

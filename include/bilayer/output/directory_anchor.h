@@ -28,6 +28,13 @@ namespace bilayer
   /// path the user knows (for messages).
   std::string
   unanchored(std::string text);
+
+  /// Where the anchored directory with @p device and @p inode is now, if
+  /// it was moved under another name during the run (its descriptor's path
+  /// names it still); empty if it was removed, never anchored, or is where
+  /// it was anchored.
+  std::string
+  moved_location(const std::uintmax_t device, const std::uintmax_t inode);
 } // namespace bilayer
 
 #endif
