@@ -54,6 +54,41 @@ namespace bilayer
 
       std::string message;
     };
+
+
+    /// The line of K at a tip (docs/fracture.md §10) on @p out.
+    void
+    write_stress_intensity(const ConditionalOStream &out,
+                           const EnergyReleaseRate  &g)
+    {
+      if (g.K_note.empty() && !std::isfinite(g.K_magnitude))
+        return; // Fracture/Stress intensity factors = false
+      out << "    stress intensity           ";
+      if (std::isfinite(g.K_I))
+        out << "K_I = " << g.K_I << ", K_II = " << g.K_II << std::defaultfloat
+            << std::setprecision(4) << " (phase angle " << g.K_phase_angle
+            << " degrees" << std::scientific << std::setprecision(4);
+      else if (std::isfinite(g.K_magnitude))
+        out << "|K| = " << g.K_magnitude << " (";
+      else
+        out << "not computed";
+      if (std::isfinite(g.K_magnitude))
+        {
+          if (std::isfinite(g.K_I))
+            out << ", ";
+          out << std::defaultfloat << std::setprecision(4)
+              << "eps = " << g.oscillation_index;
+          if (std::isfinite(g.reference_length))
+            out << " at L = " << g.reference_length;
+          out << "; G from K " << std::scientific << std::setprecision(4)
+              << g.G_from_K << ", relative to G " << std::setprecision(1)
+              << (g.G_from_K - g.G) / std::abs(g.G) << std::setprecision(4)
+              << ")";
+        }
+      if (!g.K_note.empty())
+        out << " (" << g.K_note << ")";
+      out << "\n";
+    }
   } // namespace
 
 
@@ -282,6 +317,7 @@ namespace bilayer
             if (!g.mode_split_note.empty())
               pcout << " (" << g.mode_split_note << ")";
             pcout << "\n";
+            write_stress_intensity(pcout, g);
           }
       }
   }

@@ -5,6 +5,7 @@
 #include <bilayer/model/model.h>
 #include <bilayer/postprocess/estimator.h>
 #include <bilayer/postprocess/mode_split.h>
+#include <bilayer/postprocess/stress_intensity.h>
 
 #include <limits>
 
@@ -70,6 +71,14 @@ namespace bilayer
                tip_cell_sizes,
                scene.fracture.mode_split_length,
                record.release);
+    // K by the interaction integral (docs/fracture.md §10).
+    if (scene.fracture.stress_intensity)
+      stress_intensity_factors(subproblem_views(),
+                               coupling,
+                               w,
+                               mu,
+                               scene.fracture.reference_length,
+                               record.release);
     // The error bar: G once more with the support radius halved where
     // R/2 still holds enough cells (the same mesh: a single-mesh
     // indicator), and the sequence of G over the cycles.

@@ -509,7 +509,15 @@ namespace bilayer
                 << ", \"G_II\": " << json(g.G_II)
                 << ", \"phase_angle\": " << json(g.phase_angle)
                 << ", \"mode_split_length\": " << json(g.mode_split_length)
-                << ", \"mode_split_note\": " << json(g.mode_split_note) << "}";
+                << ", \"mode_split_note\": " << json(g.mode_split_note)
+                << ", \"K_I\": " << json(g.K_I)
+                << ", \"K_II\": " << json(g.K_II)
+                << ", \"K_magnitude\": " << json(g.K_magnitude)
+                << ", \"K_phase_angle\": " << json(g.K_phase_angle)
+                << ", \"reference_length\": " << json(g.reference_length)
+                << ", \"oscillation_index\": " << json(g.oscillation_index)
+                << ", \"G_from_K\": " << json(g.G_from_K)
+                << ", \"K_note\": " << json(g.K_note) << "}";
           }
         out << "]}";
       }

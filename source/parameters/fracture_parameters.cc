@@ -63,6 +63,29 @@ namespace bilayer
       "length. A given Delta must not exceed the distance to the nearest "
       "obstacle of the tip (else NaN there).");
     prm.declare_entry(
+      "Stress intensity factors",
+      "true",
+      Patterns::Bool(),
+      "Whether to compute the stress intensity factors K_I, K_II of every "
+      "tip where G is computed, by the interaction integral with the "
+      "near-tip field of the materials at the tip (docs/fracture.md, "
+      "section 10): at tips on straight interfaces between isotropic "
+      "layers (one Poisson's ratio per side) without friction; elsewhere "
+      "a note says why not. Its cost is that of a second domain integral "
+      "per tip.");
+    prm.declare_entry(
+      "Reference length",
+      "0",
+      Patterns::Double(0),
+      "Reference length L [length] of the stress intensity factors K_I, "
+      "K_II and their phase angle at a tip between different materials "
+      "(docs/fracture.md, section 10): the complex K of the oscillating "
+      "field is reported as K L^(i eps) = K_I + i K_II, whose phase "
+      "atan2(K_II, K_I) moves by eps ln(L2 / L1) from L1 to L2. 0: not set; "
+      "then K_I, K_II and the phase angle are NaN at such a tip (|K|, eps "
+      "and G from K are reported). A tip between equal materials (eps = 0) "
+      "has one K for every L.");
+    prm.declare_entry(
       "Crack growth",
       "none",
       Patterns::Selection("none|sweep|quasi-static"),
@@ -138,11 +161,17 @@ namespace bilayer
   {
     prm.enter_subsection("Fracture");
     energy_release_rate = prm.get_bool("Energy release rate");
+    stress_intensity    = prm.get_bool("Stress intensity factors");
     support_radius      = get_double(prm, "Fracture", "Support radius");
     AssertThrow(std::isfinite(support_radius) && support_radius >= 0,
                 ExcMessage("Fracture/Support radius must be >= 0 (0: "
                            "automatic), got " +
                            prm.get("Support radius")));
+    reference_length = get_double(prm, "Fracture", "Reference length");
+    AssertThrow(std::isfinite(reference_length) && reference_length >= 0,
+                ExcMessage("Fracture/Reference length must be >= 0 (0: not "
+                           "set), got " +
+                           prm.get("Reference length")));
     mode_split_length = get_double(prm, "Fracture", "Mode split length");
     AssertThrow(std::isfinite(mode_split_length) && mode_split_length >= 0,
                 ExcMessage("Fracture/Mode split length must be >= 0 (0: "

@@ -5,6 +5,7 @@
 
 #include <bilayer/core/similarity_breaker.h>
 #include <bilayer/core/tasks.h>
+#include <bilayer/postprocess/domain_integral.h>
 #include <bilayer/postprocess/fracture.h>
 
 #include <algorithm>
@@ -18,68 +19,111 @@ namespace bilayer
 {
   using namespace dealii;
 
+  Quadrature<2>
+  subdivided_quadrature(const ReferenceCell &cell,
+                        const unsigned int   n,
+                        const unsigned int   m)
+  {
+    if (cell == ReferenceCells::Quadrilateral)
+      return QIterated<2>(QGauss<1>(n), m);
+    const QGaussSimplex<2> base(std::min(n, 4u));
+    std::vector<Point<2>>  points;
+    std::vector<double>    weights;
+    const auto             add = [&](const Point<2>     &origin,
+                         const Tensor<1, 2> &e0,
+                         const Tensor<1, 2> &e1) {
+      for (unsigned int q = 0; q < base.size(); ++q)
+        {
+          points.push_back(origin + base.point(q)[0] * e0 +
+                           base.point(q)[1] * e1);
+          weights.push_back(base.weight(q) / (m * m));
+        }
+    };
+    const double h = 1. / m;
+    for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int j = 0; i + j < m; ++j)
+        {
+          add(Point<2>(i * h, j * h),
+              Tensor<1, 2>({h, 0}),
+              Tensor<1, 2>({0, h}));
+          if (i + j + 1 < m)
+            add(Point<2>((i + 1) * h, (j + 1) * h),
+                Tensor<1, 2>({-h, 0}),
+                Tensor<1, 2>({0, -h}));
+        }
+    return Quadrature<2>(points, weights);
+  }
+
+
+  double
+  smallest_support_radius(const std::vector<CrackTip>   &tips,
+                          const std::vector<ThetaField> &fields,
+                          const Point<2>                &center,
+                          const double                   diameter)
+  {
+    const unsigned int n          = tips.size();
+    double             smallest_R = 0;
+    for (unsigned int t = 0; t < n; ++t)
+      if (tips[t].defined() && fields[t].reaches(center, diameter))
+        smallest_R = smallest_R == 0 ?
+                       tips[t].support_radius :
+                       std::min(smallest_R, tips[t].support_radius);
+    return smallest_R;
+  }
+
+
+  unsigned int
+  support_pieces(const double diameter, const double R)
+  {
+    return std::clamp<unsigned int>(std::ceil(8 * diameter / R), 1, 32);
+  }
+
+
+  void
+  for_each_support_cell(
+    const ElasticSubproblem                 &sub,
+    const std::vector<CrackTip>             &tips,
+    const std::vector<ThetaField>           &fields,
+    const UpdateFlags                        flags,
+    const std::function<void(const FEValues<2> &,
+                             const DoFHandler<2>::active_cell_iterator &,
+                             const Point<2> &,
+                             const double)> &f)
+  {
+    // FEValues with the rule subdivided m x m times, by m.
+    std::map<unsigned int, std::unique_ptr<FEValues<2>>> by_pieces;
+    const SimilarityBreaker fresh(sub.fe().reference_cell());
+    const CellExtents      &extents = sub.cell_extents();
+    for (unsigned int i = 0; i < extents.size(); ++i)
+      {
+        // No point of a cell is farther from its centre than its
+        // diameter (the vertex mean lies inside the cell).
+        const Point<2> &center   = extents.center(i);
+        const double    diameter = extents.diameter(i);
+        const double    smallest_R =
+          smallest_support_radius(tips, fields, center, diameter);
+        if (smallest_R == 0)
+          continue;
+        const unsigned int m           = support_pieces(diameter, smallest_R);
+        auto              &fe_values_m = by_pieces[m];
+        if (!fe_values_m)
+          fe_values_m = std::make_unique<FEValues<2>>(
+            sub.mapping(),
+            sub.fe(),
+            subdivided_quadrature(sub.fe().reference_cell(),
+                                  sub.fe().degree + 3,
+                                  m),
+            flags);
+        FEValues<2> &fe_values = *fe_values_m;
+        fresh.apply(fe_values);
+        fe_values.reinit(extents.cell(i));
+        f(fe_values, extents.cell(i), center, diameter);
+      }
+  }
+
+
   namespace
   {
-    /**
-     * A Gauss rule with @p n points per direction on each of the m x m
-     * (quadrilateral) or m^2 (triangle) congruent pieces of the reference
-     * cell: cells much larger than the support of theta see its fall from
-     * 1 to 0 with enough points.
-     */
-    Quadrature<2>
-    subdivided_quadrature(const ReferenceCell &cell,
-                          const unsigned int   n,
-                          const unsigned int   m)
-    {
-      if (cell == ReferenceCells::Quadrilateral)
-        return QIterated<2>(QGauss<1>(n), m);
-      const QGaussSimplex<2> base(std::min(n, 4u));
-      std::vector<Point<2>>  points;
-      std::vector<double>    weights;
-      const auto             add = [&](const Point<2>     &origin,
-                           const Tensor<1, 2> &e0,
-                           const Tensor<1, 2> &e1) {
-        for (unsigned int q = 0; q < base.size(); ++q)
-          {
-            points.push_back(origin + base.point(q)[0] * e0 +
-                             base.point(q)[1] * e1);
-            weights.push_back(base.weight(q) / (m * m));
-          }
-      };
-      const double h = 1. / m;
-      for (unsigned int i = 0; i < m; ++i)
-        for (unsigned int j = 0; i + j < m; ++j)
-          {
-            add(Point<2>(i * h, j * h),
-                Tensor<1, 2>({h, 0}),
-                Tensor<1, 2>({0, h}));
-            if (i + j + 1 < m)
-              add(Point<2>((i + 1) * h, (j + 1) * h),
-                  Tensor<1, 2>({-h, 0}),
-                  Tensor<1, 2>({0, -h}));
-          }
-      return Quadrature<2>(points, weights);
-    }
-
-
-    /// The smallest R of the defined tips whose theta reaches @p cell, or 0.
-    double
-    smallest_support_radius(const std::vector<CrackTip>   &tips,
-                            const std::vector<ThetaField> &fields,
-                            const Point<2>                &center,
-                            const double                   diameter)
-    {
-      const unsigned int n          = tips.size();
-      double             smallest_R = 0;
-      for (unsigned int t = 0; t < n; ++t)
-        if (tips[t].defined() && fields[t].reaches(center, diameter))
-          smallest_R = smallest_R == 0 ?
-                         tips[t].support_radius :
-                         std::min(smallest_R, tips[t].support_radius);
-      return smallest_R;
-    }
-
-
     /// int sigma : (grad u grad theta) - W div theta dx of @p field over the
     /// cell of @p fe_values, grad u at its quadrature points @p grad_u.
     double
@@ -163,44 +207,20 @@ namespace bilayer
     {
       const unsigned int n = tips.size();
       integral.reinit(n);
-      // FEValues with the rule subdivided m x m times, by m.
-      std::map<unsigned int, std::unique_ptr<FEValues<2>>> by_pieces;
-      const SimilarityBreaker          fresh(sub.fe().reference_cell());
       const FEValuesExtractors::Vector displacement(0);
       const VolumeLoad *const          volume = sub.volume_load();
       std::vector<Tensor<2, 2>>        grad_u;
       std::vector<Tensor<1, 2>>        u_values;
-      const CellExtents               &extents = sub.cell_extents();
-      for (unsigned int i = 0; i < extents.size(); ++i)
-        {
-          // No point of a cell is farther from its centre than its
-          // diameter (the vertex mean lies inside the cell).
-          const Point<2> &center   = extents.center(i);
-          const double    diameter = extents.diameter(i);
-          const double    smallest_R =
-            smallest_support_radius(tips, fields, center, diameter);
-          if (smallest_R == 0)
-            continue;
-          const auto &cell = extents.cell(i);
-          // Pieces no larger than 1/8 of R: at least four across the
-          // fall of theta (R/2 < r < R).
-          const unsigned int m =
-            std::clamp<unsigned int>(std::ceil(8 * diameter / smallest_R),
-                                     1,
-                                     32);
-          auto &fe_values_m = by_pieces[m];
-          if (!fe_values_m)
-            fe_values_m = std::make_unique<FEValues<2>>(
-              sub.mapping(),
-              sub.fe(),
-              subdivided_quadrature(sub.fe().reference_cell(),
-                                    sub.fe().degree + 3,
-                                    m),
-              update_gradients | update_quadrature_points | update_JxW_values |
-                (volume != nullptr ? update_values : update_default));
-          FEValues<2> &fe_values = *fe_values_m;
-          fresh.apply(fe_values);
-          fe_values.reinit(cell);
+      for_each_support_cell(
+        sub,
+        tips,
+        fields,
+        update_gradients | update_quadrature_points | update_JxW_values |
+          (volume != nullptr ? update_values : update_default),
+        [&](const FEValues<2>                         &fe_values,
+            const DoFHandler<2>::active_cell_iterator &cell,
+            const Point<2>                            &center,
+            const double                               diameter) {
           grad_u.resize(fe_values.n_quadrature_points);
           fe_values[displacement].get_function_gradients(u, grad_u);
           if (volume != nullptr)
@@ -221,7 +241,7 @@ namespace bilayer
                                 *volume,
                                 volume->in(*cell),
                                 fields[t]);
-        }
+        });
     }
 
 

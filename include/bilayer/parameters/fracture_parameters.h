@@ -47,6 +47,8 @@ namespace bilayer
   {
     /// Compute G at every crack tip of every cycle.
     bool energy_release_rate = true;
+    /// Whether to compute K_I, K_II at the tips (docs/fracture.md §10).
+    bool stress_intensity = true;
     /**
      * Outer radius R of the support of theta [length]; theta = its
      * direction for r <= R/2 and falls smoothly to 0 at r = R. 0: half the
@@ -62,6 +64,12 @@ namespace bilayer
      * split depends on the length).
      */
     double mode_split_length = 0;
+    /**
+     * The reference length L of K_I + i K_II = K L^(i eps) at a tip
+     * between different materials [length] (docs/fracture.md §10); 0: not
+     * set (K_I, K_II and the phase angle NaN at such tips).
+     */
+    double reference_length = 0;
 
     CrackGrowth growth = CrackGrowth::none;
     /// G_c (mode I toughness of the mode-dependent laws) and G_IIc as

@@ -204,6 +204,22 @@ namespace bilayer
     /// Empty where the split is defined, else why it is not; at a tip
     /// between different materials, the reference length of the split.
     std::string mode_split_note;
+    /**
+     * The stress intensity factors (stress_intensity_factors(),
+     * docs/fracture.md §10): K L^(i eps) = K_I + i K_II at the reference
+     * length L, |K|, the signed phase angle atan2(K_II, K_I) in degrees,
+     * the oscillation index eps of the materials at the tip (0 where they
+     * agree) and |K|^2 / (E* cosh^2(pi eps)), which equals G for the exact
+     * field; NaN where K is not computed (then K_note says why).
+     */
+    double      K_I               = std::numeric_limits<double>::quiet_NaN();
+    double      K_II              = std::numeric_limits<double>::quiet_NaN();
+    double      K_magnitude       = std::numeric_limits<double>::quiet_NaN();
+    double      K_phase_angle     = std::numeric_limits<double>::quiet_NaN();
+    double      oscillation_index = std::numeric_limits<double>::quiet_NaN();
+    double      reference_length  = std::numeric_limits<double>::quiet_NaN();
+    double      G_from_K          = std::numeric_limits<double>::quiet_NaN();
+    std::string K_note;
     /// Why G is not reported at this tip on this mesh (then NaN): the
     /// support of theta holds too few cells (support_cells()); empty if G
     /// is valid.
