@@ -172,16 +172,18 @@ midrun "staging moved aside mid-run: exit 1, nothing published" "mv out.partial 
 [[ ! -e aside.partial && ! -e out.partial ]] && verdict "  and the moved staging removed with the run's files" "" ||
   verdict "  and the moved staging removed with the run's files" "left: $(ls -A aside.partial out.partial 2>&1 | head -3)"
 rm -rf aside.partial
-# (A file of the user's added: the directory is kept, said in a note.)
+# (A file of the user's added, then moved aside: the directory is kept,
+# said in a note. The file goes in first: added after the move, the run
+# could have removed the directory in between.)
 "$bilayer" "$prm" "${fast[@]}" "${long[@]}" --set "Output/Output directory=out" > mid.out 2> mid.err &
 pid=$!
-staged out.partial $pid && mv out.partial aside.partial && echo mine > aside.partial/mine.txt
+staged out.partial $pid && echo mine > out.partial/mine.txt && mv out.partial aside.partial
 wait $pid 2> /dev/null
 rc=$?
 why=""
 [[ $rc -eq 1 ]] || why="exit status $rc"
-grep -q "was removed during the run" mid.err || why="$why; no refusal: $(head -2 mid.err)"
-grep -q "note: kept '.*aside.partial': it holds 'mine.txt'" mid.err || why="$why; no note: $(head -2 mid.err)"
+grep -q "^bilayer: error: .*during the run" mid.err || why="$why; no refusal: $(head -2 mid.err)"
+grep -q "note: kept '.*': it holds 'mine.txt'" mid.err || why="$why; no note: $(head -2 mid.err)"
 [[ $(ls -A aside.partial 2>&1) == mine.txt ]] || why="$why; left: $(ls -A aside.partial 2>&1 | head -3)"
 verdict "staging moved aside mid-run, a file of the user's added: refused, only that file kept, a note" "$why"
 rm -rf aside.partial
