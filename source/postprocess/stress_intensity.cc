@@ -112,7 +112,8 @@ namespace bilayer
       std::array<std::array<double, 2>, 2> side_lame = {};
       for (unsigned int side = 0; side < 2; ++side)
         {
-          double ratio = 0;
+          // lambda / mu of the first layer of the side (dimensionless).
+          std::optional<double> ratio;
           for (const unsigned int l : Layout::indices(topology.n_slots()))
             {
               const ElasticSubproblem *sub =
@@ -129,14 +130,15 @@ namespace bilayer
                   return s;
                 }
               const double r = (*lame)[0] / (*lame)[1];
-              if (ratio != 0 && std::abs(r - ratio) > 1e-10 * std::abs(ratio))
+              if (ratio &&
+                  std::abs(r - *ratio) > 1e-10 * std::max(1., std::abs(*ratio)))
                 {
                   s.note = "K needs the layers on each side of the tip to "
                            "have one Poisson's ratio (here they differ: G "
                            "and its closure split)";
                   return s;
                 }
-              ratio = r == 0 ? 1e-300 : r;
+              ratio = r;
               side_lame[side][0] += (*lame)[0];
               side_lame[side][1] += (*lame)[1];
             }
