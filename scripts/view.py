@@ -185,6 +185,7 @@ def discover(directory, cycle, field):
         pass
     return {"dir": os.path.abspath(d), "solution": os.path.abspath(solution),
             "interface": interface and os.path.abspath(interface), "note": note,
+            "pieces": [os.path.abspath(p) for p in pieces] or [os.path.abspath(solution)],
             "cycle": cycles[index], "cycles": cycles, "time": time,
             "layer_association": layer_association, "field": field,
             "field_components": point[field], "scene": scene, "record": record}
@@ -234,21 +235,51 @@ def mark_state(path, info):
 
 def render(args):
     from paraview.simple import (
-        AssignViewToLayout, ColorBy, CreateLayout, Delete, CreateView, GetColorTransferFunction,
+        AppendDatasets, AssignViewToLayout, ColorBy, CreateLayout, Delete, CreateView, GetColorTransferFunction,
         GetOpacityTransferFunction, GetScalarBar, Render, SaveScreenshot, SaveState, Show,
-        Text, Threshold, Transform, WarpByVector, XMLPartitionedUnstructuredGridReader,
+        Text, Threshold, Transform, WarpByVector,
         XMLUnstructuredGridReader, a3DText)
 
     info = discover(args["dir"], args["cycle"], args["field"])
     field = info["field"]
     width, height = int(args["width"]), int(args["height"])
-    base = os.path.basename(info["solution"])
-    solution = XMLPartitionedUnstructuredGridReader(registrationName=base, FileName=[info["solution"]])
-    solution.UpdatePipeline()
-    sinfo = solution.GetDataInformation()
-    bounds = sinfo.GetBounds()
+    # The pieces of the .pvtu (one per subproblem: a layer on a region), each
+    # read on its own and grouped by its value of 'layer'. (No Threshold on
+    # the partitioned data set: Debian's ParaView 5.11 crashes in
+    # vtkExtractCells there now and then.)
+    by_layer, other = {}, set()
+    for path in info["pieces"]:
+        piece = XMLUnstructuredGridReader(registrationName=os.path.basename(path), FileName=[path])
+        piece.UpdatePipeline()
+        data = piece.CellData if info["layer_association"] == "CELLS" else piece.PointData
+        if piece.GetDataInformation().GetNumberOfCells() == 0 or "layer" not in data.keys():
+            Delete(piece)
+            continue
+        low, high = data["layer"].GetRange()
+        if round(low) != round(high):
+            raise ViewError("%s: cells of layers %d to %d in one piece (bilayer writes one layer "
+                            "per piece)" % (path, round(low), round(high)))
+        layer = int(round(low))
+        if layer in (1, 2):
+            by_layer.setdefault(layer, []).append(piece)
+        else:
+            other.add(layer)
+            Delete(piece)
+    if 1 not in by_layer:
+        raise ViewError("%s: no cells of layer 1" % info["solution"])
+    if other:
+        print("view-info: layer%s %s not drawn (the view shows layers 1 and 2)" % (
+            "s" if len(other) > 1 else "", ", ".join("%d" % l for l in sorted(other))))
+    sources = {}
+    for layer, pieces in by_layer.items():
+        sources[layer] = pieces[0] if len(pieces) == 1 else AppendDatasets(
+            registrationName="layer %d" % layer, Input=pieces)
+        sources[layer].UpdatePipeline()
+    infos = [sources[l].GetDataInformation() for l in sources]
+    bounds = [min(i.GetBounds()[j] for i in infos) if j % 2 == 0 else max(i.GetBounds()[j] for i in infos)
+              for j in range(6)]
     size = max(bounds[1] - bounds[0], bounds[3] - bounds[2]) or 1.0
-    umax = solution.PointData["displacement"].GetRange(-1)[1]
+    umax = max(sources[l].PointData["displacement"].GetRange(-1)[1] for l in sources)
 
     if args.get("scale") is not None:
         scale = float(args["scale"])
@@ -265,24 +296,13 @@ def render(args):
         else "%d" % info["cycles"][0], "%g" % scale, how))
 
     # The layers, warped, each with its own offset (decided below).
-    layers, thresholds = {}, {}
-    for layer in (1, 2):
-        threshold = Threshold(registrationName="layer %d" % layer, Input=solution)
-        threshold.Scalars = [info["layer_association"], "layer"]
-        threshold.LowerThreshold = layer - 0.5
-        threshold.UpperThreshold = layer + 0.5
-        warp = WarpByVector(registrationName="layer %d warped" % layer, Input=threshold)
+    layers = {}
+    for layer in sorted(sources):
+        warp = WarpByVector(registrationName="layer %d warped" % layer, Input=sources[layer])
         warp.Vectors = ["POINTS", "displacement"]
         warp.ScaleFactor = scale
         warp.UpdatePipeline()
-        if warp.GetDataInformation().GetNumberOfCells() > 0:
-            layers[layer] = warp
-            thresholds[layer] = threshold
-        else:  # Materials/Number of layers = 1
-            Delete(warp)
-            Delete(threshold)
-    if 1 not in layers:
-        raise ViewError("%s: no cells of layer 1" % info["solution"])
+        layers[layer] = warp
     present = sorted(layers)
 
     interface = None
@@ -350,7 +370,7 @@ def render(args):
         displays[layer] = display
         fmin, fmax = layers[layer].PointData[field].GetRange(components)
         signed = field.startswith("stress_") and fmin < 0 < fmax
-        p99 = percentile_abs(thresholds[layer], field, 99.0)
+        p99 = percentile_abs(sources[layer], field, 99.0)
         largest = max(abs(fmin), abs(fmax))
         saturated = p99 is not None and 0 < p99 < largest / 1.2
         top = p99 if saturated else largest
