@@ -318,6 +318,10 @@ namespace bilayer
               pcout << " (" << g.mode_split_note << ")";
             pcout << "\n";
             write_stress_intensity(pcout, g);
+            if (std::isfinite(g.G_dwr))
+              pcout << "    goal-oriented estimate     G - G_h = " << g.G_dwr
+                    << " (DWR; sum of |cell terms| " << g.G_dwr_absolute
+                    << ")\n";
           }
       }
   }
@@ -340,8 +344,15 @@ namespace bilayer
           << "  error estimate eta           " << record.eta
           << (estimates_error(record) ?
                 "  (energy norm, sqrt(2 (Pi_h - Pi)) by the estimator)\n" :
-                "  (not estimated: a growth step on the mesh of step 0)\n")
-          << "  constraint violation (12)    " << r.constraint_violation
+                "  (not estimated: a growth step on the mesh of step 0)\n");
+    if (std::isfinite(record.energy_dwr))
+      pcout << "  goal-oriented estimate       Pi - Pi_h = "
+            << record.energy_dwr << " (DWR; " << record.dwr_iterations
+            << " dual conjugate-gradient iterations, " << std::defaultfloat
+            << std::setprecision(3) << record.dwr_seconds << " s"
+            << (record.dwr_note.empty() ? "" : "; " + record.dwr_note) << ")"
+            << std::scientific << std::setprecision(4) << "\n";
+    pcout << "  constraint violation (12)    " << r.constraint_violation
           << "  (relative " << r.relative_constraint_violation << ")\n"
           << "  largest interpenetration     " << r.max_penetration
           << "  (displacement scale " << r.displacement_scale << ")\n"

@@ -46,6 +46,9 @@ namespace bilayer
                                   &record.eta);
     else
       record.eta = std::numeric_limits<double>::quiet_NaN();
+    if (scene.fracture.goal_oriented ||
+        scene.mesh.refinement_goal != MeshParameters::Goal::estimator)
+      estimate_goals(record);
   }
 
 

@@ -180,6 +180,7 @@ namespace bilayer
           .csv(18, "constraint_violation").column("violation", 2, true),
         record_field("eta", [](const R &r) { return r.eta; })
           .csv(19, "eta").column("eta", 2, true),
+        record_field("energy_dwr", [](const R &r) { return r.energy_dwr; }),
         record_field("relative_constraint_violation",
                      [](const R &r) { return r.report.relative_constraint_violation; }),
         record_field("max_penetration",
@@ -517,7 +518,10 @@ namespace bilayer
                 << ", \"reference_length\": " << json(g.reference_length)
                 << ", \"oscillation_index\": " << json(g.oscillation_index)
                 << ", \"G_from_K\": " << json(g.G_from_K)
-                << ", \"K_note\": " << json(g.K_note) << "}";
+                << ", \"K_note\": " << json(g.K_note)
+                << ", \"G_dwr\": " << json(g.G_dwr)
+                << ", \"G_dwr_absolute\": " << json(g.G_dwr_absolute)
+                << ", \"dual_work\": " << json(g.dual_work) << "}";
           }
         out << "]}";
       }

@@ -63,6 +63,17 @@ namespace bilayer
       "length. A given Delta must not exceed the distance to the nearest "
       "obstacle of the tip (else NaN there).");
     prm.declare_entry(
+      "Goal-oriented estimate",
+      "false",
+      Patterns::Bool(),
+      "Whether to compute the dual-weighted residual estimates of G at "
+      "every tip and of the energy (docs/fracture.md, section 11): one dual "
+      "problem per tip, solved with the factorisations of the state (its "
+      "active set held), weighted by a patchwise reconstruction of degree "
+      "p + 1. dG then is the larger of the DWR estimate and the estimate "
+      "from the cycles and the support radius. On by itself with a "
+      "Mesh/Refinement goal other than estimator.");
+    prm.declare_entry(
       "Stress intensity factors",
       "true",
       Patterns::Bool(),
@@ -162,6 +173,7 @@ namespace bilayer
     prm.enter_subsection("Fracture");
     energy_release_rate = prm.get_bool("Energy release rate");
     stress_intensity    = prm.get_bool("Stress intensity factors");
+    goal_oriented       = prm.get_bool("Goal-oriented estimate");
     support_radius      = get_double(prm, "Fracture", "Support radius");
     AssertThrow(std::isfinite(support_radius) && support_radius >= 0,
                 ExcMessage("Fracture/Support radius must be >= 0 (0: "

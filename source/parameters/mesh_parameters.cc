@@ -116,6 +116,16 @@ namespace bilayer
                       "The bulk parameter or the fraction of cells refined "
                       "per adaptive cycle [-], in (0, 1].");
     prm.declare_entry(
+      "Refinement goal",
+      "estimator",
+      Patterns::Anything(),
+      "What adaptive refinement marks for: estimator (the residual "
+      "estimator of the energy norm, docs/numerics.md), or the "
+      "dual-weighted residual indicators of a goal (docs/fracture.md §11): "
+      "energy, G (G at every tip, each relative to its own G) or G at tip "
+      "K (K = 1, 2, ... as numbered in the output). A goal turns on "
+      "Fracture/Goal-oriented estimate.");
+    prm.declare_entry(
       "Target accuracy",
       "0",
       Patterns::Double(0, 1),
@@ -202,6 +212,33 @@ namespace bilayer
     AssertThrow(refinement_fraction > 0 && refinement_fraction <= 1,
                 ExcMessage("Mesh/Refinement fraction must lie in (0, 1], got " +
                            prm.get("Refinement fraction")));
+    {
+      const std::string goal   = prm.get("Refinement goal");
+      const auto        refuse = [&goal]() {
+        AssertThrow(false,
+                    ExcMessage("Mesh/Refinement goal must be estimator, "
+                                      "energy, G or G at tip K (K >= 1), got '" +
+                               goal + "'"));
+      };
+      if (goal == "estimator")
+        refinement_goal = Goal::estimator;
+      else if (goal == "energy")
+        refinement_goal = Goal::energy;
+      else if (goal == "G")
+        refinement_goal = Goal::G;
+      else if (goal.rfind("G at tip ", 0) == 0)
+        {
+          const std::string number = goal.substr(9);
+          if (number.empty() || number.size() > 6 ||
+              number.find_first_not_of("0123456789") != std::string::npos ||
+              std::stoul(number) == 0)
+            refuse();
+          refinement_goal = Goal::G_at_tip;
+          goal_tip        = std::stoul(number) - 1;
+        }
+      else
+        refuse();
+    }
     target_accuracy = get_double(prm, "Mesh", "Target accuracy");
     AssertThrow(target_accuracy >= 0 && target_accuracy < 1,
                 ExcMessage("Mesh/Target accuracy must lie in [0, 1), got " +

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <bilayer/subproblem/distributed_system.h>
 #include <bilayer/subproblem/subproblem.h>
 
 #include <cmath>
@@ -96,4 +97,16 @@ namespace bilayer
   }
 
 
+  void
+  ElasticSubproblem::solve_load(const Vector<double> &load,
+                                Vector<double>       &solution) const
+  {
+    solution = load;
+    homogeneous_constraints.condense(solution);
+    if (shared)
+      shared->solve(solution, false);
+    else
+      factorisation.solve(solution);
+    homogeneous_constraints.distribute(solution);
+  }
 } // namespace bilayer

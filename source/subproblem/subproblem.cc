@@ -541,13 +541,7 @@ namespace bilayer
         solve_coupling(coupling, solution);
         return;
       }
-    solution = coupling;
-    homogeneous_constraints.condense(solution);
-    if (shared)
-      shared->solve(solution, false);
-    else
-      factorisation.solve(solution);
-    homogeneous_constraints.distribute(solution);
+    solve_load(coupling, solution);
   }
 
 

@@ -258,6 +258,12 @@ namespace bilayer
     void
     assess_tips(CycleRecord &record, const std::vector<CycleRecord> &history);
 
+    /// The goal-oriented estimates of G and the energy into @p record
+    /// (docs/fracture.md §11), dG widened to them, and with a
+    /// Mesh/Refinement goal their indicators for the next adaptive cycle.
+    void
+    estimate_goals(CycleRecord &record);
+
     const Scene                &scene;
     const Distribution         &distribution;
     dealii::ConditionalOStream &pcout;

@@ -52,7 +52,14 @@ namespace bilayer
     /// The global a-posteriori error estimate in the energy norm
     /// (estimate_error(), estimator.h), [energy^1/2]: compare with
     /// (2 |Pi_h - Pi|)^1/2.
-    double          eta = 0;
+    double eta = 0;
+    /// The dual-weighted residual estimate of Pi - Pi_h (signed; NaN where
+    /// not computed), its dual solves' conjugate-gradient iterations and
+    /// the wall time of all goal-oriented estimates of the cycle [s].
+    double          energy_dwr     = std::numeric_limits<double>::quiet_NaN();
+    unsigned int    dwr_iterations = 0;
+    double          dwr_seconds    = 0;
+    std::string     dwr_note;
     InterfaceReport report;
     /// Coulomb friction: the fixed-point iterations (Tresca solves) and the
     /// last change of the friction bounds relative to the largest bound

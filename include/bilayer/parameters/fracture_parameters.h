@@ -49,6 +49,9 @@ namespace bilayer
     bool energy_release_rate = true;
     /// Whether to compute K_I, K_II at the tips (docs/fracture.md §10).
     bool stress_intensity = true;
+    /// Fracture/Goal-oriented estimate (also on with a Mesh/Refinement
+    /// goal other than estimator).
+    bool goal_oriented = false;
     /**
      * Outer radius R of the support of theta [length]; theta = its
      * direction for r <= R/2 and falls smoothly to 0 at r = R. 0: half the

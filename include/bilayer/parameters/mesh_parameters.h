@@ -63,6 +63,19 @@ namespace bilayer
     /// fraction, which is bulk).
     bool   marking_spelled_fixed_fraction = false;
     double refinement_fraction            = 0.5;
+    /// What adaptive refinement marks for (Mesh/Refinement goal): the
+    /// residual estimator of the energy norm (estimator), or the
+    /// dual-weighted residual indicators of a goal (docs/fracture.md §11):
+    /// the energy, G at every tip, or G at tip goal_tip (0-based).
+    enum class Goal
+    {
+      estimator,
+      energy,
+      G,
+      G_at_tip
+    };
+    Goal         refinement_goal = Goal::estimator;
+    unsigned int goal_tip        = 0;
     /// The relative accuracy wanted of target_quantity: the cycles stop at
     /// the first that meets it; 0: none (n_cycles cycles).
     double         target_accuracy = 0;

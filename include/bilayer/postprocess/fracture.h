@@ -232,8 +232,16 @@ namespace bilayer
     /// estimator is available (then error_estimate says why).
     double error = std::numeric_limits<double>::quiet_NaN();
     /// The estimator of @p error ("cycles", "support radius", "cycles and
-    /// support radius"), or "none: <why>".
+    /// support radius", with "DWR" where the goal-oriented estimate is
+    /// the larger), or "none: <why>".
     std::string error_estimate;
+    /// The dual-weighted residual estimate of G - G_h (signed; NaN where
+    /// not computed: Fracture/Goal-oriented estimate, docs/fracture.md
+    /// §11) and the sum of the magnitudes of its cell terms.
+    double G_dwr          = std::numeric_limits<double>::quiet_NaN();
+    double G_dwr_absolute = std::numeric_limits<double>::quiet_NaN();
+    /// (F, z) of the tip's dual solution z (GoalEstimates::dual_work).
+    double dual_work = std::numeric_limits<double>::quiet_NaN();
   };
 
   /**

@@ -204,6 +204,13 @@ namespace bilayer
     solve_homogeneous(const dealii::Vector<double> &coupling,
                       dealii::Vector<double>       &solution) const;
 
+    /// K^{-1} @p load with the homogeneous constraints, for a load
+    /// anywhere (not only on Sigma: the whole factorisation, also where
+    /// condensed()); the dual problems of goal-oriented estimates.
+    void
+    solve_load(const dealii::Vector<double> &load,
+               dealii::Vector<double>       &solution) const;
+
     /// a(w, w) = int sigma(w) : eps(w) dx [energy].
     double
     energy_norm_squared(const dealii::Vector<double> &w) const;
