@@ -72,20 +72,8 @@ namespace bilayer
     if (asked == Goal::estimator || estimates.indicators.empty())
       return;
     // A goal at tips without a finite estimate refines for the energy.
-    if (goal != RefinementGoal::energy && !any_tip)
-      {
-        const GoalEstimates energy =
-          goal_oriented_estimates(subproblem_views(),
-                                  coupling,
-                                  w,
-                                  mu,
-                                  {},
-                                  loads,
-                                  RefinementGoal::energy,
-                                  0);
-        indicators = energy.indicators;
-      }
-    else
-      indicators = estimates.indicators;
+    indicators = goal != RefinementGoal::energy && !any_tip ?
+                   estimates.energy_indicators :
+                   estimates.indicators;
   }
 } // namespace bilayer

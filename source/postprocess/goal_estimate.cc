@@ -189,6 +189,7 @@ namespace bilayer
       result.G[estimated[k]] = result.G_absolute[estimated[k]] = 0;
     const Topology &topology = interface.topology();
     result.indicators.resize(topology.n_regions());
+    result.energy_indicators.resize(topology.n_regions());
     for (const unsigned int s : Layout::indices(subproblems.size()))
       if (subproblems[s] != nullptr)
         {
@@ -202,10 +203,16 @@ namespace bilayer
             }
           Vector<double> &indicator =
             result.indicators[subproblems[s]->region()];
+          Vector<double> &energy_indicator =
+            result.energy_indicators[subproblems[s]->region()];
           if (indicator.size() == 0)
-            indicator.reinit(e[0].size());
+            {
+              indicator.reinit(e[0].size());
+              energy_indicator.reinit(e[0].size());
+            }
           for (unsigned int c = 0; c < e[0].size(); ++c)
             {
+              energy_indicator(c) += 0.5 * std::abs(e[0](c));
               double value = 0;
               if (goal == RefinementGoal::energy)
                 value = 0.5 * std::abs(e[0](c));

@@ -55,6 +55,9 @@ namespace bilayer
     /// Cell indicators by region (active_cell_index()) for the goal asked
     /// for: |eta_K| summed over the layers of the region.
     std::vector<dealii::Vector<double>> indicators;
+    /// The energy's indicators by region (those of a goal at tips on a
+    /// state without a finite G).
+    std::vector<dealii::Vector<double>> energy_indicators;
     /// Conjugate-gradient iterations and subdomain solves of the dual
     /// problems, and the wall time of all of it [s].
     unsigned int  dual_iterations  = 0;
