@@ -136,7 +136,8 @@ namespace bilayer
                        model.subproblem_views(),
                        model.solutions(),
                        scene.output,
-                       outputs);
+                       outputs,
+                       model.goal_cell_fields());
       });
     record.total_seconds = distribution.max(total.wall_time());
     Utilities::System::MemoryStats memory;
@@ -180,7 +181,8 @@ namespace bilayer
                          model.subproblem_views(),
                          model.solutions(),
                          scene.output,
-                         outputs);
+                         outputs,
+                         model.goal_cell_fields());
         if (distribution.is_root())
           write_interface_files(step, scene.output.write_vtu, true);
       }

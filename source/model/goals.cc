@@ -4,6 +4,7 @@
 #include <bilayer/model/model.h>
 #include <bilayer/postprocess/goal_estimate.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bilayer
@@ -48,6 +49,15 @@ namespace bilayer
                               loads,
                               goal,
                               scene.mesh.goal_tip);
+    goal_fields.names  = {"dwr_energy"};
+    goal_fields.values = {estimates.energy_terms};
+    if (std::any_of(estimates.G_terms.begin(),
+                    estimates.G_terms.end(),
+                    [](const Vector<double> &v) { return v.size() > 0; }))
+      {
+        goal_fields.names.emplace_back("dwr_G");
+        goal_fields.values.push_back(estimates.G_terms);
+      }
     record.energy_dwr     = estimates.energy;
     record.dwr_iterations = estimates.dual_iterations;
     record.dwr_seconds    = estimates.seconds;
@@ -63,17 +73,27 @@ namespace bilayer
           continue;
         any_tip = any_tip || goal == RefinementGoal::all_tips ||
                   t == scene.mesh.goal_tip;
-        if (!std::isfinite(g.error) || std::abs(g.G_dwr) > g.error)
+        // The bar takes the sum of the cell terms' magnitudes: the signed
+        // sum cancels where the error of G changes sign between regions
+        // (docs/fracture.md §11).
+        if (!std::isfinite(g.error) || g.G_dwr_absolute > g.error)
           {
-            g.error          = std::abs(g.G_dwr);
+            g.error          = g.G_dwr_absolute;
             g.error_estimate = "DWR";
           }
       }
     if (asked == Goal::estimator || estimates.indicators.empty())
       return;
     // A goal at tips without a finite estimate refines for the energy.
+    // The marking (bulk: the fewest cells whose squared indicators make up
+    // the Refinement fraction of the total) reads energy-norm indicators,
+    // whose squares add up to the error; the terms |eta_K| of a goal add
+    // up themselves, so it gets their square roots.
     indicators = goal != RefinementGoal::energy && !any_tip ?
                    estimates.energy_indicators :
                    estimates.indicators;
+    for (Vector<double> &region : indicators)
+      for (double &value : region)
+        value = std::sqrt(value);
   }
 } // namespace bilayer

@@ -104,6 +104,73 @@ namespace bilayer
         });
       return j;
     }
+
+    /**
+     * The sums of the cell terms @p eta (by subproblem: the energy's, then
+     * those of the tips @p estimated) into @p result: the estimates, their
+     * absolute sums, the indicators of @p goal by region and the cell
+     * terms by subproblem.
+     */
+    void
+    collect(const Subproblems                                &subproblems,
+            const Topology                                   &topology,
+            const PerSubproblem<std::vector<Vector<double>>> &eta,
+            const std::vector<unsigned int>                  &estimated,
+            const std::vector<EnergyReleaseRate>             &release,
+            const RefinementGoal                              goal,
+            const unsigned int                                goal_tip,
+            GoalEstimates                                    &result)
+    {
+      for (unsigned int k = 0; k < estimated.size(); ++k)
+        result.G[estimated[k]] = result.G_absolute[estimated[k]] = 0;
+      result.indicators.resize(topology.n_regions());
+      result.energy_indicators.resize(topology.n_regions());
+      result.energy_terms.resize(subproblems.size());
+      result.G_terms.resize(subproblems.size());
+      for (const unsigned int s : Layout::indices(subproblems.size()))
+        if (subproblems[s] != nullptr)
+          {
+            const auto &e = eta[s];
+            result.energy += -0.5 * e[0].mean_value() * e[0].size();
+            result.energy_absolute += 0.5 * e[0].l1_norm();
+            for (unsigned int k = 0; k < estimated.size(); ++k)
+              {
+                result.G[estimated[k]] +=
+                  e[k + 1].mean_value() * e[k + 1].size();
+                result.G_absolute[estimated[k]] += e[k + 1].l1_norm();
+              }
+            Vector<double> &indicator =
+              result.indicators[subproblems[s]->region()];
+            Vector<double> &energy_indicator =
+              result.energy_indicators[subproblems[s]->region()];
+            if (indicator.size() == 0)
+              {
+                indicator.reinit(e[0].size());
+                energy_indicator.reinit(e[0].size());
+              }
+            result.energy_terms[s].reinit(e[0].size());
+            if (!estimated.empty())
+              result.G_terms[s].reinit(e[0].size());
+            for (unsigned int c = 0; c < e[0].size(); ++c)
+              {
+                energy_indicator(c) += 0.5 * std::abs(e[0](c));
+                result.energy_terms[s](c) = 0.5 * std::abs(e[0](c));
+                for (unsigned int k = 0; k < estimated.size(); ++k)
+                  result.G_terms[s](c) += std::abs(e[k + 1](c));
+                double value = 0;
+                if (goal == RefinementGoal::energy)
+                  value = 0.5 * std::abs(e[0](c));
+                for (unsigned int k = 0; k < estimated.size(); ++k)
+                  if (goal == RefinementGoal::all_tips ||
+                      (goal == RefinementGoal::one_tip &&
+                       estimated[k] == goal_tip))
+                    value += std::abs(e[k + 1](c)) /
+                             std::max(std::abs(release[estimated[k]].G),
+                                      std::numeric_limits<double>::min());
+                indicator(c) += value;
+              }
+          }
+    }
   } // namespace
 
 
@@ -131,6 +198,12 @@ namespace bilayer
           result.energy = result.energy_absolute = nan;
           return result;
         }
+
+    // The tips (defined or not) whose near-tip functions enrich the
+    // reconstructions.
+    std::vector<goal::TipFrame> frames;
+    for (const EnergyReleaseRate &g : release)
+      frames.push_back({g.tip.point, g.tip.direction});
 
     // The dual solutions, by tip.
     std::vector<unsigned int> estimated;
@@ -181,51 +254,19 @@ namespace bilayer
                                             mu,
                                             loads.clamped,
                                             loads.traction[s],
-                                            fields);
+                                            fields,
+                                            frames);
         });
     tasks.join_all();
 
-    for (unsigned int k = 0; k < estimated.size(); ++k)
-      result.G[estimated[k]] = result.G_absolute[estimated[k]] = 0;
-    const Topology &topology = interface.topology();
-    result.indicators.resize(topology.n_regions());
-    result.energy_indicators.resize(topology.n_regions());
-    for (const unsigned int s : Layout::indices(subproblems.size()))
-      if (subproblems[s] != nullptr)
-        {
-          const auto &e = eta[s];
-          result.energy += -0.5 * e[0].mean_value() * e[0].size();
-          result.energy_absolute += 0.5 * e[0].l1_norm();
-          for (unsigned int k = 0; k < estimated.size(); ++k)
-            {
-              result.G[estimated[k]] += e[k + 1].mean_value() * e[k + 1].size();
-              result.G_absolute[estimated[k]] += e[k + 1].l1_norm();
-            }
-          Vector<double> &indicator =
-            result.indicators[subproblems[s]->region()];
-          Vector<double> &energy_indicator =
-            result.energy_indicators[subproblems[s]->region()];
-          if (indicator.size() == 0)
-            {
-              indicator.reinit(e[0].size());
-              energy_indicator.reinit(e[0].size());
-            }
-          for (unsigned int c = 0; c < e[0].size(); ++c)
-            {
-              energy_indicator(c) += 0.5 * std::abs(e[0](c));
-              double value = 0;
-              if (goal == RefinementGoal::energy)
-                value = 0.5 * std::abs(e[0](c));
-              for (unsigned int k = 0; k < estimated.size(); ++k)
-                if (goal == RefinementGoal::all_tips ||
-                    (goal == RefinementGoal::one_tip &&
-                     estimated[k] == goal_tip))
-                  value += std::abs(e[k + 1](c)) /
-                           std::max(std::abs(release[estimated[k]].G),
-                                    std::numeric_limits<double>::min());
-              indicator(c) += value;
-            }
-        }
+    collect(subproblems,
+            interface.topology(),
+            eta,
+            estimated,
+            release,
+            goal,
+            goal_tip,
+            result);
     result.seconds = timer.wall_time();
     return result;
   }

@@ -12,6 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
+#include <map>
 
 namespace bilayer
 {
@@ -24,6 +27,8 @@ namespace bilayer
     std::vector<std::array<unsigned int, 2>>
     exponents(const unsigned int k, const bool tensor)
     {
+      // (LocalPolynomial::basis() holds the powers up to 7.)
+      AssertThrow(k <= 7, ExcMessage("reconstruction degree above 7"));
       std::vector<std::array<unsigned int, 2>> e;
       for (unsigned int a = 0; a <= k; ++a)
         for (unsigned int b = 0; b <= k; ++b)
@@ -40,18 +45,52 @@ namespace bilayer
       Point<2>                                 c;
       double                                   h = 1;
       std::vector<std::array<unsigned int, 2>> e;
-      std::array<Vector<double>, 2>            coefficients;
+      /// The tips whose near-tip functions enrich the fit (none: a plain
+      /// polynomial).
+      std::vector<goal::TipFrame>   tips;
+      std::array<Vector<double>, 2> coefficients;
 
-      Tensor<1, 2>
-      operator()(const Point<2> &x) const
+      /// The basis functions at @p x into @p b: the monomials, then per
+      /// tip (r/h)^(1/2) (cos, sin)(theta/2) and (cos, sin)(3 theta/2),
+      /// theta the angle from the direction of growth (the r^(1/2) terms
+      /// of the Williams expansion, each component).
+      void
+      basis(const Point<2> &x, std::vector<double> &b) const
       {
-        const double xi = (x[0] - c[0]) / h, eta = (x[1] - c[1]) / h;
-        Tensor<1, 2> v;
-        for (unsigned int k = 0; k < e.size(); ++k)
+        const double          xi = (x[0] - c[0]) / h, eta = (x[1] - c[1]) / h;
+        std::array<double, 8> px, py;
+        px[0] = py[0] = 1;
+        for (unsigned int k = 1; k < px.size(); ++k)
           {
-            const double m = std::pow(xi, e[k][0]) * std::pow(eta, e[k][1]);
-            v[0] += coefficients[0](k) * m;
-            v[1] += coefficients[1](k) * m;
+            px[k] = px[k - 1] * xi;
+            py[k] = py[k - 1] * eta;
+          }
+        b.resize(e.size() + 4 * tips.size());
+        for (unsigned int k = 0; k < e.size(); ++k)
+          b[k] = px[e[k][0]] * py[e[k][1]];
+        for (unsigned int t = 0; t < tips.size(); ++t)
+          {
+            const Tensor<1, 2>  r = x - tips[t].point;
+            const Tensor<1, 2> &d = tips[t].direction;
+            const double  theta = std::atan2(d[0] * r[1] - d[1] * r[0], d * r);
+            const double  root  = std::sqrt(r.norm() / h);
+            double *const f     = &b[e.size() + 4 * t];
+            f[0]                = root * std::cos(theta / 2);
+            f[1]                = root * std::sin(theta / 2);
+            f[2]                = root * std::cos(1.5 * theta);
+            f[3]                = root * std::sin(1.5 * theta);
+          }
+      }
+
+      /// The field at a point whose basis values are @p b.
+      Tensor<1, 2>
+      operator()(const std::vector<double> &b) const
+      {
+        Tensor<1, 2> v;
+        for (unsigned int k = 0; k < b.size(); ++k)
+          {
+            v[0] += coefficients[0](k) * b[k];
+            v[1] += coefficients[1](k) * b[k];
           }
         return v;
       }
@@ -123,95 +162,144 @@ namespace bilayer
 
 
     /// The least-squares fits of degree p + 1 of each field over the patch
-    /// of @p cell (the pseudo-inverse of the normal equations, singular
-    /// values below 1e-10 of the largest dropped: a patch that does not
-    /// determine them, e.g. a cell with no neighbour, keeps the lower
-    /// degrees).
+    /// of @p cell, enriched at a tip with its near-tip functions (the
+    /// pseudo-inverse of the normal equations of the columns scaled to unit
+    /// norm, singular values below 1e-8 dropped, i.e. directions the
+    /// samples determine to less than 1e-4 of the best: a patch that does
+    /// not determine them, e.g. a cell with no neighbour, or near-tip
+    /// functions that the polynomials nearly represent, keep the rest).
+    /// The scaled pseudo-inverse of the normal equations of one patch
+    /// shape: the patches of a mesh that equal each other up to a
+    /// translation and a scaling (most of a structured or uniformly refined
+    /// mesh) share it.
+    struct PatchSolver
+    {
+      std::vector<double>      scale;
+      LAPACKFullMatrix<double> inverse;
+    };
+    using PatchSolvers = std::map<std::vector<std::int64_t>, PatchSolver>;
+
+
     std::vector<LocalPolynomial>
     reconstruct(const DoFHandler<2>::active_cell_iterator &cell,
                 const Samples                             &samples,
                 const unsigned int                         degree,
                 const bool                                 tensor,
-                const unsigned int                         n_fields)
+                const unsigned int                         n_fields,
+                const std::vector<goal::TipFrame>         &tips,
+                PatchSolvers                              &solvers)
     {
       LocalPolynomial base;
-      base.c                                 = cell->center();
-      base.h                                 = cell->diameter();
-      base.e                                 = exponents(degree, tensor);
-      const unsigned int               n     = base.e.size();
+      base.c = cell->center();
+      base.h = cell->diameter();
+      base.e = exponents(degree, tensor);
+      for (const goal::TipFrame &tip : tips)
+        if (cell->center().distance(tip.point) <
+            goal::enrichment_radius * base.h)
+          base.tips.push_back(tip);
+      const unsigned int               n = base.e.size() + 4 * base.tips.size();
       const std::vector<unsigned int>  cells = patch(cell);
       std::vector<std::vector<double>> rows;
+      std::vector<std::int64_t>        shape;
       for (const unsigned int k : cells)
         for (const Point<2> &x : samples.x[k])
           {
-            const double xi  = (x[0] - base.c[0]) / base.h,
-                         eta = (x[1] - base.c[1]) / base.h;
-            std::vector<double> row(n);
-            for (unsigned int a = 0; a < n; ++a)
-              row[a] = std::pow(xi, base.e[a][0]) * std::pow(eta, base.e[a][1]);
-            rows.push_back(std::move(row));
+            rows.emplace_back();
+            base.basis(x, rows.back());
+            for (unsigned int d = 0; d < 2; ++d)
+              shape.push_back(std::llround((x[d] - base.c[d]) / base.h * 1e9));
           }
-      LAPACKFullMatrix<double> normal(n, n);
-      for (const auto &row : rows)
-        for (unsigned int a = 0; a < n; ++a)
-          for (unsigned int b = 0; b < n; ++b)
-            normal(a, b) += row[a] * row[b];
-      double largest = 0;
-      for (unsigned int a = 0; a < n; ++a)
-        largest = std::max(largest, normal(a, a));
-      normal.compute_inverse_svd(1e-10 * largest);
+      // (Enriched patches depend on the tip: not shared.)
+      PatchSolver  own;
+      PatchSolver *solver = &own;
+      bool         known  = false;
+      if (base.tips.empty())
+        {
+          const auto [entry, inserted] = solvers.try_emplace(shape);
+          solver                       = &entry->second;
+          known                        = !inserted;
+        }
+      if (!known)
+        {
+          // The normal equations of the columns scaled to unit norm.
+          solver->scale.assign(n, 0.);
+          for (const auto &row : rows)
+            for (unsigned int a = 0; a < n; ++a)
+              solver->scale[a] += row[a] * row[a];
+          for (double &c : solver->scale)
+            c = c > 0 ? 1 / std::sqrt(c) : 0;
+          LAPACKFullMatrix<double> &normal = solver->inverse;
+          normal.reinit(n, n);
+          for (const auto &row : rows)
+            for (unsigned int a = 0; a < n; ++a)
+              for (unsigned int b = 0; b < n; ++b)
+                normal(a, b) +=
+                  row[a] * solver->scale[a] * row[b] * solver->scale[b];
+          normal.compute_inverse_svd(1e-8);
+        }
+      const std::vector<double>   &scale = solver->scale;
       std::vector<LocalPolynomial> fits(n_fields, base);
+      Vector<double>               rhs(n);
       for (unsigned int f = 0; f < n_fields; ++f)
         for (unsigned int d = 0; d < 2; ++d)
           {
-            Vector<double> rhs(n);
-            unsigned int   r = 0;
+            rhs            = 0;
+            unsigned int r = 0;
             for (const unsigned int k : cells)
               for (unsigned int q = 0; q < samples.x[k].size(); ++q, ++r)
                 for (unsigned int a = 0; a < n; ++a)
-                  rhs(a) += rows[r][a] * samples.values[k][f][q][d];
+                  rhs(a) += rows[r][a] * scale[a] * samples.values[k][f][q][d];
             fits[f].coefficients[d].reinit(n);
-            normal.vmult(fits[f].coefficients[d], rhs);
+            solver->inverse.vmult(fits[f].coefficients[d], rhs);
+            for (unsigned int a = 0; a < n; ++a)
+              fits[f].coefficients[d](a) *= scale[a];
           }
       return fits;
     }
 
 
     /// The element's interpolation of the fits: their values at the
-    /// support points of the cell's shape functions, by field.
+    /// support points of the cell's shape functions (@p at: FEValues on
+    /// the unit support points, reinitialised on the cell), by field.
     std::vector<std::vector<double>>
-    interpolation_values(const ElasticSubproblem                   &sub,
-                         const DoFHandler<2>::active_cell_iterator &cell,
-                         const std::vector<LocalPolynomial>        &fits)
+    interpolation_values(const FEValues<2>                  &at,
+                         const std::vector<LocalPolynomial> &fits)
     {
-      const FiniteElement<2>          &fe   = sub.fe();
-      const std::vector<Point<2>>     &unit = fe.get_unit_support_points();
+      const FiniteElement<2>          &fe = at.get_fe();
+      const unsigned int               n  = at.n_quadrature_points;
       std::vector<std::vector<double>> values(fits.size(),
-                                              std::vector<double>(unit.size()));
-      for (unsigned int i = 0; i < unit.size(); ++i)
+                                              std::vector<double>(n));
+      std::vector<double>              b;
+      for (unsigned int i = 0; i < n; ++i)
         {
-          const Point<2> x =
-            sub.mapping().transform_unit_to_real_cell(cell, unit[i]);
+          fits[0].basis(at.quadrature_point(i), b);
           const unsigned int component = fe.system_to_component_index(i).first;
           for (unsigned int f = 0; f < fits.size(); ++f)
-            values[f][i] = fits[f](x)[component];
+            values[f][i] = fits[f](b)[component];
         }
       return values;
     }
 
 
-    /// z~ - I z~ at the quadrature points of @p v (the cell's own values).
-    Tensor<1, 2>
-    weight(const FEValuesBase<2>     &v,
-           const unsigned int         q,
-           const LocalPolynomial     &fit,
-           const std::vector<double> &nodal)
+    /// z~ - I z~ of each field at the quadrature point @p q of @p v (the
+    /// cell's own values), into @p w.
+    void
+    weights(const FEValuesBase<2>                  &v,
+            const unsigned int                      q,
+            const std::vector<LocalPolynomial>     &fits,
+            const std::vector<std::vector<double>> &nodal,
+            std::vector<Tensor<1, 2>>              &w)
     {
-      Tensor<1, 2> w = fit(v.quadrature_point(q));
-      for (unsigned int i = 0; i < nodal.size(); ++i)
-        w[v.get_fe().system_to_component_index(i).first] -=
-          nodal[i] * v.shape_value(i, q);
-      return w;
+      thread_local std::vector<double> b;
+      fits[0].basis(v.quadrature_point(q), b);
+      w.resize(fits.size());
+      for (unsigned int f = 0; f < fits.size(); ++f)
+        {
+          w[f] = fits[f](b);
+          for (unsigned int i = 0; i < nodal[f].size(); ++i)
+            w[f][v.get_fe().system_to_component_index(i).first] -=
+              nodal[f][i] * v.shape_value(i, q);
+        }
     }
 
 
@@ -290,6 +378,7 @@ namespace bilayer
     {
       const auto sa = stresses(a, sub, w, a.get_cell()->center());
       const auto sb = stresses(b, sub, w, b.get_cell()->center());
+      std::vector<Tensor<1, 2>> omega;
       for (const unsigned int q : a.quadrature_point_indices())
         {
           unsigned int qb = 0;
@@ -298,8 +387,55 @@ namespace bilayer
                 b.quadrature_point(qb).distance(a.quadrature_point(q)))
               qb = r;
           const Tensor<1, 2> r = -0.5 * ((sa[q] - sb[qb]) * a.normal_vector(q));
+          weights(a, q, fits, nodal, omega);
           for (unsigned int f = 0; f < fits.size(); ++f)
-            eta[f](i) += r * weight(a, q, fits[f], nodal[f]) * a.JxW(q);
+            eta[f](i) += r * omega[f] * a.JxW(q);
+        }
+    }
+
+    /// The side residual g - sigma n (g = @p load, the traction given on
+    /// the side or the multipliers' on an interface), weighted, at the
+    /// points of the cell's face values @p v, added to eta[f](i).
+    void
+    add_side_terms(const FEFaceValuesBase<2>                           &v,
+                   const ElasticSubproblem                             &sub,
+                   const Vector<double>                                &w,
+                   const std::function<Tensor<1, 2>(const Point<2> &)> &load,
+                   const std::vector<LocalPolynomial>                  &fits,
+                   const std::vector<std::vector<double>>              &nodal,
+                   std::vector<Vector<double>>                         &eta,
+                   const unsigned int                                   i)
+    {
+      const auto stress = stresses(v, sub, w, v.get_cell()->center());
+      std::vector<Tensor<1, 2>> omega;
+      for (const unsigned int q : v.quadrature_point_indices())
+        {
+          const Tensor<1, 2> r =
+            load(v.quadrature_point(q)) - stress[q] * v.normal_vector(q);
+          weights(v, q, fits, nodal, omega);
+          for (unsigned int f = 0; f < fits.size(); ++f)
+            eta[f](i) += r * omega[f] * v.JxW(q);
+        }
+    }
+
+    /// The cell residual f + div sigma(w), weighted, at the points of
+    /// @p v, added to eta[f](K).
+    void
+    add_cell_terms(const FEValues<2>                      &v,
+                   const ElasticSubproblem                &sub,
+                   const Vector<double>                   &w,
+                   const std::vector<LocalPolynomial>     &fits,
+                   const std::vector<std::vector<double>> &nodal,
+                   std::vector<Vector<double>>            &eta)
+    {
+      const auto                residual = cell_residual(v, sub, w);
+      const auto                i        = v.get_cell()->active_cell_index();
+      std::vector<Tensor<1, 2>> omega;
+      for (const unsigned int q : v.quadrature_point_indices())
+        {
+          weights(v, q, fits, nodal, omega);
+          for (unsigned int f = 0; f < fits.size(); ++f)
+            eta[f](i) += residual[q] * omega[f] * v.JxW(q);
         }
     }
   } // namespace
@@ -315,7 +451,8 @@ namespace bilayer
                        const BlockVector<double>                 &mu,
                        const std::vector<bool>                   &clamped,
                        const std::vector<const Function<2> *>    &traction,
-                       const std::vector<const Vector<double> *> &fields)
+                       const std::vector<const Vector<double> *> &fields,
+                       const std::vector<TipFrame>               &tips)
     {
       const auto        &tria    = sub.dof_handler().get_triangulation();
       const unsigned int nf      = fields.size();
@@ -346,20 +483,22 @@ namespace bilayer
         theirs_sub(sub.mapping(), sub.fe(), face_rule, face_flags);
       const double   factor = sub.load_factor();
       Vector<double> t(2);
+      PatchSolvers   solvers;
+      FEValues<2>    support_points(sub.mapping(),
+                                 sub.fe(),
+                                 Quadrature<2>(
+                                   sub.fe().get_unit_support_points()),
+                                 update_quadrature_points);
 
       for (const auto &cell : sub.dof_handler().active_cell_iterators())
         {
-          const auto i     = cell->active_cell_index();
-          const auto fits  = reconstruct(cell, samples, degree, tensor, nf);
-          const auto nodal = interpolation_values(sub, cell, fits);
-          // The cell term.
+          const auto i = cell->active_cell_index();
+          const auto fits =
+            reconstruct(cell, samples, degree, tensor, nf, tips, solvers);
+          support_points.reinit(cell);
+          const auto nodal = interpolation_values(support_points, fits);
           fe_values.reinit(cell);
-          const auto residual = cell_residual(fe_values, sub, w);
-          for (unsigned int f = 0; f < nf; ++f)
-            for (const unsigned int q : fe_values.quadrature_point_indices())
-              eta[f](i) += residual[q] *
-                           weight(fe_values, q, fits[f], nodal[f]) *
-                           fe_values.JxW(q);
+          add_cell_terms(fe_values, sub, w, fits, nodal, eta);
           const auto jump = [&](const FEFaceValuesBase<2> &a,
                                 const FEFaceValuesBase<2> &b) {
             add_jump_terms(a, b, sub, w, fits, nodal, eta, i);
@@ -376,13 +515,14 @@ namespace bilayer
                   const Function<2> *const given =
                     !sigma && id < traction.size() ? traction[id] : nullptr;
                   mine.reinit(cell, face);
-                  const auto stress = stresses(mine, sub, w, cell->center());
                   const unsigned int b =
                     sigma ? BoundaryIds::interface_of(id) : 0;
-                  for (const unsigned int q : mine.quadrature_point_indices())
-                    {
-                      const Point<2> &x = mine.quadrature_point(q);
-                      Tensor<1, 2>    load;
+                  add_side_terms(
+                    mine,
+                    sub,
+                    w,
+                    [&](const Point<2> &x) {
+                      Tensor<1, 2> load;
                       if (sigma)
                         load = interface.multiplier_traction(
                           mu, s, interface.curve(b).parameter(x), b);
@@ -392,12 +532,12 @@ namespace bilayer
                           load[0] = factor * t[0];
                           load[1] = factor * t[1];
                         }
-                      const Tensor<1, 2> r =
-                        load - stress[q] * mine.normal_vector(q);
-                      for (unsigned int f = 0; f < nf; ++f)
-                        eta[f](i) +=
-                          r * weight(mine, q, fits[f], nodal[f]) * mine.JxW(q);
-                    }
+                      return load;
+                    },
+                    fits,
+                    nodal,
+                    eta,
+                    i);
                   continue;
                 }
               const auto neighbor = cell->neighbor(face);

@@ -8,6 +8,7 @@
 #include <bilayer/geometry/geometry.h>
 #include <bilayer/interface/interface.h>
 #include <bilayer/output/cycle_record.h>
+#include <bilayer/output/output.h>
 #include <bilayer/parameters/parameters.h>
 #include <bilayer/postprocess/fracture.h>
 #include <bilayer/solvers/outer_solver.h>
@@ -178,6 +179,15 @@ namespace bilayer
       return indicators;
     }
 
+    /// The cell terms of the goal-oriented estimates of the last assess()
+    /// (dwr_energy, dwr_G; none without Fracture/Goal-oriented estimate),
+    /// for the solution files.
+    const CellFields &
+    goal_cell_fields() const
+    {
+      return goal_fields;
+    }
+
     // What the drivers read.
 
     /// The work of the unit proportional loads on the present solution.
@@ -300,6 +310,8 @@ namespace bilayer
     /// Error indicators of the last cycle, per region (adaptive
     /// refinement).
     std::vector<dealii::Vector<double>> indicators;
+    /// goal_cell_fields().
+    CellFields goal_fields;
   };
 } // namespace bilayer
 

@@ -72,6 +72,16 @@ namespace bilayer
   append_to(const std::string                         &path,
             const std::function<void(std::ostream &)> &writer);
 
+  /// Further cell data of the solution files, by name: per subproblem one
+  /// value per active cell (active_cell_index()); a subproblem whose
+  /// vector is empty or of another size gets NaN (all pieces carry the
+  /// same fields).
+  struct CellFields
+  {
+    std::vector<std::string>                           names;
+    std::vector<PerSubproblem<dealii::Vector<double>>> values;
+  };
+
   /// What write_solution() keeps from cycle to cycle.
   struct SolutionRecords
   {
@@ -108,7 +118,8 @@ namespace bilayer
                  const PerSubproblem<const ElasticSubproblem *> &subproblems,
                  const Solutions                                &solutions,
                  const OutputParameters                         &parameters,
-                 SolutionRecords                                &records);
+                 SolutionRecords                                &records,
+                 const CellFields                               &extra = {});
 
   /**
    * The interface dataset of one cycle, interface-NN.vtu, and

@@ -58,6 +58,11 @@ namespace bilayer
     /// The energy's indicators by region (those of a goal at tips on a
     /// state without a finite G).
     std::vector<dealii::Vector<double>> energy_indicators;
+    /// By subproblem (active_cell_index()): the magnitudes of the cell
+    /// terms of the energy's estimate, 1/2 |eta_K|, and of G's, |eta_K|
+    /// summed over the tips with an estimate (empty where none) [energy,
+    /// stress x length]: the fields dwr_energy and dwr_G of the VTU.
+    PerSubproblem<dealii::Vector<double>> energy_terms, G_terms;
     /// Conjugate-gradient iterations and subdomain solves of the dual
     /// problems, and the wall time of all of it [s].
     unsigned int  dual_iterations  = 0;
@@ -98,6 +103,20 @@ namespace bilayer
 
   namespace goal
   {
+    /// A crack tip as the reconstruction sees it: its point and the unit
+    /// direction of growth (the crack lies behind it).
+    struct TipFrame
+    {
+      dealii::Point<2>     point;
+      dealii::Tensor<1, 2> direction;
+    };
+
+    /// Cells whose centre lies within this many of their diameters of a
+    /// tip fit the near-tip functions r^(1/2) of the tip beside the
+    /// polynomials (the weights of the cells at a tip see the singular
+    /// part of the dual solution).
+    constexpr double enrichment_radius = 0.8;
+
     /**
      * The residual of the state @p w of @p sub weighted by z~ - I z~ for
      * each field z of @p fields (its reconstruction of degree p + 1 on the
@@ -113,7 +132,8 @@ namespace bilayer
       const dealii::BlockVector<double>                 &mu,
       const std::vector<bool>                           &clamped,
       const std::vector<const dealii::Function<2> *>    &traction,
-      const std::vector<const dealii::Vector<double> *> &fields);
+      const std::vector<const dealii::Vector<double> *> &fields,
+      const std::vector<TipFrame>                       &tips);
   } // namespace goal
 } // namespace bilayer
 
