@@ -200,10 +200,12 @@ namespace bilayer
         }
 
     // The tips (defined or not) whose near-tip functions enrich the
-    // reconstructions.
+    // reconstructions (those with a direction of growth).
     std::vector<goal::TipFrame> frames;
     for (const EnergyReleaseRate &g : release)
-      frames.push_back({g.tip.point, g.tip.direction});
+      if (std::isfinite(g.tip.point.norm()) &&
+          std::abs(g.tip.direction.norm() - 1) < 1e-6)
+        frames.push_back({g.tip.point, g.tip.direction});
 
     // The dual solutions, by tip.
     std::vector<unsigned int> estimated;
