@@ -272,13 +272,32 @@ namespace bilayer
   }
 
 
+  EnergyReleaseRate
+  Study::law_split(const EnergyReleaseRate &g) const
+  {
+    // The split of the stress intensity factors: G cos^2 psi, G sin^2 psi.
+    EnergyReleaseRate split = g;
+    if (scene.fracture.mode_mix_from_k)
+      {
+        const double psi = g.K_phase_angle * numbers::PI / 180;
+        split.G_I        = g.G * std::cos(psi) * std::cos(psi);
+        split.G_II       = g.G * std::sin(psi) * std::sin(psi);
+        if (!std::isfinite(psi))
+          split.mode_split_note =
+            "no phase angle of K" +
+            (g.K_note.empty() ? std::string() : ": " + g.K_note);
+      }
+    return split;
+  }
+
+
   GrowthCriterion
   Study::criterion_at(const EnergyReleaseRate &g) const
   {
     const FractureParameters &fracture = scene.fracture;
     return growth_criterion(fracture.mixed_mode_law,
                             fracture.mixed_mode_exponent,
-                            g,
+                            law_split(g),
                             fracture.toughness_at(g.tip.point, g.tip.s),
                             fracture.mode_ii_toughness_at(g.tip.point, g.tip.s),
                             split_resolution(
@@ -400,8 +419,8 @@ namespace bilayer
         tip.s            = g->tip.s;
         tip.point        = g->tip.point;
         tip.G            = g->G;
-        tip.G_I          = g->G_I;
-        tip.G_II         = g->G_II;
+        tip.G_I          = law_split(*g).G_I;
+        tip.G_II         = law_split(*g).G_II;
         tip.piece_length = piece_length(crack, tip.s, 10 * tol);
         if (!g->tip.defined())
           followed_tip.stopped = "at a corner of Sigma";

@@ -132,6 +132,16 @@ namespace bilayer
       "G_Ic)^a + (G_II / G_IIc)^a >= 1; Benzeggagh-Kenane G >= G_Ic + "
       "(G_IIc - G_Ic) (G_II / G)^eta; a and eta = Mixed-mode exponent. The "
       "mode-dependent laws need the mode split at the tip.");
+    prm.declare_entry(
+      "Mode mix",
+      "closure",
+      Patterns::Selection("closure|stress intensity factors"),
+      "The G_I, G_II the mode-dependent laws read: closure (the "
+      "crack-closure split over Mode split length, docs/fracture.md §7) or "
+      "stress intensity factors (G_I = G cos^2 psi, G_II = G sin^2 psi, "
+      "psi = atan2(K_II, K_I) at Reference length: the phase angle of "
+      "interface fracture; needs Stress intensity factors = true, and a "
+      "Reference length at a tip between different materials).");
     prm.declare_entry("Mixed-mode exponent",
                       "1",
                       Patterns::Double(0),
@@ -201,6 +211,10 @@ namespace bilayer
                                                   MixedModeLaw::benzeggagh_kenane :
                                                   MixedModeLaw::mode_independent;
     mixed_mode_exponent    = get_double(prm, "Fracture", "Mixed-mode exponent");
+    mode_mix_from_k        = prm.get("Mode mix") == "stress intensity factors";
+    AssertThrow(!mode_mix_from_k || stress_intensity,
+                ExcMessage("Fracture/Mode mix = stress intensity factors "
+                           "needs Fracture/Stress intensity factors = true"));
     AssertThrow(std::isfinite(mixed_mode_exponent) && mixed_mode_exponent > 0,
                 ExcMessage("Fracture/Mixed-mode exponent must be > 0, got " +
                            prm.get("Mixed-mode exponent")));

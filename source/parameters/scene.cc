@@ -169,7 +169,8 @@ namespace bilayer
 
     /// Why the growth entry @p path is not read (empty if it is): the
     /// entries of Fracture/Crack growth without growth, the mode II
-    /// toughness and the exponent with the mode-independent law, Written
+    /// toughness, the exponent and the mode mix with the mode-independent
+    /// law, Written
     /// cycles with growth.
     std::string
     unused_growth_entry(const std::string                        &path,
@@ -185,6 +186,7 @@ namespace bilayer
         "Fracture/Mode II toughness",
         "Fracture/Mixed-mode law",
         "Fracture/Mixed-mode exponent",
+        "Fracture/Mode mix",
         "Fracture/Growth increment",
         "Fracture/Growing tips",
         "Fracture/Exact onsets",
@@ -198,8 +200,10 @@ namespace bilayer
                ": Output/Written steps)";
       const std::string law =
         value("Fracture/Mixed-mode law", "mode independent");
-      if (law == "mode independent" && (path == "Fracture/Mode II toughness" ||
-                                        path == "Fracture/Mixed-mode exponent"))
+      if (law == "mode independent" &&
+          (path == "Fracture/Mode II toughness" ||
+           path == "Fracture/Mixed-mode exponent" ||
+           path == "Fracture/Mode mix"))
         return "not used (Fracture/Mixed-mode law = mode independent)";
       return "";
     }

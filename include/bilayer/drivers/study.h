@@ -293,6 +293,12 @@ namespace bilayer
     /// The criterion of Fracture/Mixed-mode law at the tip of @p g.
     GrowthCriterion
     criterion_at(const EnergyReleaseRate &g) const;
+
+    /// @p g with the mode split the growth law reads (Fracture/Mode mix):
+    /// the closure split, or G cos^2 psi, G sin^2 psi of the phase angle of
+    /// K (NaN, with a note, where there is none).
+    EnergyReleaseRate
+    law_split(const EnergyReleaseRate &g) const;
     /// Growth at the load @p lambda until every criterion is below 1.
     bool
     grow_at_load(const double lambda, const dealii::Timer &total);

@@ -81,6 +81,11 @@ namespace bilayer
     std::string  mode_ii_toughness   = "";
     MixedModeLaw mixed_mode_law      = MixedModeLaw::mode_independent;
     double       mixed_mode_exponent = 1;
+    /// The mode mix the mode-dependent laws read: the crack-closure split
+    /// G_I, G_II (false) or that of the stress intensity factors,
+    /// G_I = G cos^2 psi, G_II = G sin^2 psi with psi their phase angle at
+    /// the reference length (true).
+    bool mode_mix_from_k = false;
     /// Vertices of Sigma a growing tip advances per growth step.
     unsigned int growth_increment = 1;
     /// The tips that may grow (numbers 1, 2, ... of the initial tips ordered
