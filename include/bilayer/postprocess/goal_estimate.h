@@ -81,7 +81,8 @@ namespace bilayer
    *    with the volume terms of the loads); the estimate is the residual
    *    of the state weighted by z~ - I z~, z~ the patchwise reconstruction
    *    of degree p + 1 of the dual solution z (a least-squares fit over the
-   *    cell and its face neighbours), I the interpolation of the element;
+   *    cell and its face neighbours, enriched on the cells at a tip by the
+   *    tip's r^(1/2) functions), I the interpolation of the element;
    *  - the energy: -1/2 the residual weighted by the reconstruction of
    *    the state itself (no dual problem).
    * The residual: the cell residual f + div sigma(w), half the traction
@@ -120,7 +121,8 @@ namespace bilayer
     /**
      * The residual of the state @p w of @p sub weighted by z~ - I z~ for
      * each field z of @p fields (its reconstruction of degree p + 1 on the
-     * patch of each cell): the cell contributions eta_K, by field, by
+     * patch of each cell, with the near-tip functions of @p tips on the
+     * cells at a tip): the cell contributions eta_K, by field, by
      * active_cell_index().
      */
     std::vector<dealii::Vector<double>>
