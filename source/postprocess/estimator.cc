@@ -7,6 +7,7 @@
 #include <bilayer/core/tasks.h>
 #include <bilayer/interface/interface_diagnostics.h>
 #include <bilayer/postprocess/estimator.h>
+#include <bilayer/postprocess/stress_divergence.h>
 
 #include <algorithm>
 #include <array>
@@ -222,21 +223,12 @@ namespace bilayer
                 residual = load.body_force(x) / S;
               std::array<SymmetricTensor<2, 2>, 2> d_eps_star;
               if (volume->has_eigenstrain())
-                d_eps_star = load.eigenstrain_gradient(x);
-              for (unsigned int j = 0; j < 2; ++j)
                 {
-                  // d eps(w) / d x_j - d eps* / d x_j.
-                  SymmetricTensor<2, 2> d_eps;
-                  const Tensor<3, 2>   &H = hessians[q];
-                  d_eps[0][0]             = H[0][0][j];
-                  d_eps[1][1]             = H[1][1][j];
-                  d_eps[0][1]             = 0.5 * (H[0][1][j] + H[1][0][j]);
-                  if (volume->has_eigenstrain())
-                    d_eps -= d_eps_star[j] / S;
-                  const SymmetricTensor<2, 2> d_sigma = law.stress(d_eps);
-                  residual[0] += d_sigma[0][j];
-                  residual[1] += d_sigma[1][j];
+                  d_eps_star = load.eigenstrain_gradient(x);
+                  d_eps_star[0] /= S;
+                  d_eps_star[1] /= S;
                 }
+              residual += stress_divergence(law, hessians[q], d_eps_star);
               sum += (residual * residual) / (scale * scale) * fe_values.JxW(q);
             }
           const double h = cell->diameter();

@@ -9,6 +9,7 @@
 #include <bilayer/core/boundary_ids.h>
 #include <bilayer/core/similarity_breaker.h>
 #include <bilayer/postprocess/goal_estimate.h>
+#include <bilayer/postprocess/stress_divergence.h>
 
 #include <algorithm>
 #include <cmath>
@@ -348,18 +349,7 @@ namespace bilayer
             residual[q] = volume->in(*cell).body_force(x);
           if (volume != nullptr && volume->has_eigenstrain())
             d_eps_star = volume->in(*cell).eigenstrain_gradient(x);
-          for (unsigned int j = 0; j < 2; ++j)
-            {
-              SymmetricTensor<2, 2> d_eps;
-              const Tensor<3, 2>   &H = hessians[q];
-              d_eps[0][0]             = H[0][0][j];
-              d_eps[1][1]             = H[1][1][j];
-              d_eps[0][1]             = 0.5 * (H[0][1][j] + H[1][0][j]);
-              d_eps -= d_eps_star[j];
-              const SymmetricTensor<2, 2> d_sigma = law.stress(d_eps);
-              residual[q][0] += d_sigma[0][j];
-              residual[q][1] += d_sigma[1][j];
-            }
+          residual[q] += stress_divergence(law, hessians[q], d_eps_star);
         }
       return residual;
     }
