@@ -415,13 +415,14 @@ namespace bilayer
             step.tips.push_back(tip);
             continue;
           }
-        tip.present      = true;
-        tip.s            = g->tip.s;
-        tip.point        = g->tip.point;
-        tip.G            = g->G;
-        tip.G_I          = law_split(*g).G_I;
-        tip.G_II         = law_split(*g).G_II;
-        tip.piece_length = piece_length(crack, tip.s, 10 * tol);
+        tip.present                   = true;
+        tip.s                         = g->tip.s;
+        tip.point                     = g->tip.point;
+        tip.G                         = g->G;
+        const EnergyReleaseRate split = law_split(*g);
+        tip.G_I                       = split.G_I;
+        tip.G_II                      = split.G_II;
+        tip.piece_length              = piece_length(crack, tip.s, 10 * tol);
         if (!g->tip.defined())
           followed_tip.stopped = "at a corner of Sigma";
         else if (!std::isfinite(g->G))
