@@ -372,9 +372,17 @@ namespace bilayer
     for (const double m : record.memory_mib)
       pcout << " " << std::fixed << std::setprecision(0) << m;
     pcout << " (estimated " << record.memory_estimate_mib << ")";
-    pcout << "\n"
-          << std::defaultfloat << std::setprecision(3)
-          << "  wall time                    setup " << record.setup_seconds
+    pcout << "\n" << std::defaultfloat << std::setprecision(3);
+    if (!record.factor_flops.empty())
+      {
+        pcout << "  factorisations               ";
+        for (unsigned int s = 0; s < record.factor_flops.size(); ++s)
+          pcout << (s > 0 ? "; " : "") << record.factor_orderings[s] << " "
+                << record.factor_flops[s] << " flops "
+                << record.factor_entries[s] << " entries";
+        pcout << "\n";
+      }
+    pcout << "  wall time                    setup " << record.setup_seconds
           << " s, solve " << record.solve_seconds << " s, total "
           << record.total_seconds << " s" << std::endl;
     for (const auto &c : record.checks)

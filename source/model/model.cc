@@ -232,6 +232,8 @@ namespace bilayer
                 distribution,
                 regions_and_layers.n_regions());
               ElasticSubproblem *const target = sub.get();
+              target->set_ordering(static_cast<SparseCholesky::OrderingChoice>(
+                scene.solver.ordering));
               setups.add([&, target, l, i]() {
                 target->setup(scene.geometry.clamped,
                               *prescribed[l],
@@ -290,6 +292,29 @@ namespace bilayer
           record.assembly_seconds += sub->assembly_seconds;
           record.factorisation_seconds += sub->factorisation_seconds;
         }
+    // The ordering, flops and entries of each factor, from its owner.
+    PerSubproblem<double> ordering(subproblems.size(), 0),
+      flops(subproblems.size(), 0), entries(subproblems.size(), 0);
+    for (unsigned int s = 0; s < subproblems.size(); ++s)
+      if (subproblems[s] != nullptr && subproblems[s]->owned())
+        {
+          const auto &report = subproblems[s]->ordering_report();
+          ordering[s]        = static_cast<double>(report.chosen);
+          flops[s]           = report.flops;
+          entries[s]         = report.entries;
+        }
+    distribution.share(ordering);
+    distribution.share(flops);
+    distribution.share(entries);
+    record.factor_orderings.clear();
+    for (unsigned int s = 0; s < subproblems.size(); ++s)
+      record.factor_orderings.push_back(
+        flops[s] > 0 ?
+          SparseCholesky::name(
+            static_cast<SparseCholesky::Ordering>(std::lround(ordering[s]))) :
+          "shared solver");
+    record.factor_flops   = flops;
+    record.factor_entries = entries;
     // The busiest process's share.
     record.assembly_seconds = distribution.max(record.assembly_seconds);
     record.factorisation_seconds =

@@ -266,6 +266,15 @@ namespace bilayer
         record_field("memory_mib", [](const R &r) { return r.memory_mib; }),
         record_field("memory_estimate_mib",
                      [](const R &r) { return r.memory_estimate_mib; }),
+        record_field("ordering", [](const R &r) {
+          std::string names;
+          for (const auto &o : r.factor_orderings)
+            names += (names.empty() ? "" : ", ") + o;
+          return names; }).in("factors"),
+        record_field("flops", [](const R &r) { return r.factor_flops; })
+          .in("factors"),
+        record_field("entries", [](const R &r) { return r.factor_entries; })
+          .in("factors"),
         record_field("setup", [](const R &r) { return r.setup_seconds; })
           .in("wall_seconds").csv(21, "setup_seconds"),
         record_field("assembly", [](const R &r) { return r.assembly_seconds; })

@@ -117,6 +117,19 @@ namespace bilayer
                       "multiplier meshes and projected onto the multiplier "
                       "sets (false: from zero, as in the paper).");
     prm.declare_entry(
+      "Ordering",
+      "minimum degree",
+      Patterns::Selection("minimum degree|nested dissection|fewest flops"),
+      "Fill-reducing ordering of each subproblem's Cholesky factorisation "
+      "with its Sigma dofs last (Solve on Sigma): minimum degree "
+      "(constrained approximate minimum degree, CAMD), nested dissection "
+      "(CHOLMOD's, with METIS, of the other dofs' vertex graph, Sigma the "
+      "last separator), or fewest flops (both analysed, the one with fewer "
+      "factorisation flops kept; matrices below 4000 dofs: minimum degree). "
+      "Changes round-off only; the terminal and summary.json (factors) "
+      "name the ordering, flops and entries of each factor "
+      "(docs/performance.md, 'Orderings').");
+    prm.declare_entry(
       "Solve on Sigma",
       "true",
       Patterns::Bool(),
@@ -212,9 +225,13 @@ namespace bilayer
                            prm.get("Acceptance tolerance")));
     warm_start     = prm.get_bool("Warm start");
     solve_on_sigma = prm.get_bool("Solve on Sigma");
-    shared_solver  = prm.get("Shared subproblem solver") == "klu" ?
-                       "Amesos_Klu" :
-                       "Amesos_Mumps";
+    {
+      const std::string o = prm.get("Ordering");
+      ordering = o == "minimum degree" ? 0 : o == "nested dissection" ? 1 : 2;
+    }
+    shared_solver = prm.get("Shared subproblem solver") == "klu" ?
+                      "Amesos_Klu" :
+                      "Amesos_Mumps";
     prm.enter_subsection("Active set");
     const std::string p = prm.get("Preconditioner");
     preconditioner      = p == "dirichlet" ? DualPreconditioner::dirichlet :

@@ -1,9 +1,12 @@
 #include <deal.II/base/exceptions.h>
 
+#include <bilayer/core/huge_pages.h>
 #include <bilayer/subproblem/cholesky.h>
 
 #include <algorithm>
 #include <cholmod.h>
+#include <cstdlib>
+#include <mutex>
 #include <new>
 
 namespace bilayer
@@ -21,6 +24,7 @@ namespace bilayer
   SparseCholesky::SparseCholesky()
     : data(std::make_unique<Data>())
   {
+    huge_pages::use_for_cholmod();
     cholmod_start(&data->common);
     data->common.print = 0;
   }
@@ -31,6 +35,49 @@ namespace bilayer
     if (data->factor)
       cholmod_free_factor(&data->factor, &data->common);
     cholmod_finish(&data->common);
+  }
+
+
+  std::string
+  SparseCholesky::name(const Ordering ordering)
+  {
+    switch (ordering)
+      {
+        case Ordering::minimum_degree:
+          return "minimum degree";
+        case Ordering::nested_dissection:
+          return "nested dissection";
+        default:
+          return "CHOLMOD's choice";
+      }
+  }
+
+
+  std::vector<SparseCholesky::Ordering>
+  SparseCholesky::orderings(const std::size_t n) const
+  {
+    switch (ordering_choice)
+      {
+        case OrderingChoice::nested_dissection:
+          return {Ordering::nested_dissection};
+        case OrderingChoice::fewest_flops:
+          // Below a few thousand unknowns the bisections cost more than
+          // any difference in the factorisation.
+          if (n >= 4000)
+            return {Ordering::minimum_degree, Ordering::nested_dissection};
+          return {Ordering::minimum_degree};
+        default:
+          return {Ordering::minimum_degree};
+      }
+  }
+
+
+  void
+  SparseCholesky::record(const int)
+  {
+    report.chosen  = Ordering::cholmod_default;
+    report.flops   = data->common.fl;
+    report.entries = data->common.lnz;
   }
 
 
@@ -100,9 +147,150 @@ namespace bilayer
   SparseCholesky::try_initialize(const SparseMatrix<double> &matrix)
   {
     void *a = copy_matrix(matrix);
+    report  = OrderingReport();
     data->factor =
       cholmod_analyze(static_cast<cholmod_sparse *>(a), &data->common);
+    record(data->factor ? data->factor->ordering : -1);
     return factorise(a);
+  }
+
+
+  namespace
+  {
+    /**
+     * The graph of @p matrix (its full symmetric pattern) on the indices
+     * with @p member 0, compressed: runs of consecutive indices with equal
+     * rows (the components of one vertex) are one node. Returns the
+     * pattern (CHOLMOD, upper triangle) over the nodes; @p first and
+     * @p size hold each node's first index and its number of indices.
+     */
+    cholmod_sparse *
+    compressed_interior(const SparseMatrix<double> &matrix,
+                        const std::vector<int>     &member,
+                        std::vector<int>           &first,
+                        std::vector<int>           &size,
+                        cholmod_common             *common)
+    {
+      const SparsityPattern &pattern = matrix.get_sparsity_pattern();
+      const std::size_t      n       = matrix.m();
+      const auto equal_rows = [&](const std::size_t i, const std::size_t j) {
+        if (pattern.row_length(i) != pattern.row_length(j))
+          return false;
+        // deal.II stores the diagonal first, then the row sorted.
+        std::vector<std::size_t> ci, cj;
+        for (auto e = pattern.begin(i); e != pattern.end(i); ++e)
+          ci.push_back(e->column());
+        for (auto e = pattern.begin(j); e != pattern.end(j); ++e)
+          cj.push_back(e->column());
+        std::sort(ci.begin(), ci.end());
+        std::sort(cj.begin(), cj.end());
+        return ci == cj;
+      };
+      std::vector<int> node(n, -1);
+      first.clear();
+      size.clear();
+      for (std::size_t i = 0; i < n; ++i)
+        if (member[i] == 0)
+          {
+            if (i > 0 && node[i - 1] >= 0 && equal_rows(i - 1, i))
+              {
+                node[i] = node[i - 1];
+                ++size.back();
+              }
+            else
+              {
+                node[i] = first.size();
+                first.push_back(i);
+                size.push_back(1);
+              }
+          }
+      const std::size_t             n_nodes = first.size();
+      std::vector<std::vector<int>> adjacent(n_nodes);
+      for (std::size_t c = 0; c < n_nodes; ++c)
+        {
+          for (auto e = pattern.begin(first[c]); e != pattern.end(first[c]);
+               ++e)
+            {
+              const int d = node[e->column()];
+              if (d >= 0 && d <= static_cast<int>(c))
+                adjacent[c].push_back(d);
+            }
+          std::sort(adjacent[c].begin(), adjacent[c].end());
+          adjacent[c].erase(std::unique(adjacent[c].begin(), adjacent[c].end()),
+                            adjacent[c].end());
+        }
+      std::size_t nz = 0;
+      for (const auto &a : adjacent)
+        nz += a.size();
+      cholmod_sparse *b = cholmod_allocate_sparse(
+        n_nodes, n_nodes, nz, 1, 1, 1, CHOLMOD_PATTERN, common);
+      if (b == nullptr)
+        throw std::bad_alloc();
+      auto *bp = static_cast<int *>(b->p);
+      auto *bi = static_cast<int *>(b->i);
+      int   k  = 0;
+      for (std::size_t c = 0; c < n_nodes; ++c)
+        {
+          bp[c] = k;
+          for (const int d : adjacent[c])
+            bi[k++] = d;
+        }
+      bp[n_nodes] = k;
+      return b;
+    }
+  } // namespace
+
+
+  bool
+  SparseCholesky::ordering_with_last(void                       *matrix_copy,
+                                     const SparseMatrix<double> &matrix,
+                                     const std::vector<int>     &member,
+                                     const Ordering              ordering,
+                                     std::vector<int>           &permutation)
+  {
+    auto             *a = static_cast<cholmod_sparse *>(matrix_copy);
+    const std::size_t n = data->n;
+    permutation.assign(n, 0);
+    if (ordering == Ordering::minimum_degree)
+      // CAMD with the indices of T in the second constraint set: they come
+      // after all others.
+      return cholmod_camd(a,
+                          nullptr,
+                          0,
+                          const_cast<int *>(member.data()),
+                          permutation.data(),
+                          &data->common);
+    // Nested dissection of the interior (CHOLMOD's: METIS node bisections,
+    // constrained minimum degree on the separator tree) on the graph of
+    // its vertices, T appended: T is the last separator.
+    std::vector<int> first, size;
+    cholmod_sparse  *b =
+      compressed_interior(matrix, member, first, size, &data->common);
+    const std::size_t n_nodes = b->ncol;
+    std::vector<int>  order(n_nodes), parent(n_nodes), component(n_nodes);
+    // METIS draws from one random-number state per process, seeded at
+    // each call: calls from concurrent subproblem set-ups would interleave
+    // their draws and make the ordering depend on the timing.
+    static std::mutex                 metis;
+    const std::lock_guard<std::mutex> lock(metis);
+    const auto                        components = cholmod_nested_dissection(b,
+                                                      nullptr,
+                                                      0,
+                                                      order.data(),
+                                                      parent.data(),
+                                                      component.data(),
+                                                      &data->common);
+    cholmod_free_sparse(&b, &data->common);
+    if (components < 0)
+      return false;
+    std::size_t k = 0;
+    for (const int c : order)
+      for (int j = first[c]; j < first[c] + size[c]; ++j)
+        permutation[k++] = j;
+    for (std::size_t j = 0; j < n; ++j)
+      if (member[j] != 0)
+        permutation[k++] = j;
+    return true;
   }
 
 
@@ -112,25 +300,21 @@ namespace bilayer
   {
     auto             *a = static_cast<cholmod_sparse *>(copy_matrix(matrix));
     const std::size_t n = data->n, m = last.size();
+    report = OrderingReport();
     if (m == 0 || m >= n)
       {
         data->factor = cholmod_analyze(a, &data->common);
+        record(data->factor ? data->factor->ordering : -1);
         return factorise(a);
       }
-    // CAMD with the indices of T in the second constraint set: they come
-    // after all others. The elimination tree's postorder keeps them there
-    // (they are the ancestors of every other node that couples to them);
-    // checked below on the factor's permutation.
-    std::vector<int> member(n, 0), permutation(n);
+    // T after all other indices, by constrained minimum degree and by
+    // nested dissection; the one with fewer flops is factorised. The
+    // elimination tree's postorder keeps T last (T holds the ancestors of
+    // every other node that couples to it); checked below on the factor's
+    // permutation.
+    std::vector<int> member(n, 0);
     for (const unsigned int i : last)
       member[i] = 1;
-    const bool ordered = cholmod_camd(
-      a, nullptr, 0, member.data(), permutation.data(), &data->common);
-    if (!ordered)
-      {
-        data->factor = cholmod_analyze(a, &data->common);
-        return factorise(a);
-      }
     // The factor as L L^T (a simplicial one is LDL^T otherwise), supernodal
     // or simplicial as CHOLMOD chooses (simplicial for small matrices).
     const int nmethods              = data->common.nmethods,
@@ -139,21 +323,46 @@ namespace bilayer
     data->common.nmethods           = 1;
     data->common.method[0].ordering = CHOLMOD_GIVEN;
     data->common.final_ll           = 1;
-    data->factor =
-      cholmod_analyze_p(a, permutation.data(), nullptr, 0, &data->common);
+    for (const Ordering candidate : orderings(n))
+      {
+        std::vector<int> permutation;
+        if (!ordering_with_last(a, matrix, member, candidate, permutation))
+          continue;
+        cholmod_factor *f =
+          cholmod_analyze_p(a, permutation.data(), nullptr, 0, &data->common);
+        if (f == nullptr)
+          continue;
+        const double flops = data->common.fl, entries = data->common.lnz;
+        report.candidates.push_back({candidate, flops, entries});
+        if (data->factor == nullptr || flops < report.flops)
+          {
+            if (data->factor)
+              cholmod_free_factor(&data->factor, &data->common);
+            data->factor   = f;
+            report.chosen  = candidate;
+            report.flops   = flops;
+            report.entries = entries;
+          }
+        else
+          cholmod_free_factor(&f, &data->common);
+      }
     data->common.nmethods           = nmethods;
     data->common.method[0].ordering = ordering;
     if (data->factor == nullptr)
       {
-        cholmod_free_sparse(&a, &data->common);
-        throw std::bad_alloc();
+        data->common.final_ll = final_ll;
+        data->factor          = cholmod_analyze(a, &data->common);
+        record(data->factor ? data->factor->ordering : -1);
+        return factorise(a);
       }
     // The dense block of |T|^2 entries must not outgrow the sparse factor.
-    const double sparse_entries = data->common.lnz;
+    const double sparse_entries = report.entries;
     if (static_cast<double>(m) * m > sparse_entries)
       {
         cholmod_free_factor(&data->factor, &data->common);
-        data->factor = cholmod_analyze(a, &data->common);
+        data->common.final_ll = final_ll;
+        data->factor          = cholmod_analyze(a, &data->common);
+        record(data->factor ? data->factor->ordering : -1);
         return factorise(a);
       }
     const bool factorised = factorise(a);

@@ -86,6 +86,12 @@ namespace bilayer
     /// Parts of setup_seconds: assembly and factorisation of the four
     /// subproblems, summed.
     double assembly_seconds = 0, factorisation_seconds = 0;
+    /// Per subproblem: the fill-reducing ordering of its factorisation
+    /// (Solver/Ordering), the factorisation's flops and the factor's
+    /// entries (CHOLMOD's fl and lnz; 0 where a group of processes shares
+    /// the subproblem: MUMPS or KLU).
+    std::vector<std::string> factor_orderings;
+    std::vector<double>      factor_flops, factor_entries;
 
     /// What the solver or the checks add to a failure (e.g. the bound p).
     std::string note;

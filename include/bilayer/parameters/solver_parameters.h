@@ -84,6 +84,10 @@ namespace bilayer
     bool warm_start = false;
     /// Iterate on Sigma alone (Schur complements, SolveExtent::sigma).
     bool solve_on_sigma = true;
+    /// Solver/Ordering: the fill-reducing ordering of the factorisations
+    /// with the Sigma dofs last (SparseCholesky::OrderingChoice's codes:
+    /// 0 minimum degree, 1 nested dissection, 2 fewest flops).
+    unsigned int ordering = 0;
 
     /// Whether the outer solver's iterations need the solutions on Sigma
     /// only (with solve_on_sigma): the active set method, and the

@@ -69,6 +69,52 @@ namespace bilayer
   class SparseCholesky
   {
   public:
+    /// The fill-reducing orderings with the trace indices last.
+    enum class Ordering
+    {
+      /// Constrained approximate minimum degree (CAMD).
+      minimum_degree,
+      /// CHOLMOD's nested dissection (METIS node bisections, constrained
+      /// minimum degree on the separator tree) of the other indices, the
+      /// trace indices appended as the last separator.
+      nested_dissection,
+      /// CHOLMOD's own choice (no indices to keep last).
+      cholmod_default
+    };
+
+    /// What an analysis found: the flops and the entries of the factor
+    /// (CHOLMOD's fl and lnz) of each ordering tried and of the one kept.
+    struct OrderingReport
+    {
+      struct Candidate
+      {
+        Ordering ordering;
+        double   flops, entries;
+      };
+      std::vector<Candidate> candidates;
+      Ordering               chosen = Ordering::cholmod_default;
+      double                 flops = 0, entries = 0;
+    };
+
+    /// Which orderings the analysis with trace indices last tries.
+    enum class OrderingChoice
+    {
+      minimum_degree,
+      nested_dissection,
+      fewest_flops
+    };
+
+    /// Set which orderings try_initialize() with trace indices tries.
+    void
+    set_ordering(const OrderingChoice choice)
+    {
+      ordering_choice = choice;
+    }
+
+    /// The name of @p ordering in the outputs.
+    static std::string
+    name(Ordering ordering);
+
     SparseCholesky();
     ~SparseCholesky();
     SparseCholesky(const SparseCholesky &) = delete;
@@ -97,6 +143,13 @@ namespace bilayer
     bool
     try_initialize(const dealii::SparseMatrix<double> &matrix,
                    const std::vector<unsigned int>    &last);
+
+    /// The orderings tried by the last analysis and the one kept.
+    const OrderingReport &
+    ordering_report() const
+    {
+      return report;
+    }
 
     /// The factor of the Schur complement on the indices given to
     /// try_initialize() (nullptr if none was kept).
@@ -128,6 +181,23 @@ namespace bilayer
     struct Data;
     std::unique_ptr<Data>                  data;
     std::unique_ptr<SchurComplementFactor> schur;
+    OrderingReport                         report;
+    OrderingChoice ordering_choice = OrderingChoice::minimum_degree;
+
+    /// The orderings try_initialize() compares for a matrix of size @p n.
+    std::vector<Ordering>
+    orderings(std::size_t n) const;
+    /// The permutation of @p ordering with the indices of @p member 1
+    /// last; false if CHOLMOD failed.
+    bool
+    ordering_with_last(void                               *matrix_copy,
+                       const dealii::SparseMatrix<double> &matrix,
+                       const std::vector<int>             &member,
+                       Ordering                            ordering,
+                       std::vector<int>                   &permutation);
+    /// Record the ordering CHOLMOD chose itself (its method's code).
+    void
+    record(int cholmod_ordering);
 
     /// The CHOLMOD copy of @p matrix's upper triangle (rows as columns).
     void *

@@ -416,6 +416,20 @@ namespace bilayer
     double assembly_seconds      = 0;
     double factorisation_seconds = 0;
 
+    /// The orderings the next setup() tries (Solver/Ordering).
+    void
+    set_ordering(const SparseCholesky::OrderingChoice choice)
+    {
+      factorisation.set_ordering(choice);
+    }
+    /// What the last setup()'s analysis found (on an owner that factorises
+    /// alone; empty otherwise).
+    const SparseCholesky::OrderingReport &
+    ordering_report() const
+    {
+      return factorisation.ordering_report();
+    }
+
   private:
     /// With condensed(): the load @p coupling (zero off the Sigma dofs)
     /// condensed onto the unconstrained Sigma dofs, in the order of the
