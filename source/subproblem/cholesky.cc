@@ -359,9 +359,10 @@ namespace bilayer
     const double sparse_entries = report.entries;
     if (static_cast<double>(m) * m > sparse_entries)
       {
+        // CHOLMOD's own ordering, the factor still as L L^T (and so for
+        // this object's later analyses: the bits of every earlier version).
         cholmod_free_factor(&data->factor, &data->common);
-        data->common.final_ll = final_ll;
-        data->factor          = cholmod_analyze(a, &data->common);
+        data->factor = cholmod_analyze(a, &data->common);
         record(data->factor ? data->factor->ordering : -1);
         return factorise(a);
       }
