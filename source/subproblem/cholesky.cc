@@ -73,7 +73,7 @@ namespace bilayer
 
 
   void
-  SparseCholesky::record(const int)
+  SparseCholesky::record_cholmod_choice()
   {
     report.chosen  = Ordering::cholmod_default;
     report.flops   = data->common.fl;
@@ -150,7 +150,7 @@ namespace bilayer
     report  = OrderingReport();
     data->factor =
       cholmod_analyze(static_cast<cholmod_sparse *>(a), &data->common);
-    record(data->factor ? data->factor->ordering : -1);
+    record_cholmod_choice();
     return factorise(a);
   }
 
@@ -304,11 +304,11 @@ namespace bilayer
     if (m == 0 || m >= n)
       {
         data->factor = cholmod_analyze(a, &data->common);
-        record(data->factor ? data->factor->ordering : -1);
+        record_cholmod_choice();
         return factorise(a);
       }
-    // T after all other indices, by constrained minimum degree and by
-    // nested dissection; the one with fewer flops is factorised. The
+    // T after all other indices, by each ordering Solver/Ordering names;
+    // of several, the one with fewer flops is factorised. The
     // elimination tree's postorder keeps T last (T holds the ancestors of
     // every other node that couples to it); checked below on the factor's
     // permutation.
@@ -333,7 +333,6 @@ namespace bilayer
         if (f == nullptr)
           continue;
         const double flops = data->common.fl, entries = data->common.lnz;
-        report.candidates.push_back({candidate, flops, entries});
         if (data->factor == nullptr || flops < report.flops)
           {
             if (data->factor)
@@ -352,7 +351,7 @@ namespace bilayer
       {
         data->common.final_ll = final_ll;
         data->factor          = cholmod_analyze(a, &data->common);
-        record(data->factor ? data->factor->ordering : -1);
+        record_cholmod_choice();
         return factorise(a);
       }
     // The dense block of |T|^2 entries must not outgrow the sparse factor.
@@ -363,7 +362,7 @@ namespace bilayer
         // this object's later analyses: the bits of every earlier version).
         cholmod_free_factor(&data->factor, &data->common);
         data->factor = cholmod_analyze(a, &data->common);
-        record(data->factor ? data->factor->ordering : -1);
+        record_cholmod_choice();
         return factorise(a);
       }
     const bool factorised = factorise(a);

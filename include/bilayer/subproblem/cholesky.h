@@ -82,18 +82,12 @@ namespace bilayer
       cholmod_default
     };
 
-    /// What an analysis found: the flops and the entries of the factor
-    /// (CHOLMOD's fl and lnz) of each ordering tried and of the one kept.
+    /// What an analysis found: the ordering kept, the flops and the
+    /// entries of its factor (CHOLMOD's fl and lnz).
     struct OrderingReport
     {
-      struct Candidate
-      {
-        Ordering ordering;
-        double   flops, entries;
-      };
-      std::vector<Candidate> candidates;
-      Ordering               chosen = Ordering::cholmod_default;
-      double                 flops = 0, entries = 0;
+      Ordering chosen = Ordering::cholmod_default;
+      double   flops = 0, entries = 0;
     };
 
     /// Which orderings the analysis with trace indices last tries.
@@ -195,9 +189,9 @@ namespace bilayer
                        const std::vector<int>             &member,
                        Ordering                            ordering,
                        std::vector<int>                   &permutation);
-    /// Record the ordering CHOLMOD chose itself (its method's code).
+    /// Record CHOLMOD's own choice of ordering and its factor's size.
     void
-    record(int cholmod_ordering);
+    record_cholmod_choice();
 
     /// The CHOLMOD copy of @p matrix's upper triangle (rows as columns).
     void *
