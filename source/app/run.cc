@@ -272,8 +272,11 @@ namespace bilayer
                 << " (the subproblems' tasks), " << blas_threads
                 << " BLAS thread" << (blas_threads > 1 ? "s" : "")
                 << " per call"
-                << (variable.empty() ? "" : " (" + variable + ")") << "; BLAS "
-                << blas_library() << std::endl;
+                << (variable.empty() ? "" : " (" + variable + ")")
+                << (factorisation_loops_serial() ?
+                      ", the factorisations' OpenMP loops in one thread" :
+                      "")
+                << "; BLAS " << blas_library() << std::endl;
     }
 
 

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <dlfcn.h>
 #include <fstream>
 #include <memory>
@@ -267,6 +268,36 @@ namespace bilayer
                       value + "'"));
         n = static_cast<unsigned int>(asked);
       }
-    return set_blas_threads(n);
+    const unsigned int in_effect = set_blas_threads(n);
+    fit_factorisation_loops(in_effect);
+    return in_effect;
+  }
+
+
+  void
+  fit_factorisation_loops(const unsigned int blas_threads_per_call)
+  {
+    // OpenMP's max-active-levels is one setting of the process (libgomp
+    // keeps it globally): 0 makes every parallel region a team of one.
+    const auto get = reinterpret_cast<int (*)()>(
+      dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+    const auto set = reinterpret_cast<void (*)(int)>(
+      dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+    if (get == nullptr || set == nullptr)
+      return;
+    static const int library_default = get();
+    const char      *choice          = std::getenv("BILAYER_OPENMP_LOOPS");
+    const bool       library =
+      choice != nullptr && std::strcmp(choice, "library") == 0;
+    set(blas_threads_per_call <= 1 && !library ? 0 : library_default);
+  }
+
+
+  bool
+  factorisation_loops_serial()
+  {
+    const auto get = reinterpret_cast<int (*)()>(
+      dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+    return get != nullptr && get() == 0;
   }
 } // namespace bilayer

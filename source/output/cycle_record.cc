@@ -474,7 +474,8 @@ namespace bilayer
         << ", \"blas\": " << blas_threads() << ", \"blas_set_by\": "
         << json(blas_threads_variable().empty() ? "bilayer" :
                                                   blas_threads_variable())
-        << "}},\n  \"cycles\": [";
+        << ", \"factorisation_loops\": "
+        << (factorisation_loops_serial() ? 1 : 0) << "}},\n  \"cycles\": [";
     for (unsigned int i = 0; i < records.size(); ++i)
       {
         out << (i ? "," : "") << "\n    {";

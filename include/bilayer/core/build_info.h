@@ -95,6 +95,29 @@ namespace bilayer
   unsigned int
   fit_blas_threads(const unsigned int threads, const unsigned int tasks);
 
+  /**
+   * The sparse factorisations' own OpenMP loops (CHOLMOD's supernodal
+   * assembly: parallel regions of a team size fixed when CHOLMOD was built,
+   * four in Debian's) follow the BLAS: where each task's BLAS call has one
+   * thread (@p blas_threads_per_call <= 1), every OpenMP parallel region of
+   * the process runs as a team of one (OpenMP's max-active-levels 0),
+   * because the tasks already occupy the cores and the extra teams only
+   * spin and switch (Example 1 at 1.05 million dofs: 20 % of the process's
+   * CPU time, docs/performance.md "OpenMP in the factorisations"); else
+   * the OpenMP library's default, also where the environment says
+   * BILAYER_OPENMP_LOOPS=library (for benchmarks: scripts/bench_fine_mesh
+   * --study setup). Called by fit_blas_threads(); nothing
+   * where no OpenMP library is loaded. Changes no result: the loops
+   * scatter independent columns.
+   */
+  void
+  fit_factorisation_loops(const unsigned int blas_threads_per_call);
+
+  /// Whether the OpenMP parallel regions run as teams of one
+  /// (fit_factorisation_loops()).
+  bool
+  factorisation_loops_serial();
+
   /** @} */
 } // namespace bilayer
 
