@@ -63,6 +63,11 @@ COMMANDS = {
                                                  '--set "Solver/Auto theta steps=constant"')},
     "table1_auto": {"command": RUN % 'parameter_files/table1.prm --set "Solver/Uzawa step theta=auto"'},
     "table1_quads_3": {"command": RUN % 'parameter_files/table1_quads.prm --set "Mesh/Number of cycles=3"'},
+    # docs/performance.md: the peer (scipy, monolithic P1) and bilayer's triangles on one mesh.
+    "peer_16": {"command": "/usr/bin/python3 scripts/peer_reference --single 16"},
+    "triangles_16": {"command": RUN % ('parameter_files/partial_closure.prm ' + AS +
+                                       '--set "Mesh/Element shape=triangles" '
+                                       '--set "Solver/Stopping rule=kkt" --set "Solver/Tolerance=1e-10"')},
     # docs/performance.md: the active set on the Table 1 triangles (KKT 1e-10, as bench_solvers).
     "table1_active_set": {"command": RUN % ('parameter_files/table1.prm ' + AS +
                                             '--set "Solver/Tolerance=1e-10"')},
@@ -207,6 +212,13 @@ CLAIMS = [
      "command": "table1_quads_3", "extract": json_key("cycles.%d.iterations" % k),
      "tolerance": ("exact",)}
     for k, (p, m, paper) in enumerate([(13, 48, 843), (25, 96, 1164), (49, 192, 1416)])
+] + [
+    {"id": "performance.peer.energy_16", "doc": "docs/performance.md", "fast": False,
+     "pattern": Q("the peer's energy at N = 16 is {}"), "command": "peer_16",
+     "extract": {"regex": r"energy Pi = (\S+)"}, "tolerance": ("rel", 1e-10)},
+    {"id": "performance.peer.triangles_16", "doc": "docs/performance.md", "fast": False,
+     "pattern": Q("bilayer's on the same triangles {}"), "command": "triangles_16",
+     "extract": json_key("cycles.-1.energy"), "tolerance": ("rel", 1e-9)},
 ] + [
     {"id": "performance.active_set.newton_triangles_%d" % k, "doc": "docs/performance.md", "fast": True,
      "pattern": r"\*\*Newton steps\*\* " + r"\d+, " * k + r"(\d+)",
