@@ -274,13 +274,24 @@ namespace bilayer
   }
 
 
+  namespace
+  {
+    /// OpenMP's omp_get_max_active_levels where an OpenMP library is
+    /// loaded (CHOLMOD's libgomp), else nullptr.
+    int (*openmp_get_levels())()
+    {
+      return reinterpret_cast<int (*)()>(
+        dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+    }
+  } // namespace
+
+
   void
   fit_factorisation_loops(const unsigned int blas_threads_per_call)
   {
     // OpenMP's max-active-levels is one setting of the process (libgomp
     // keeps it globally): 0 makes every parallel region a team of one.
-    const auto get = reinterpret_cast<int (*)()>(
-      dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+    const auto get = openmp_get_levels();
     const auto set = reinterpret_cast<void (*)(int)>(
       dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
     if (get == nullptr || set == nullptr)
@@ -296,8 +307,7 @@ namespace bilayer
   bool
   factorisation_loops_serial()
   {
-    const auto get = reinterpret_cast<int (*)()>(
-      dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+    const auto get = openmp_get_levels();
     return get != nullptr && get() == 0;
   }
 } // namespace bilayer

@@ -102,8 +102,9 @@ namespace bilayer
    * thread (@p blas_threads_per_call <= 1), every OpenMP parallel region of
    * the process runs as a team of one (OpenMP's max-active-levels 0),
    * because the tasks already occupy the cores and the extra teams only
-   * spin and switch (Example 1 at 1.05 million dofs: 20 % of the process's
-   * CPU time, docs/performance.md "OpenMP in the factorisations"); else
+   * spin and switch (Example 1 at 1.05 million dofs: the factorisations
+   * 8.99 → 7.47 s summed, docs/performance.md "0.31.0: the factorisations'
+   * OpenMP loops"); else
    * the OpenMP library's default, also where the environment says
    * BILAYER_OPENMP_LOOPS=library (for benchmarks: scripts/bench_fine_mesh
    * --study setup). Called by fit_blas_threads(); nothing
