@@ -41,6 +41,9 @@ The scripts import it from their own directory (`import bilayer_run`):
                            includes, then SETTINGS), from bilayer PRM
                            --print-parameters; exits 1 with bilayer's line
                            when it refuses the file
+    read_entries(prm, settings, binary) -> (entries, refusal)
+                           the same without exiting: (None, bilayer's
+                           line) where bilayer refuses the file
     figure_path(script, value, inside)
                            a --figure PNG: new, or a committed file under
                            docs/; one line and exit 1 otherwise
@@ -383,12 +386,21 @@ def scene(prm, settings=(), binary=None):
     reads it: the file with its includes, then SETTINGS (a dict or a list
     of "Section/Entry=value"), from `bilayer PRM --print-parameters`. Exits
     1 with bilayer's one line where it refuses the file or a setting."""
+    entries, refusal = read_entries(prm, settings, binary)
+    if entries is None:
+        sys.exit(refusal)
+    return entries
+
+
+def read_entries(prm, settings=(), binary=None):
+    """(entries, None) with entries as scene() returns them, or (None, the
+    line bilayer refused PRM or SETTINGS with) where it refuses them."""
     p = subprocess.run(command(prm, settings, binary=binary or BILAYER) + ["--print-parameters"],
                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     if p.returncode != 0:
         lines = p.stderr.strip().splitlines()
-        sys.exit(lines[-1] if lines else "%s: bilayer could not read %s (exit %d)" % (
-            os.path.basename(sys.argv[0]), prm, p.returncode))
+        return None, lines[-1] if lines else "%s: bilayer could not read %s (exit %d)" % (
+            os.path.basename(sys.argv[0]), prm, p.returncode)
     entries, sections = {}, []
     for line in p.stdout.splitlines():
         line = line.strip()
@@ -401,7 +413,7 @@ def scene(prm, settings=(), binary=None):
             entries["/".join(sections + [key.strip()])] = value.strip()
         elif line.startswith("set ") and line.endswith(" ="):
             entries["/".join(sections + [line[4:-2].strip()])] = ""
-    return entries
+    return entries, None
 
 
 def safe_name(prm):

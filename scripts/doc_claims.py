@@ -25,7 +25,8 @@ CLAIMS: one dict per quoted number:
                number is the measured one rounded to the quoted digits;
                ("rel", 1e-3) relative; ("factor", 3) timings
     fast       True when the command takes a few seconds (CI runs these)
-    kind       "test_table" (the README's test table against ctest -N) or
+    kind       "test_table" (the test table of the claim's doc, docs/developer.md,
+               against ctest -N) or
                "ctest_count" (the quoted number of tests), no command
 
 To add a claim: add the command if it is new (give its runs an output
@@ -50,10 +51,10 @@ def json_key(key, file="r/summary.json"):
 RUN = '{bilayer} %s --set "Output/Output directory={out}/r" --set "Output/Write VTU=false" > {out}/log'
 AS = '--set "Solver/Method=active set" '
 COMMANDS = {
-    # README: the paper's run and the one-line converged command against a
-    # 16-cycle reference, with wall times.
+    # README (tour, "Converge it"): the paper's run and the one-line converged
+    # command against a 16-cycle reference, with wall times.
     "paper_settings": {"command": "scripts/paper_settings"},
-    # README: the paper's three scenes at their default meshes.
+    # docs/scenes.md: the paper's three scenes at their default meshes.
     "run_examples": {"command": "scripts/run_examples --output {out}/r"},
     # docs/reproduction.md: Table 1 (theta = 65), meshes 1-4 (a few seconds).
     "table1_4": {"command": RUN % 'parameter_files/table1.prm --set "Mesh/Number of cycles=4"'},
@@ -71,7 +72,15 @@ COMMANDS = {
     # docs/performance.md: the active set on the Table 1 triangles (KKT 1e-10, as bench_solvers).
     "table1_active_set": {"command": RUN % ('parameter_files/table1.prm ' + AS +
                                             '--set "Solver/Tolerance=1e-10"')},
-    # README: the efficiency index of eta on Example 1, Q1, four uniform cycles.
+    # README (tour, "Read G ± dG"): G and dG at the open tip of the main
+    # command (one cycle) and of the converged command (12 adaptive Q2 cycles).
+    "main_command": {"command": RUN % "parameter_files/partial_closure.prm"},
+    "converged_command": {"command": RUN % ('parameter_files/partial_closure.prm ' + AS +
+                                            '--set "Mesh/Refinement=adaptive" --set "Mesh/Number of cycles=12" '
+                                            '--set "Mesh/Polynomial degree of layer 1=2" '
+                                            '--set "Mesh/Polynomial degree of layer 2=2" '
+                                            '--set "Solver/Warm start=true"')},
+    # docs/outputs.md: the efficiency index of eta on Example 1, Q1, four uniform cycles.
     "mesh_convergence_ex1": {"command": 'scripts/mesh_convergence parameter_files/partial_closure.prm '
                                         '--output {out}/m --set "Mesh/Number of cycles=4" '
                                         '--set "Solver/Method=active set"'},
@@ -103,11 +112,13 @@ COMMANDS = {
                                             '--set "Mesh/Number of cycles=28"'},
     # docs/geometry.md: the composite ply (issue 32), its own settings (a few seconds).
     "composite_ply": {"command": RUN % "parameter_files/composite_ply.prm"},
-    # docs/fracture.md §6 and README: Example 1 with friction (about a minute).
+    # docs/fracture.md §6 and docs/scenes.md: Example 1 with friction (about a minute).
     "friction_study": {"command": "scripts/friction_study --output {out}/f"},
     # docs/performance.md: the cost of a growth curve (about a minute).
     "bench_growth": {"command": "scripts/bench_growth --no-outputs --repeat 2 --output {out}/b"},
-    # README: the DCB debonding under a rising force (a few seconds).
+    # docs/tour.md: the newcomer's path after the set-up (a few seconds).
+    "tour": {"command": "scripts/tour --output {out}/t --bilayer {bilayer}"},
+    # docs/scenes.md: the DCB debonding under a rising force (a few seconds).
     "dcb_growth": {"command": '{bilayer} parameter_files/dcb_growth.prm --set "Output/Output directory={out}/r" '
                               '--set "Output/Write VTU=false"'},
 }
@@ -118,12 +129,12 @@ EFFICIENCY = r"^\s*\d+\s+\d+(?:\s+\S+){6}\s+(\S+)\s+\d+\s*$"  # the column effic
 RATIO = r"energy error \|dPi\|/\|Pi\| (\S+)"
 
 CLAIMS = [
-    # The counts of the test suite.
-    {"id": "tests.count", "doc": "README.md", "kind": "ctest_count", "fast": True,
+    # docs/developer.md: the counts of the test suite.
+    {"id": "tests.count", "doc": "docs/developer.md", "kind": "ctest_count", "fast": True,
      "pattern": Q("ctest knows {} tests"), "tolerance": ("exact",)},
-    {"id": "tests.table", "doc": "README.md", "kind": "test_table", "fast": True},
+    {"id": "tests.table", "doc": "docs/developer.md", "kind": "test_table", "fast": True},
 
-    # README, the paper's settings against the converged solution.
+    # README (tour, "Converge it"), the paper's settings against the converged solution.
     {"id": "readme.paper.energy_error", "doc": "README.md", "fast": True,
      "pattern": Q("the main command's energy error |Pi_h − Pi|/|Pi| is {} %"),
      "command": "paper_settings", "extract": {"regex": PAPER + RATIO}, "scale": 100,
@@ -155,24 +166,84 @@ CLAIMS = [
      "command": "paper_settings", "extract": {"regex": QUICK + r"dofs\s+(\S+) s"},
      "tolerance": ("factor", 3)},
 
-    # README, scripts/run_examples.
-    {"id": "readme.run_examples.iterations_1", "doc": "README.md", "fast": True,
+    # README (tour, "Read G ± dG"), G ± dG of the main and the converged command.
+    {"id": "readme.tour.G_main", "doc": "README.md", "fast": True,
+     "pattern": Q("`\"converged\": true`, gives G = {} ± 7.3e-08 at the open"),
+     "command": "main_command", "extract": json_key("cycles.-1.crack_tips.0.G"),
+     "tolerance": ("rounded",)},
+    {"id": "readme.tour.dG_main", "doc": "README.md", "fast": True,
+     "pattern": Q("gives G = 3.8428e-07 ± {} at the open"),
+     "command": "main_command", "extract": json_key("cycles.-1.crack_tips.0.G_error"),
+     "tolerance": ("rounded",)},
+    {"id": "readme.tour.G_converged", "doc": "README.md", "fast": True,
+     "pattern": Q("the converged command above gives G = {} ± 2.3e-10 there"),
+     "command": "converged_command", "extract": json_key("cycles.-1.crack_tips.0.G"),
+     "tolerance": ("rounded",)},
+    {"id": "readme.tour.dG_converged", "doc": "README.md", "fast": True,
+     "pattern": Q("the converged command above gives G = 4.8523e-07 ± {} there"),
+     "command": "converged_command", "extract": json_key("cycles.-1.crack_tips.0.G_error"),
+     "tolerance": ("rounded",)},
+
+    # docs/tour.md, scripts/tour.
+    {"id": "tour.G", "doc": "docs/tour.md", "fast": True,
+     "pattern": Q("The open tip at x = -0.6: G = {} ± 3.9e-10"),
+     "command": "tour", "extract": {"regex": r"tip 1 \(x = -0.6\): G = (\S+) ±"},
+     "tolerance": ("rounded",)},
+    {"id": "tour.dG", "doc": "docs/tour.md", "fast": True,
+     "pattern": Q("G = 8.0086e-07 ± {} after 11 cycles"),
+     "command": "tour", "extract": {"regex": r"tip 1 \(x = -0.6\): G = \S+ ± (\S+)"},
+     "tolerance": ("rounded",)},
+    {"id": "tour.cycles", "doc": "docs/tour.md", "fast": True,
+     "pattern": Q("± 3.9e-10 after {} cycles"),
+     "command": "tour", "extract": {"regex": r"tip 1 .* after (\d+) cycles"},
+     "tolerance": ("exact",)},
+    {"id": "tour.dofs", "doc": "docs/tour.md", "fast": True,
+     "pattern": Q("after 11 cycles ({} dofs, adaptive"),
+     "command": "tour", "extract": {"regex": r"tip 1 .* cycles, (\d+) dofs"},
+     "tolerance": ("exact",)},
+    {"id": "tour.converge_wall", "doc": "docs/tour.md", "fast": True,
+     "pattern": Q("Q2) in {} s (2-core x86_64 VM"),
+     "command": "tour", "extract": {"regex": r"step 2, converge:.*\n\s+(\S+) s"},
+     "tolerance": ("factor", 3)},
+    {"id": "tour.closed_G", "doc": "docs/tour.md", "fast": True,
+     "pattern": Q("is closed: G = {} ± 5.9e-10"),
+     "command": "tour", "extract": {"regex": r"tip 2 \(x = 0.4\): G = (\S+) ±"},
+     "tolerance": ("rounded",)},
+    {"id": "tour.sweep_wall", "doc": "docs/tour.md", "fast": True,
+     "pattern": Q("two at a time, in {} s (2-core"),
+     "command": "tour", "extract": {"regex": r"step 3, sweep:.*\n\s+(\S+) s"},
+     "tolerance": ("factor", 3)},
+    {"id": "tour.sweep_G_28", "doc": "docs/tour.md", "fast": True,
+     "pattern": Q("falls from {} (E_2 = 28)"),
+     "command": "tour", "extract": {"regex": r"^\| 1 \| 28 \| 0 \|(?: [^|]* \|){5} (\S+) \|"},
+     "tolerance": ("rounded",)},
+    {"id": "tour.sweep_G_224", "doc": "docs/tour.md", "fast": True,
+     "pattern": Q("to {} (E_2 = 224)"),
+     "command": "tour", "extract": {"regex": r"^\| 4 \| 224 \| 0 \|(?: [^|]* \|){5} (\S+) \|"},
+     "tolerance": ("rounded",)},
+    {"id": "tour.total_wall", "doc": "docs/tour.md", "fast": True,
+     "pattern": Q("steps 2–4 took {} s of machine time"),
+     "command": "tour", "extract": {"regex": r"tour: steps 2-4 in (\S+) s"},
+     "tolerance": ("factor", 3)},
+
+    # docs/scenes.md, scripts/run_examples.
+    {"id": "readme.run_examples.iterations_1", "doc": "docs/scenes.md", "fast": True,
      "pattern": r"it printed (\d+), \d+ and \d+ iterations",
      "command": "run_examples", "extract": {"regex": r"^partial_closure\s+(\d+)"}, "tolerance": ("exact",)},
-    {"id": "readme.run_examples.iterations_2", "doc": "README.md", "fast": True,
+    {"id": "readme.run_examples.iterations_2", "doc": "docs/scenes.md", "fast": True,
      "pattern": r"it printed \d+, (\d+) and \d+ iterations",
      "command": "run_examples", "extract": {"regex": r"^full_opening\s+(\d+)"}, "tolerance": ("exact",)},
-    {"id": "readme.run_examples.iterations_3", "doc": "README.md", "fast": True,
+    {"id": "readme.run_examples.iterations_3", "doc": "docs/scenes.md", "fast": True,
      "pattern": r"it printed \d+, \d+ and (\d+) iterations",
      "command": "run_examples", "extract": {"regex": r"^partial_closure_linear\s+(\d+)"},
      "tolerance": ("exact",)},
 
-    # README, the efficiency index of eta (scripts/mesh_convergence).
-    {"id": "readme.eta.efficiency_min", "doc": "README.md", "fast": True,
+    # docs/outputs.md, the efficiency index of eta (scripts/mesh_convergence).
+    {"id": "readme.eta.efficiency_min", "doc": "docs/outputs.md", "fast": True,
      "pattern": Q("Its efficiency index eta / e_h on Example 1, Q1, uniform refinement is {}–"),
      "command": "mesh_convergence_ex1", "extract": {"regex": EFFICIENCY, "reduce": "min"},
      "tolerance": ("rounded",)},
-    {"id": "readme.eta.efficiency_max", "doc": "README.md", "fast": True,
+    {"id": "readme.eta.efficiency_max", "doc": "docs/outputs.md", "fast": True,
      "pattern": r"uniform refinement is \d\.\d+–" + Q("{} on its four cycles"),
      "command": "mesh_convergence_ex1", "extract": {"regex": EFFICIENCY, "reduce": "max"},
      "tolerance": ("rounded",)},
@@ -273,19 +344,19 @@ CLAIMS = [
     {"id": "reproduction.quads.time", "doc": "docs/reproduction.md", "fast": False,
      "pattern": Q("12 · 2^k cells along Sigma; about {} s on"), "command": "mesh_convergence_quads",
      "extract": "wall", "tolerance": ("factor", 2)},
-    {"id": "readme.hard_cases.time", "doc": "README.md", "fast": False,
-     "pattern": Q("cleanly refused/stopped ([docs/robustness.md](docs/robustness.md)); {} s"),
+    {"id": "readme.hard_cases.time", "doc": "docs/scripts.md", "fast": False,
+     "pattern": Q("cleanly refused/stopped ([docs/robustness.md](robustness.md)); {} s"),
      "command": "hard_cases", "extract": "wall", "tolerance": ("factor", 2)},
     {"id": "robustness.hard_cases.time", "doc": "docs/robustness.md", "fast": False,
      "pattern": Q("60 runs in 140 s on 2026-11-29; {} s on 2026-12-02"), "command": "hard_cases",
      "extract": {"regex": r"\d+ runs in (\d+) s"}, "tolerance": ("factor", 2)},
-    {"id": "readme.work_precision.time", "doc": "README.md", "fast": False,
-     "pattern": Q("gnuplot PNGs ([docs/accuracy.md](docs/accuracy.md)); {} s"),
+    {"id": "readme.work_precision.time", "doc": "docs/scripts.md", "fast": False,
+     "pattern": Q("gnuplot PNGs ([docs/accuracy.md](accuracy.md)); {} s"),
      "command": "work_precision", "extract": "wall", "tolerance": ("factor", 2)},
     {"id": "accuracy.work_precision.time", "doc": "docs/accuracy.md", "fast": False,
      "pattern": Q("Total wall time of the study: 216 s (2026-11-29; {} s on 2026-12-02"), "command": "work_precision",
      "extract": {"regex": r"Total wall time of the study: (\d+) s"}, "tolerance": ("factor", 2)},
-    {"id": "readme.work_precision.one_percent_time", "doc": "README.md", "fast": False,
+    {"id": "readme.work_precision.one_percent_time", "doc": "docs/discretisation.md", "fast": False,
      "pattern": Q("docs/accuracy.md; {} s on 2026-12-02, the same VM"), "command": "work_precision",
      "extract": {"regex": r"^\| adaptive Q1, active set \|(?: [^|]+ \|){8} (\S+) \|"},
      "tolerance": ("factor", 2)},
@@ -293,7 +364,7 @@ CLAIMS = [
      "pattern": Q("2.6e5 DoFs and 13 s (measured; {} s on 2026-12-02"), "command": "work_precision",
      "extract": {"regex": r"^\| adaptive Q1, active set \|(?: [^|]+ \|){8} (\S+) \|"},
      "tolerance": ("factor", 2)},
-    {"id": "readme.work_precision.one_percent_dofs", "doc": "README.md", "fast": False,
+    {"id": "readme.work_precision.one_percent_dofs", "doc": "docs/discretisation.md", "fast": False,
      "pattern": Q("and 1 % with {} DoFs in 13 s"), "command": "work_precision",
      "extract": {"regex": r"^\| adaptive Q1, active set \|(?: [^|]+ \|){7} (\S+) \|"},
      "tolerance": ("rounded",)},
@@ -311,7 +382,7 @@ CLAIMS = [
     {"id": "fracture.friction.stick_from", "doc": "docs/fracture.md", "fast": False,
      "pattern": Q("From F = {} on, the nodes next to the tip stick"), "command": "friction_study",
      "extract": {"regex": r"sticks from F = (\S+) on"}, "tolerance": ("exact",)},
-    {"id": "readme.friction.stick_from", "doc": "README.md", "fast": False,
+    {"id": "readme.friction.stick_from", "doc": "docs/scenes.md", "fast": False,
      "pattern": Q("from F = {} on (128 cells) the faces next to it stick"),
      "command": "friction_study",
      "extract": {"regex": r"sticks from F = (\S+) on"}, "tolerance": ("exact",)},
@@ -330,17 +401,17 @@ CLAIMS = [
      "pattern": Q("On the otherwise idle machine (ratio {}, the performance.growth.ratio"),
      "command": "bench_growth", "extract": {"regex": r"wall \(b\) / wall \(a\) = (\S+)"},
      "tolerance": ("factor", 1.5)},
-    {"id": "readme.dcb_growth.onset", "doc": "README.md", "fast": True,
+    {"id": "readme.dcb_growth.onset", "doc": "docs/scenes.md", "fast": True,
      "pattern": Q("the crack starts at the exact onset λ_c ≈ {} and runs"), "command": "dcb_growth",
-     "extract": {"regex": r"unstable growth at lambda = (\S+) from"}, "tolerance": ("rounded",)},
-    {"id": "readme.dcb_growth.end", "doc": "README.md", "fast": True,
+     "extract": {"regex": r"unstable growth at (?:lambda =|load factor) (\S+) from"}, "tolerance": ("rounded",)},
+    {"id": "readme.dcb_growth.end", "doc": "docs/scenes.md", "fast": True,
      "pattern": Q("runs unstably at that load to x = {}, one cell"), "command": "dcb_growth",
-     "extract": {"regex": r"unstable growth at lambda = \S+ from crack length \S+ to (\S+) "},
+     "extract": {"regex": r"unstable growth at (?:lambda =|load factor) \S+ from crack length \S+ to (\S+) "},
      "tolerance": ("rounded",)},
-    {"id": "readme.dcb_growth.steps", "doc": "README.md", "fast": True,
+    {"id": "readme.dcb_growth.steps", "doc": "docs/scenes.md", "fast": True,
      "pattern": Q("can no longer be resolved ({} steps in"), "command": "dcb_growth",
      "extract": {"regex": r"^growth: (\d+) steps"}, "tolerance": ("exact",)},
-    {"id": "readme.dcb_growth.time", "doc": "README.md", "fast": True,
+    {"id": "readme.dcb_growth.time", "doc": "docs/scenes.md", "fast": True,
      "pattern": Q("steps in {} s with `Write VTU = false`, 2-core x86_64 VM"), "command": "dcb_growth",
      "extract": "wall", "tolerance": ("factor", 3)},
     {"id": "fracture.crack_growth.time", "doc": "docs/fracture.md", "fast": False,

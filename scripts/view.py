@@ -5,8 +5,13 @@ its own colour scale (its own colour bar), the cell edges alike on both,
 with the interface Sigma drawn on top: the crack faces of each layer warped
 by their traces (u_minus/u_plus, v_minus/v_plus) and coloured by the contact
 pressure (grey: 0, an open or untouched face), the glued part as a thin black
-line. The title, the colour bars and the legend are measured as drawn and
-fitted into the picture. Writes a PNG and/or a ParaView state file, and with
+line; length axes below and left of each layer (round ticks of the undeformed
+coordinates in the length unit); the crack tips' energy release rates G
+(summary.json's crack_tips of the cycle) listed beside the picture, each
+tip's number drawn at the tip. Units: summary.json's "units" (stress,
+length, energy_release_rate), else "units of E", "length unit", "units of E
+× length". The title, the colour bars, the legend and the list of tips are
+measured as drawn and fitted into the picture. Writes a PNG and/or a ParaView state file, and with
 "describe" a JSON account of what was drawn (tests/cli/view_scene.py).
 
 Three modes:
@@ -37,6 +42,7 @@ import xml.etree.ElementTree as ET
 
 MARKER = "bilayer scripts/view"
 STRESS_FIELDS = ("von_mises", "stress_xx", "stress_yy", "stress_zz", "stress_xy")
+TIPS_LISTED = 8  # the crack tips listed with their G and numbered in the picture
 
 
 class ViewError(Exception):
@@ -182,13 +188,31 @@ def discover(directory, cycle, field):
             if isinstance(r, dict) and r.get("cycle") == cycles[index]:
                 record = r
     except (OSError, ValueError, RecursionError):
-        pass
+        summary = {}
+    units = summary.get("units") if isinstance(summary.get("units"), dict) else {}
+    tips = [t for t in record.get("crack_tips") or [] if isinstance(t, dict) and
+            all(isinstance(t.get(k), (int, float)) and not isinstance(t.get(k), bool)
+                for k in ("x", "y"))] if isinstance(record.get("crack_tips"), list) else []
     return {"dir": os.path.abspath(d), "solution": os.path.abspath(solution),
             "interface": interface and os.path.abspath(interface), "note": note,
             "pieces": [os.path.abspath(p) for p in pieces] or [os.path.abspath(solution)],
             "cycle": cycles[index], "cycles": cycles, "time": time,
             "layer_association": layer_association, "field": field,
-            "field_components": point[field], "scene": scene, "record": record}
+            "field_components": point[field], "scene": scene, "record": record,
+            "units": {k: unit_text(units.get(k)) for k in ("length", "stress", "energy_release_rate")},
+            "tips": tips}
+
+
+def unit_text(value):
+    """A unit of summary.json as drawn (ParaView's fonts hold Latin-1: the
+    Greek mu becomes the micro sign), or None where it is not a short line
+    of text."""
+    if not isinstance(value, str):
+        return None
+    text = " ".join(value.replace("\u03bc", "\u00b5").split())
+    if not text or len(text) > 40 or not text.isprintable():
+        return None
+    return text
 
 
 def nice(x):
@@ -348,10 +372,12 @@ def render(args):
     # and would leave everything else in the lowest colour. The largest
     # value is named in the colour bar's title.
     components = -1 if info["field_components"] > 1 else 0
+    stress_unit = info["units"]["stress"] or "units of E"
+    length_unit = info["units"]["length"] or "length unit"
     if field in STRESS_FIELDS:
-        unit = "units of E"
+        unit = stress_unit
     elif field == "displacement":
-        unit = "length unit"
+        unit = length_unit
     else:
         unit = None
     field_name = {"von_mises": "von Mises"}.get(field, field)
@@ -408,7 +434,7 @@ def render(args):
         cp.ColorSpace = "RGB"
         cp.AutomaticRescaleRangeMode = "Never"
         cbar = GetScalarBar(cp, view)
-        cbar.Title = "Sigma: contact_pressure\n[units of E]"
+        cbar.Title = "Sigma: contact pressure\n[%s]" % stress_unit
         cbar.ComponentTitle = ""
         cp.RescaleTransferFunction(0.0, top_value)
         legend = ("Sigma, thick: the crack faces\n"
@@ -453,6 +479,15 @@ def render(args):
     ndisplay = Show(note, view)
     ndisplay.WindowLocation = "Any Location"
     ndisplay.Color = [0.2, 0.2, 0.2]
+    notes = [ndisplay]
+    if info["tips"]:
+        g_unit = info["units"]["energy_release_rate"] or "units of E × length"
+        gtext = Text(registrationName="crack tips", Text=tips_text(info["tips"], g_unit))
+        gdisplay = Show(gtext, view)
+        gdisplay.WindowLocation = "Any Location"
+        gdisplay.Justification = "Left"
+        gdisplay.Color = [0, 0, 0]
+        notes.append(gdisplay)
 
     # The legends, measured as ParaView draws them and fitted into the
     # picture: the title across the top, the colour bars and the legend text
@@ -462,17 +497,19 @@ def render(args):
     f, length = 1.0, min(0.22 * height, 230 * px)
     for attempt in range(12):
         tdisplay.FontSize = max(6, int(round(19 * px * f)))
-        ndisplay.FontSize = max(6, int(round(14 * px * f)))
+        for d in notes:
+            d.FontSize = max(6, int(round(14 * px * f)))
         for bar in column:
             style_bar(bar, px * f, length / height)
         Render(view)
         t_rect = text_rect(tdisplay, view)
         relative = [bar_rect(bar, width, height, relative=True) for bar in column]
-        n_rect = text_rect(ndisplay, view)
+        n_rects = [text_rect(d, view) for d in notes]
         gap = 16 * px * f
-        top_margin = (t_rect[3] - t_rect[1]) + 2 * pad
-        col_w = max([r_[2] - r_[0] for r_ in relative] + [n_rect[2] - n_rect[0]]) + 2 * pad
-        need = sum(r_[3] - r_[1] for r_ in relative) + (n_rect[3] - n_rect[1]) + gap * len(column)
+        top_margin = (height - t_rect[1]) + pad  # (the title sits below the top edge)
+        col_w = max([r_[2] - r_[0] for r_ in relative + n_rects]) + 2 * pad
+        texts_h = sum(r_[3] - r_[1] for r_ in n_rects) + gap * (len(notes) - 1)
+        need = sum(r_[3] - r_[1] for r_ in relative) + texts_h + gap * len(column)
         avail = height - top_margin - pad
         fits_w = (t_rect[2] - t_rect[0] <= width - 2 * pad) and col_w <= 0.45 * width
         if t_rect[2] - t_rect[0] > width - 2 * pad and not wrapped and attempt >= 2:
@@ -481,7 +518,7 @@ def render(args):
             continue
         if need > avail:
             titles = sum(r_[3] - r_[1] for r_ in relative) - len(column) * length
-            shorter = (avail - (n_rect[3] - n_rect[1]) - gap * len(column) - titles) / max(1, len(column))
+            shorter = (avail - texts_h - gap * len(column) - titles) / max(1, len(column))
             if fits_w and shorter >= max(30.0, 50 * px * f):
                 length = shorter - 1
                 continue
@@ -495,38 +532,47 @@ def render(args):
     for bar, r_ in zip(column, relative):
         bar.Position = [(x0 - r_[0]) / width, (cursor - r_[3]) / height]
         cursor -= (r_[3] - r_[1]) + gap
-    # (the text's offset from its position, measured at the origin)
-    ndisplay.Position = [0.0, 0.0]
+    # (each text's offset from its position, measured at the origin)
+    for d in notes:
+        d.Position = [0.0, 0.0]
     Render(view)
-    n0 = text_rect(ndisplay, view)
-    ndisplay.Position = [(x0 - n0[0]) / width, (cursor - (n_rect[3] - n_rect[1]) - n0[1]) / height]
+    for d, n_rect in zip(notes, n_rects):
+        n0 = text_rect(d, view)
+        d.Position = [(x0 - n0[0]) / width, (cursor - (n_rect[3] - n_rect[1]) - n0[1]) / height]
+        cursor -= (n_rect[3] - n_rect[1]) + gap
 
     # Layout: one box for each layer (the union of the warped bounds of both),
     # side by side or one above the other, whichever shows them larger, in the
     # part of the picture left free by the title (top) and the colour bars
-    # (right).
+    # (right); each box with room for its length axes below and left of it.
     b = [min(layers[l].GetDataInformation().GetBounds()[i] for l in present) if i % 2 == 0 else
          max(layers[l].GetDataInformation().GetBounds()[i] for l in present) for i in range(4)]
     w, h = max(b[1] - b[0], 1e-12 * size), max(b[3] - b[2], 1e-12 * size)
     top, bottom, left = top_margin, 2 * pad, 2 * pad
-    label, lgap = 34 * px * f, 50 * px * f
+    # (label: the 10-pixel gap and the letters of "layer N (x)", 1.44 times
+    # their 20-pixel size with the descenders)
+    label, lgap = 40 * px * f, 50 * px * f
+    axes = Axes(view, px * f, length_unit, 3e-3 * size)
+    ax_left, ax_bottom = axes.room([sources[l].GetDataInformation().GetBounds() for l in present])
     box_w, box_h = max(width - left - right, 10.0), max(height - top - bottom, 10.0)
-    k_side = min((box_w - lgap) / (2 * w), (box_h - label) / h)
-    k_stack = min(box_w / w, (box_h - 2 * label - lgap) / (2 * h))
+    k_side = min((box_w - lgap - 2 * ax_left) / (2 * w), (box_h - label - ax_bottom) / h)
+    k_stack = min((box_w - ax_left) / w, (box_h - 2 * (label + ax_bottom) - lgap) / (2 * h))
     # (one above the other also when it is almost as large: Sigma's points
     # then lie at the same x in both layers)
     side = k_side > k_stack / 0.9
     k = max(k_side if side else k_stack, 1e-30)  # pixels per unit length
     if len(present) == 1:
-        k = max(min(box_w / w, (box_h - label) / h), 1e-30)
+        k = max(min((box_w - ax_left) / w, (box_h - label - ax_bottom) / h), 1e-30)
         offsets = {1: (0.0, 0.0)}
-        content = (b[0], b[1], b[2], b[3] + label / k)
+        content = (b[0] - ax_left / k, b[1], b[2] - ax_bottom / k, b[3] + label / k)
     elif side:
-        offsets = {1: (0.0, 0.0), 2: (w + lgap / k, 0.0)}
-        content = (b[0], b[0] + 2 * w + lgap / k, b[2], b[3] + label / k)
+        offsets = {1: (0.0, 0.0), 2: (w + (lgap + ax_left) / k, 0.0)}
+        content = (b[0] - ax_left / k, b[0] + 2 * w + (lgap + ax_left) / k, b[2] - ax_bottom / k,
+                   b[3] + label / k)
     else:
-        offsets = {1: (0.0, 0.0), 2: (0.0, -(h + (lgap + label) / k))}
-        content = (b[0], b[1], b[2] - h - (lgap + label) / k, b[3] + label / k)
+        offsets = {1: (0.0, 0.0), 2: (0.0, -(h + (lgap + label + ax_bottom) / k))}
+        content = (b[0] - ax_left / k, b[1], b[2] - h - (lgap + label + 2 * ax_bottom) / k,
+                   b[3] + label / k)
     eps = 1e-3 * size
     title.Text = title_lines(side, wrapped)
 
@@ -585,6 +631,19 @@ def render(args):
                     d.LookupTable = cp
                     d.LineWidth = 3.5 * px
 
+    # The length axes of each layer, and the number of each crack tip at
+    # the tip, warped with the layer (the numbers of the list of G).
+    axis_info = {layer: axes.add(layer, sources[layer].GetDataInformation().GetBounds(), b,
+                                 offsets[layer], k) for layer in present}
+    places = tip_places(info["tips"][:TIPS_LISTED], interface, scale)
+    for n, place in enumerate(places, 1):
+        for layer in present:
+            x, y = place[layer]
+            axes.labels.add("tip %d, layer %d" % (n, layer), "%d" % n,
+                            (x + offsets[layer][0], y + offsets[layer][1]), (0.5, 0.0),
+                            (0.0, 8 * px * f), colour=(0.55, 0.0, 0.0), bold=True)
+    labels_drawn = axes.labels.draw()
+
     # The camera: the content's box centred in the free part of the picture.
     Render(view)
     cx_px, cy_px = left + box_w / 2, bottom + box_h / 2
@@ -624,6 +683,20 @@ def render(args):
     if cbar is not None:
         scene["contact_pressure_bar"] = {"title": str(cbar.Title), "visible": bool(cbar.Visibility),
                                          "rect": normalised(bar_rect(cbar, width, height))}
+    scene["crack_tips"] = None if len(notes) < 2 else {
+        "text": str(notes[1].Input.Text), "rect": normalised(text_rect(notes[1], view)),
+        "font_size": int(notes[1].FontSize)}
+    scene["axes"] = {str(layer): dict(axis_info[layer], labels=[]) for layer in present}
+    scene["tip_labels"] = []
+    for name, text, point, (dx, dy, w_, h_) in labels_drawn:
+        x_ = width / 2 + (point[0] - fx) * k + dx
+        y_ = height / 2 + (point[1] - fy) * k + dy
+        entry = {"name": name, "text": text, "rect": normalised([x_, y_, x_ + w_, y_ + h_])}
+        layer = name.rsplit(" ", 1)[-1]
+        if name.startswith("tip "):
+            scene["tip_labels"].append(entry)
+        else:
+            scene["axes"][layer]["labels"].append(entry)
 
     if args.get("png"):
         SaveScreenshot(args["png"], view, ImageResolution=[width, height])
@@ -635,6 +708,206 @@ def render(args):
             json.dump(scene, out, indent=1)
             out.write("\n")
     print("view-done")
+
+
+def nice_ticks(lo, hi, most):
+    """Round values in [lo, hi], 1, 2 or 5 times a power of ten apart, at
+    most MOST of them (one, lo, where hi <= lo)."""
+    if not hi > lo:
+        return [lo]
+    e = 10.0 ** math.floor(math.log10((hi - lo) / max(1, most - 1)))
+    for m in (1, 2, 5, 10, 20):
+        step = m * e
+        first, last = math.ceil(lo / step - 1e-9), math.floor(hi / step + 1e-9)
+        if last - first + 1 <= most:
+            break
+    return [float("%.12g" % (i * step)) for i in range(int(first), int(last) + 1)]
+
+
+def tick_label(value):
+    text = "%.6g" % value
+    return "0" if text == "-0" else text
+
+
+class Labels:
+    """Texts drawn at points of the scene (ParaView's billboard text: the
+    font of the colour bars, kept beside its point when the view is zoomed
+    in the GUI), each aligned to its point: ALIGN (a, b) puts the point at
+    the fraction a of the text's width and b of its height, SHIFT (dx, dy)
+    moves it by pixels. The sizes are measured as drawn."""
+
+    def __init__(self, view, font, z):
+        self.view, self.font, self.z = view, font, z
+        self.items = []   # [text, point, align, shift, colour, bold, name]
+
+    def measure(self, strings):
+        """{text: (width, height)} in pixels of texts in this font."""
+        from paraview.simple import Delete, Hide, Render, Show, Text
+        probes = {}
+        for s in set(strings):
+            source = Text(Text=s)
+            display = Show(source, self.view)
+            display.FontSize = self.font
+            display.WindowLocation = "Any Location"
+            probes[s] = (source, display)
+        Render(self.view)
+        sizes = {}
+        for s, (source, display) in probes.items():
+            r = text_rect(display, self.view)
+            sizes[s] = (r[2] - r[0], r[3] - r[1])
+            Hide(source, self.view)
+            Delete(source)
+        return sizes
+
+    def add(self, name, text, point, align, shift=(0.0, 0.0), colour=(0, 0, 0), bold=False):
+        self.items.append([text, point, align, shift, colour, bold, name])
+
+    def draw(self):
+        """Shows every text at its point; returns [(name, text, point,
+        [dx, dy, width, height])], the offset of each text's lower left
+        corner from its point and its size in pixels."""
+        from paraview.simple import Show, Text
+        sizes = self.measure([i[0] for i in self.items])
+        drawn = []
+        for text, point, align, shift, colour, bold, name in self.items:
+            w_, h_ = sizes[text]
+            dx = -align[0] * w_ + shift[0]
+            dy = -align[1] * h_ + shift[1]
+            display = Show(Text(registrationName=name, Text=text), self.view)
+            display.TextPropMode = "Billboard 3D Text"
+            display.BillboardPosition = [point[0], point[1], self.z]
+            display.DisplayOffset = [int(round(dx)), int(round(dy))]
+            display.FontSize = self.font
+            display.Color = list(colour)
+            display.Bold = int(bold)
+            drawn.append((name, text, point, [round(dx), round(dy), w_, h_]))
+        return drawn
+
+
+class Axes:
+    """The length axes of the layers: an x axis below and a y axis left of
+    each layer's box, ticks at round values of the undeformed coordinates
+    (the reference bounds of the layer), the tick labels and the titles
+    "x [unit]", "y [unit]"."""
+
+    def __init__(self, view, scale, unit, z):
+        self.view, self.z, self.scale = view, z, scale
+        self.labels = Labels(view, max(7, int(round(15 * scale))), z)
+        self.tick, self.gap = 6 * scale, 4 * scale
+        self.titles = ("x [%s]" % unit, "y [%s]" % unit)
+
+    def room(self, bounds):
+        """(left, bottom): the pixels the axes take left of and below a
+        layer's box, for layers of the given reference bounds."""
+        ylabels = [tick_label(v) for b in bounds for v in nice_ticks(b[2], b[3], 5)]
+        self.sizes = self.labels.measure(list(self.titles) + ylabels + ["0"])
+        self.label_w = max(self.sizes[s][0] for s in ylabels)
+        self.label_h = self.sizes["0"][1]
+        g = self.gap
+        left = g + self.tick + g + self.label_w + 2 * g + self.sizes[self.titles[1]][0] + g
+        bottom = g + self.tick + g + self.label_h + g + self.sizes[self.titles[0]][1] + g
+        return left, bottom
+
+    def ticks(self, lo, hi, k, horizontal):
+        """The ticks in [lo, hi], as many (at most 6 along x, 5 along y) as
+        leave room between their labels at k pixels per length."""
+        for most in range(6 if horizontal else 5, 1, -1):
+            values = nice_ticks(lo, hi, most)
+            if len(values) < 2:
+                return values
+            need = (max(len(tick_label(v)) for v in values) * self.sizes["0"][0] + 2 * self.label_h
+                    if horizontal else 2 * self.label_h)
+            if (values[1] - values[0]) * k >= need:
+                return values
+        return nice_ticks(lo, hi, 2)
+
+    def add(self, layer, ref, box, offset, k):
+        """The axes of LAYER: REF its reference bounds, BOX the drawn box
+        (both layers' warped bounds), OFFSET its place in the picture; returns
+        {"x_ticks", "y_ticks", "x_title", "y_title"}."""
+        from paraview.simple import PolyLineSource, Show
+        ox, oy = offset
+        ay = box[2] + oy - self.gap / k  # the x axis, below the layer
+        ax = box[0] + ox - self.gap / k  # the y axis, left of it
+        xt = self.ticks(ref[0], ref[1], k, True)
+        yt = self.ticks(ref[2], ref[3], k, False)
+        t = self.tick / k
+        paths = {"x": [(ref[0] + ox, ay)] + [p for v in xt for p in ((v + ox, ay), (v + ox, ay - t), (v + ox, ay))] +
+                      [(ref[1] + ox, ay)],
+                 "y": [(ax, ref[2] + oy)] + [p for v in yt for p in ((ax, v + oy), (ax - t, v + oy), (ax, v + oy))] +
+                      [(ax, ref[3] + oy)]}
+        for name, points in sorted(paths.items()):
+            line = PolyLineSource(registrationName="%s axis, layer %d" % (name, layer))
+            line.Points = [c for p in points for c in (p[0], p[1], self.z)]
+            display = Show(line, self.view)
+            display.ColorArrayName = ["POINTS", ""]
+            display.AmbientColor = [0, 0, 0]
+            display.DiffuseColor = [0, 0, 0]
+            display.LineWidth = max(1.0, 1.5 * self.scale)
+        g = self.gap
+        for v in xt:
+            self.labels.add("x = %s, layer %d" % (tick_label(v), layer), tick_label(v),
+                            (v + ox, ay - t), (0.5, 1.0), (0.0, -g))
+        for v in yt:
+            self.labels.add("y = %s, layer %d" % (tick_label(v), layer), tick_label(v),
+                            (ax - t, v + oy), (1.0, 0.5), (-g, 0.0))
+        self.labels.add("x title, layer %d" % layer, self.titles[0], ((ref[0] + ref[1]) / 2 + ox, ay - t),
+                        (0.5, 1.0), (0.0, -(g + self.label_h + g)))
+        self.labels.add("y title, layer %d" % layer, self.titles[1], (ax - t, (ref[2] + ref[3]) / 2 + oy),
+                        (1.0, 0.5), (-(g + self.label_w + 2 * g), 0.0))
+        return {"x_ticks": xt, "y_ticks": yt, "x_title": self.titles[0], "y_title": self.titles[1]}
+
+
+def tip_places(tips, interface, scale):
+    """[{layer: (x, y)}]: where each tip is drawn on layers 1 and 2, its
+    point warped by the trace of the layer at the nearest point of Sigma's
+    polyline (u_minus, v_minus; glued there) times SCALE; the tip's own
+    point where there is no interface file or the tip lies on another
+    interface (crack_tips[].interface >= 2)."""
+    points, traces = [], {1: None, 2: None}
+    if interface is not None:
+        try:
+            from paraview import servermanager
+            data = servermanager.Fetch(interface)
+            points = [data.GetPoint(i) for i in range(data.GetNumberOfPoints())]
+            for layer, name in ((1, "u_minus"), (2, "v_minus")):
+                array = data.GetPointData().GetArray(name)
+                if array is not None:
+                    traces[layer] = [array.GetTuple(i) for i in range(len(points))]
+        except Exception:
+            points = []
+    places = []
+    for tip in tips:
+        x, y = float(tip["x"]), float(tip["y"])
+        place = {1: (x, y), 2: (x, y)}
+        if points and tip.get("interface", 1) == 1:
+            i = min(range(len(points)), key=lambda j: (points[j][0] - x) ** 2 + (points[j][1] - y) ** 2)
+            for layer in (1, 2):
+                if traces[layer] is not None:
+                    place[layer] = (points[i][0] + scale * traces[layer][i][0],
+                                    points[i][1] + scale * traces[layer][i][1])
+        places.append(place)
+    return places
+
+
+def tips_text(tips, unit, most=None):
+    """The energy release rate of each crack tip (summary.json's crack_tips
+    of the cycle), as listed beside the picture (the first MOST,
+    TIPS_LISTED by default)."""
+    most = most or TIPS_LISTED
+    def number(x):
+        return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
+    lines = ["crack tips: energy release rate", "G \u00b1 its error bar [%s]" % unit]
+    for n, tip in enumerate(tips[:most], 1):
+        g, e = tip.get("G"), tip.get("G_error")
+        value = "G = %.3g" % g if number(g) else "G not computed"
+        if number(g) and number(e):
+            value += " \u00b1 %.2g" % e
+        where = ", interface %s" % tip["interface"] if tip.get("interface", 1) != 1 else ""
+        lines.append("tip %d at (%.4g, %.4g)%s: %s" % (n, tip["x"], tip["y"], where, value))
+    if len(tips) > most:
+        lines.append("(%d more in summary.json)" % (len(tips) - most))
+    return "\n".join(lines)
 
 
 def bar_rect(bar, width, height, relative=False):

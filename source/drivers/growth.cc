@@ -82,6 +82,7 @@ namespace bilayer
                 ExcMessage("Study::run_growth needs Fracture/Crack growth"));
     growth_run       = true;
     outputs.deferred = true;
+    model.name_states_as_steps();
     const bool sweep = fracture.growth == CrackGrowth::sweep;
 
     // Subproblems shared by groups of processes (more than four) keep the
@@ -386,9 +387,8 @@ namespace bilayer
     step.load_factor  = lambda;
     step.kind         = kind;
     step.energy       = record.energy;
-    step.crack_length = 0;
-    for (const InterfaceCurve &curve : curves)
-      step.crack_length += total_length(curve.crack());
+    step.parts        = record.forces.parts;
+    step.crack_length = crack_length();
     measure_loading(step);
     for (FollowedTip &followed_tip : followed)
       {
@@ -563,6 +563,16 @@ namespace bilayer
           any = true;
         }
     return any;
+  }
+
+
+  double
+  Study::crack_length() const
+  {
+    double length = 0;
+    for (const InterfaceCurve &curve : model.geometry().interface_curves())
+      length += total_length(curve.crack());
+    return length;
   }
 
 

@@ -41,12 +41,16 @@ namespace bilayer
                                           growth_steps.size() - 1;
           const unsigned int n_tips   = followed.size();
           const unsigned int n_points = scene.output.displacement_points.size();
+          const std::vector<PartForce>  none;
+          const std::vector<PartForce> &parts =
+            growth_steps.empty() ? none : growth_steps[0].parts;
           if (!growth_head_written || growth_rows_written < done)
             append_to(dir + "/growth.csv", [&](std::ostream &o) {
               if (!growth_head_written)
-                write_growth_csv_head(o, n_tips, n_points);
+                write_growth_csv_head(o, n_tips, n_points, parts);
               for (std::size_t k = growth_rows_written; k < done; ++k)
-                write_growth_csv_row(o, growth_steps[k], n_tips, n_points);
+                write_growth_csv_row(
+                  o, growth_steps[k], n_tips, n_points, parts);
             });
           growth_head_written = true;
           growth_rows_written = done;
@@ -58,7 +62,8 @@ namespace bilayer
                             unstable_runs(growth_steps),
                             growth_stop);
               write_atomically(dir + "/summary.json", [&](std::ostream &o) {
-                write_summary_json(o, scene.name, cycle_records, growth);
+                write_summary_json(
+                  o, scene.name, cycle_records, growth, scene.output.units);
               });
               write_tables();
               write_collections(dir, outputs);
@@ -78,25 +83,47 @@ namespace bilayer
   }
 
 
+  double
+  Study::growth_step_time(const unsigned int step) const
+  {
+    switch (scene.output.growth_time)
+      {
+        case GrowthTime::step:
+          return step;
+        case GrowthTime::crack_length:
+          return crack_length();
+        default:
+          return model.load_factor();
+      }
+  }
+
+
+  std::string
+  Study::state_name(const unsigned int cycle) const
+  {
+    return (growth_run ? "step " : "cycle ") + std::to_string(cycle);
+  }
+
+
   void
   Study::print_growth_step(const GrowthStep &step) const
   {
-    pcout << "growth step " << step.step
-          << ": lambda = " << std::setprecision(8) << step.load_factor << " ("
-          << step.kind << "), crack length " << std::setprecision(6)
-          << step.crack_length;
+    // (rout: also with Terminal output = checks.)
+    rout << "step " << step.step << ": load factor " << std::setprecision(8)
+         << step.load_factor << " (" << step.kind << "), crack length "
+         << std::setprecision(6) << step.crack_length;
     for (const GrowthTip &tip : step.tips)
       if (tip.present)
         {
-          pcout << "; tip " << tip.number << " s = " << std::setprecision(6)
-                << tip.s << " G = " << std::scientific << std::setprecision(4)
-                << tip.G;
+          rout << "; tip " << tip.number << " s = " << std::setprecision(6)
+               << tip.s << " G = " << std::scientific << std::setprecision(4)
+               << tip.G;
           if (std::isfinite(tip.criterion))
-            pcout << " f = " << std::defaultfloat << std::setprecision(4)
-                  << tip.criterion;
-          pcout << std::defaultfloat << " [" << tip.status << "]";
+            rout << " f = " << std::defaultfloat << std::setprecision(4)
+                 << tip.criterion;
+          rout << std::defaultfloat << " [" << tip.status << "]";
         }
-    pcout << std::endl;
+    rout << std::endl;
   }
 
 
@@ -122,13 +149,20 @@ namespace bilayer
       write_step_fields(last);
     write_growth(true);
     const std::vector<UnstableRun> runs = unstable_runs(growth_steps);
-    pcout << "growth: " << growth_steps.size() << " steps, " << growth_stop;
+    rout << "growth: " << growth_steps.size() << " steps, " << growth_stop;
     for (const UnstableRun &run : runs)
-      pcout << "; unstable growth at lambda = " << std::setprecision(8)
-            << run.load_factor << " from crack length " << std::setprecision(6)
-            << run.from_length << " to " << run.to_length << " (steps "
-            << run.first_step << " to " << run.last_step << ")";
-    pcout << std::endl;
+      rout << "; unstable growth at load factor " << std::setprecision(8)
+           << run.load_factor << " from crack length " << std::setprecision(6)
+           << run.from_length << " to " << run.to_length << " (steps "
+           << run.first_step << " to " << run.last_step << ")";
+    rout << std::endl;
+    if (scene.output.growth_time == GrowthTime::load_factor &&
+        scene.output.write_vtu && !runs.empty())
+      rout << "growth: the steps of an unstable run share their load factor "
+              "as their time in solution.pvd and interface.pvd (ParaView "
+              "shows one of them); Output/Time of growth steps = step or "
+              "crack length shows each"
+           << std::endl;
     return passed;
   }
 } // namespace bilayer

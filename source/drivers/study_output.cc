@@ -118,6 +118,8 @@ namespace bilayer
           std::filesystem::create_directories(dir);
       });
     distribution.barrier();
+    outputs.time = growth_run ? growth_step_time(record.cycle) :
+                                std::numeric_limits<double>::quiet_NaN();
     // A growth step is written where Output/Written steps asks (and where
     // it fails its checks: the run ends there).
     const bool step_written = !growth_run ||
@@ -173,6 +175,7 @@ namespace bilayer
   {
     const std::string &dir = scene.output.directory;
     std::string        failure;
+    outputs.time = growth_step_time(step);
     try
       {
         if (scene.output.write_vtu || scene.output.write_hdf5)
@@ -254,7 +257,8 @@ namespace bilayer
     // write_growth() once the step is measured.)
     if (!growth_run)
       write_atomically(dir + "/summary.json", [&](std::ostream &o) {
-        write_summary_json(o, scene.name, cycle_records);
+        write_summary_json(
+          o, scene.name, cycle_records, "", scene.output.units);
       });
     // (A growth run writes its tables once, at the end: write_growth().)
     if (!growth_run)
@@ -270,11 +274,55 @@ namespace bilayer
       write_tip_notes(o);
       table.write_text(o, TableHandler::org_mode_table);
     });
-    write_atomically(dir + "/table.tex",
-                     [&](std::ostream &o) { table.write_tex(o); });
+    write_atomically(dir + "/table.tex", [&](std::ostream &o) {
+      write_compact_tex(o, cycle_records);
+    });
     write_atomically(dir + "/table.csv", [&](std::ostream &o) {
       write_csv_table(o, cycle_records, scene.geometry.gmsh_file.empty());
     });
+  }
+
+
+  void
+  Study::print_forces(const ForceBalance &forces) const
+  {
+    if (!forces.computed())
+      {
+        pcout << "  forces on the boundary parts not computed (a subproblem "
+                 "shared by a group of processes)\n";
+        return;
+      }
+    const auto vector = [](const Tensor<1, 2> &v) {
+      std::ostringstream s;
+      s << std::scientific << std::setprecision(4) << "(" << v[0] << ", "
+        << v[1] << ")";
+      return s.str();
+    };
+    for (const PartForce &part : forces.parts)
+      {
+        pcout << "  boundary part " << part.name
+              << (part.clamped ? " (clamped): reaction " : ": traction force ")
+              << vector(part.force());
+        if (part.layer_force.size() > 1)
+          {
+            pcout << " = layers";
+            for (const Tensor<1, 2> &f : part.layer_force)
+              pcout << " " << vector(f);
+          }
+        if (part.regions.size() > 1)
+          {
+            pcout << ", regions";
+            for (const PartForce::RegionShare &share : part.regions)
+              pcout << " " << share.region + 1 << ": " << vector(share.force);
+          }
+        pcout << "; mean displacement " << vector(part.mean_displacement())
+              << "\n";
+      }
+    pcout << "  force balance                applied loads "
+          << vector(forces.applied) << ", reactions "
+          << vector(forces.reactions) << ", imbalance " << std::scientific
+          << std::setprecision(2) << forces.residual << " (round-off bound "
+          << forces.roundoff << ")\n";
   }
 
 
@@ -365,6 +413,7 @@ namespace bilayer
           << "  complementarity              " << r.complementarity << "\n"
           << "  KKT residual (relative)      " << r.kkt.value() << "\n";
     print_release(record);
+    print_forces(record.forces);
     pcout << std::defaultfloat << std::setprecision(3)
           << "  processes                    " << record.processes
           << ", traces sent " << record.shared_values << " values in "
@@ -386,7 +435,7 @@ namespace bilayer
           << " s, solve " << record.solve_seconds << " s, total "
           << record.total_seconds << " s" << std::endl;
     for (const auto &c : record.checks)
-      rout << "cycle " << record.cycle << ": " << c.first << ": "
+      rout << state_name(record.cycle) << ": " << c.first << ": "
            << (c.second ? "yes" : "NO") << std::endl;
     // Two numbers that the tests meet with an independent computation
     // (tests/prm_references.cc): the energy and the largest normal opening
@@ -401,7 +450,7 @@ namespace bilayer
       s << "[10^" << k << "]: " << std::fixed << std::setprecision(7) << m;
       return s.str();
     };
-    rout << "cycle " << record.cycle << ": energy Pi " << scaled(record.energy)
+    rout << state_name(record.cycle) << ": energy Pi " << scaled(record.energy)
          << std::endl;
     if (distribution.is_root())
       {
@@ -441,7 +490,7 @@ namespace bilayer
                 if (i_max > 0)
                   x << " on interface " << i_max + 1;
               }
-            rout << "cycle " << record.cycle << ": largest crack opening "
+            rout << state_name(record.cycle) << ": largest crack opening "
                  << scaled(largest) << " at " << x.str() << std::endl;
           }
       }

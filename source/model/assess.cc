@@ -3,6 +3,7 @@
 // error indicators of the next adaptive cycle.
 
 #include <bilayer/model/model.h>
+#include <bilayer/postprocess/boundary_forces.h>
 #include <bilayer/postprocess/estimator.h>
 #include <bilayer/postprocess/mode_split.h>
 #include <bilayer/postprocess/stress_intensity.h>
@@ -32,6 +33,7 @@ namespace bilayer
           regions_and_layers.layer(s))] += energies[s];
       }
     record.report = bilayer::assess(coupling, w, mu);
+    record.forces = forces();
     if (!crack_tips_found.empty())
       assess_tips(record, history);
     // The indicators mark the next adaptive cycle; their global sum is
@@ -49,6 +51,33 @@ namespace bilayer
     if (scene.fracture.goal_oriented ||
         scene.mesh.refinement_goal != MeshParameters::Goal::estimator)
       estimate_goals(record);
+  }
+
+
+  ForceBalance
+  Model::forces() const
+  {
+    // The tractions of every present layer on every boundary part.
+    const unsigned int n_slots = Layout::n_slots(scene.materials.n_layers);
+    std::vector<std::vector<std::unique_ptr<FunctionParser<2>>>> owners(
+      n_slots);
+    std::vector<std::vector<const Function<2> *>> traction(n_slots);
+    for (const Layer layer : scene.materials.layers())
+      if (scene.materials.has_layer(layer))
+        for (unsigned int part = 0; part < scene.geometry.parts.size(); ++part)
+          {
+            const unsigned int l = static_cast<unsigned int>(layer);
+            owners[l].push_back(scene.loads.traction_function(layer, part));
+            traction[l].push_back(owners[l].back().get());
+          }
+    return boundary_forces(subproblem_views(),
+                           coupling,
+                           w,
+                           mu,
+                           scene.geometry.parts.names,
+                           scene.geometry.clamped,
+                           traction,
+                           n_slots);
   }
 
 

@@ -362,8 +362,11 @@ namespace bilayer
   void
   Model::solve(CycleRecord &record)
   {
-    pcout << "Cycle " << record.cycle << ": " << record.minus.cells << " + "
-          << record.plus.cells << " "
+    if (steps_named)
+      pcout << "Step " << record.cycle << ", load factor " << lambda << ": ";
+    else
+      pcout << "Cycle " << record.cycle << ": ";
+    pcout << record.minus.cells << " + " << record.plus.cells << " "
           << (domain.triangulation(Subdomain::minus)
                   .all_reference_cells_are_hyper_cube() ?
                 "quadrilaterals" :

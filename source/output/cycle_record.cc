@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace bilayer
@@ -463,7 +464,8 @@ namespace bilayer
   write_summary_json(std::ostream                   &out,
                      const std::string              &scene,
                      const std::vector<CycleRecord> &records,
-                     const std::string              &growth)
+                     const std::string              &growth,
+                     const UnitNames                &units)
   {
     out << "{\n  \"scene\": " << json(scene) << ",\n  \"build\": {"
         << "\"bilayer\": " << json(version())
@@ -533,12 +535,20 @@ namespace bilayer
                 << ", \"G_dwr_absolute\": " << json(g.G_dwr_absolute)
                 << ", \"dual_work\": " << json(g.dual_work) << "}";
           }
-        out << "]}";
+        out << "]";
+        write_forces_json(out, records[i].forces);
+        out << "}";
       }
     out << "\n  ]";
     if (!growth.empty())
       out << ",\n  \"growth\": " << growth;
-    out << "\n}\n";
+    // (Last: a reader that greps the first "energy" finds the cycles'.)
+    out << ",\n  \"units\": {\"system\": " << json(units.system)
+        << ", \"length\": " << json(units.length)
+        << ", \"stress\": " << json(units.stress)
+        << ", \"force\": " << json(units.force)
+        << ", \"energy_release_rate\": " << json(units.energy_release_rate)
+        << ", \"energy\": " << json(units.energy) << "}\n}\n";
   }
 
 
@@ -562,6 +572,13 @@ namespace bilayer
       out << (c ? "," : "") << columns[c]->csv_key;
     for (unsigned int t = 0; t < n_tips; ++t)
       out << ",G_tip" << t + 1 << ",dG_tip" << t + 1;
+    // The forces and mean displacements of the boundary parts (those of
+    // the first record: every state of a run has the same parts).
+    const std::vector<PartForce>  none;
+    const std::vector<PartForce> &parts =
+      records.empty() ? none : records[0].forces.parts;
+    for (const std::string &column : force_columns(parts))
+      out << ',' << column;
     out << '\n';
     for (const CycleRecord &record : records)
       {
@@ -574,19 +591,29 @@ namespace bilayer
               << ","
               << (t < record.release.size() ? json(record.release[t].error) :
                                               std::string("null"));
+        out << force_cells(parts, record.forces.parts);
         out << '\n';
       }
   }
 
 
   void
-  add_to_table(ConvergenceTable &table, const std::vector<CycleRecord> &records)
+  add_to_table(ConvergenceTable               &table,
+               const std::vector<CycleRecord> &records,
+               const std::size_t               n,
+               const bool                      compact)
   {
-    const CycleRecord &record = records.back();
+    // The columns of the compact table (table.tex) besides the tips'.
+    static const std::set<std::string> paper  = {"cycle",
+                                                 "dofs",
+                                                 "energy",
+                                                 "eta"};
+    const CycleRecord                 &record = records[n - 1];
     for (const RecordField *field : csv_fields())
       {
         const RecordField::TableColumn &column = field->table;
-        if (column.header.empty())
+        if (column.header.empty() ||
+            (compact && paper.count(column.header) == 0))
           continue;
         const RecordValue value = field->value(record);
         if (const unsigned long *count = std::get_if<unsigned long>(&value))
@@ -606,14 +633,14 @@ namespace bilayer
     // tips (an edge crack has one): the cells of tips a row lacks are empty,
     // in the earlier rows of a column that appears later as well.
     std::size_t earlier_tips = 0;
-    for (std::size_t r = 0; r + 1 < records.size(); ++r)
+    for (std::size_t r = 0; r + 1 < n; ++r)
       earlier_tips = std::max(earlier_tips, records[r].release.size());
     for (unsigned int t = 0; t < record.release.size(); ++t)
       {
         const std::string header = "G tip " + std::to_string(t + 1);
         const std::string error  = "dG tip " + std::to_string(t + 1);
         if (t >= earlier_tips)
-          for (std::size_t r = 0; r + 1 < records.size(); ++r)
+          for (std::size_t r = 0; r + 1 < n; ++r)
             {
               table.add_value(header, std::string());
               table.add_value(error, std::string());
@@ -626,5 +653,22 @@ namespace bilayer
         table.set_scientific(error, true);
       }
     table.start_new_row();
+  }
+
+
+  void
+  add_to_table(ConvergenceTable &table, const std::vector<CycleRecord> &records)
+  {
+    add_to_table(table, records, records.size(), false);
+  }
+
+
+  void
+  write_compact_tex(std::ostream &out, const std::vector<CycleRecord> &records)
+  {
+    ConvergenceTable table;
+    for (std::size_t n = 1; n <= records.size(); ++n)
+      add_to_table(table, records, n, true);
+    table.write_tex(out);
   }
 } // namespace bilayer

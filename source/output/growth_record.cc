@@ -7,9 +7,10 @@
 namespace bilayer
 {
   void
-  write_growth_csv_head(std::ostream      &out,
-                        const unsigned int n_tips,
-                        const unsigned int n_points)
+  write_growth_csv_head(std::ostream                 &out,
+                        const unsigned int            n_tips,
+                        const unsigned int            n_points,
+                        const std::vector<PartForce> &parts)
   {
     out << "# kind: load (a load factor), onset (the critical load of the "
            "crack), growth (the crack advanced at the load before); "
@@ -19,7 +20,11 @@ namespace bilayer
            "Output/Displacement points k\n"
         << "# tip columns: position s, x, y; G, G_I, G_II; criterion (1: "
            "critical); critical_load (lambda at which it reaches 1); "
-           "piece_length (of the tip's crack piece); status\n";
+           "piece_length (of the tip's crack piece); status\n"
+        << "# Fx_NAME, Fy_NAME: the force on boundary part NAME (the reaction "
+           "of a clamped part, the traction's resultant on a loaded one; "
+           "_rK: its share in region K); ux_NAME, uy_NAME: the part's mean "
+           "displacement\n";
     out << "step,load_factor,kind,unstable,energy,conjugate_displacement,"
            "crack_length";
     for (unsigned int p = 1; p <= n_points; ++p)
@@ -36,15 +41,18 @@ namespace bilayer
                               "piece_length",
                               "status"})
         out << ",tip" << t << "_" << key;
+    for (const std::string &column : force_columns(parts))
+      out << ',' << column;
     out << '\n';
   }
 
 
   void
-  write_growth_csv_row(std::ostream      &out,
-                       const GrowthStep  &step,
-                       const unsigned int n_tips,
-                       const unsigned int n_points)
+  write_growth_csv_row(std::ostream                 &out,
+                       const GrowthStep             &step,
+                       const unsigned int            n_tips,
+                       const unsigned int            n_points,
+                       const std::vector<PartForce> &parts)
   {
     out << step.step << ',' << json_number(step.load_factor) << ',' << step.kind
         << ',' << (step.unstable ? 1 : 0) << ',' << json_number(step.energy)
@@ -84,7 +92,7 @@ namespace bilayer
             c = ';';
         out << ',' << status;
       }
-    out << '\n';
+    out << force_cells(parts, step.parts) << '\n';
   }
 
 
@@ -94,9 +102,11 @@ namespace bilayer
                    const unsigned int             n_tips,
                    const unsigned int             n_points)
   {
-    write_growth_csv_head(out, n_tips, n_points);
+    const std::vector<PartForce>  none;
+    const std::vector<PartForce> &parts = steps.empty() ? none : steps[0].parts;
+    write_growth_csv_head(out, n_tips, n_points, parts);
     for (const GrowthStep &step : steps)
-      write_growth_csv_row(out, step, n_tips, n_points);
+      write_growth_csv_row(out, step, n_tips, n_points, parts);
   }
 
 

@@ -133,7 +133,7 @@ namespace bilayer
     });
     if (records.interface_pvd.size() <= i)
       records.interface_pvd.resize(i + 1);
-    records.interface_pvd[i].emplace_back(cycle, name.str());
+    records.interface_pvd[i].emplace_back(records.time_of(cycle), name.str());
     if (!records.deferred)
       write_atomically(
         directory + "/" + interface_stem(i) + ".pvd", [&](std::ostream &out) {

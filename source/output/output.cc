@@ -480,7 +480,7 @@ namespace bilayer
                        [&](std::ostream &out) {
                          first.write_pvtu_record(out, pieces);
                        });
-      records.pvd.emplace_back(cycle, stem + ".pvtu");
+      records.pvd.emplace_back(records.time_of(cycle), stem + ".pvtu");
       if (!records.deferred)
         write_atomically(directory + "/solution.pvd", [&](std::ostream &out) {
           DataOutBase::write_pvd_record(out, records.pvd);

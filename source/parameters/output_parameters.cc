@@ -70,6 +70,24 @@ namespace bilayer
                       "checks: only the pass/fail lines of the acceptance "
                       "checks (for regression tests).");
     prm.declare_entry(
+      "Time of growth steps",
+      "load factor",
+      Patterns::Selection("load factor|step|crack length"),
+      "The time of a step of Fracture/Crack growth in solution.pvd and "
+      "interface.pvd (ParaView's animation): its load factor, its number, or "
+      "the total crack length. Steps of unstable growth at one load share "
+      "their load factor: ParaView shows one of them (the terminal names "
+      "them); step or crack length shows each.");
+    prm.declare_entry(
+      "Unit system",
+      "units of the input",
+      Patterns::Selection("units of the input|m, Pa|mm, MPa|um, GPa"),
+      "The consistent units the scene's numbers are in, for the labels of "
+      "summary.json (\"units\") and the pictures' axes; nothing is "
+      "converted. units of the input: the labels say length, stress, ...; "
+      "m, Pa: forces per thickness in N/m, G in J/m^2; mm, MPa: N/mm and "
+      "N/mm (= kJ/m^2); um, GPa: GPa um (= kN/m) and GPa um (= kJ/m^2).");
+    prm.declare_entry(
       "Written steps",
       "every 1",
       Patterns::Anything(),
@@ -110,9 +128,38 @@ namespace bilayer
     progress_interval        = prm.get_integer("Progress interval");
     terminal = prm.get("Terminal output") == "checks" ? TerminalOutput::checks :
                                                         TerminalOutput::full;
+    const std::string time = prm.get("Time of growth steps");
+    growth_time            = time == "step"         ? GrowthTime::step :
+                             time == "crack length" ? GrowthTime::crack_length :
+                                                      GrowthTime::load_factor;
+    units                  = unit_names(prm.get("Unit system"));
     parse_growth_outputs(prm.get("Written steps"),
                          prm.get("Displacement points"));
     prm.leave_subsection();
+  }
+
+
+  UnitNames
+  unit_names(const std::string &system)
+  {
+    UnitNames names;
+    names.system = system;
+    if (system == "m, Pa")
+      {
+        names.length = "m", names.stress = "Pa", names.force = "N/m";
+        names.energy_release_rate = "J/m^2", names.energy = "J/m";
+      }
+    else if (system == "mm, MPa")
+      {
+        names.length = "mm", names.stress = "MPa", names.force = "N/mm";
+        names.energy_release_rate = "N/mm", names.energy = "N mm/mm";
+      }
+    else if (system == "um, GPa")
+      {
+        names.length = "um", names.stress = "GPa", names.force = "GPa um";
+        names.energy_release_rate = "GPa um", names.energy = "GPa um^2";
+      }
+    return names;
   }
 
 

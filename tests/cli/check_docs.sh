@@ -3,8 +3,8 @@
 # the repository's docs are never written): the quoted iteration count of
 # scripts/run_examples as it is (OK, exit 0), altered by one (DRIFT with
 # both numbers, exit 1) and removed (MISSING, exit 1); a timing without a
-# machine and a date is one LINT line (exit 1), with them none; the README
-# test table without one of ctest's tests and with a test ctest does not
+# machine and a date is one LINT line (exit 1), with them none; the test
+# table of docs/developer.md without one of ctest's tests and with a test ctest does not
 # know (DRIFT naming each).
 # Usage: check_docs.sh BILAYER SOURCE_DIR BUILD_DIR. The exit status is the verdict.
 set -u
@@ -18,24 +18,26 @@ fresh() { rm -rf "$work/root" && mkdir -p "$work/root/docs" &&
 check() { python3 "$source_dir/scripts/check_docs" --root "$work/root" --build "$build_dir" "$@" \
   > "$work/log" 2> "$work/err"; }
 claim=readme.run_examples.iterations_1
+claim_doc=docs/scenes.md    # the doc that quotes it
+table_doc=docs/developer.md # the doc with the test table
 
 why=""
 fresh
 check --only $claim --no-lint || why="exit $?: $(cat "$work/log" "$work/err" | tail -3)"
-grep -q "^README.md:[0-9]*  $claim  quoted 373  measured 373  exact  OK$" "$work/log" \
+grep -q "^$claim_doc:[0-9]*  $claim  quoted 373  measured 373  exact  OK$" "$work/log" \
   || why="$why; $(grep $claim "$work/log")"
 verdict "the true count of the paper's Uzawa (373): OK, exit 0" "$why"
 
 why=""
-sed -i 's/it printed 373, 337 and 375 iterations/it printed 374, 337 and 375 iterations/' "$work/root/README.md"
+sed -i 's/it printed 373, 337 and 375 iterations/it printed 374, 337 and 375 iterations/' "$work/root/$claim_doc"
 if check --only $claim --no-lint; then why="exit 0"; fi
 grep -q "  $claim  quoted 374  measured 373  exact  DRIFT$" "$work/log" \
   || why="$why; $(grep $claim "$work/log")"
-cmp -s "$source_dir/README.md" "$work/root/README.md" && why="$why; the copy was not altered"
+cmp -s "$source_dir/$claim_doc" "$work/root/$claim_doc" && why="$why; the copy was not altered"
 verdict "an altered count (374): DRIFT with both numbers, exit 1" "$why"
 
 why=""
-sed -i 's/it printed 374, 337 and 375 iterations/it printed the iterations/' "$work/root/README.md"
+sed -i 's/it printed 374, 337 and 375 iterations/it printed the iterations/' "$work/root/$claim_doc"
 if check --only $claim --no-lint; then why="exit 0"; fi
 grep -q "  $claim  quoted text not found in the doc .*MISSING$" "$work/log" \
   || why="$why; $(grep $claim "$work/log")"
@@ -59,8 +61,8 @@ verdict "the same timing with machine and date: no LINT line, exit 0" "$why"
 why=""
 fresh
 check --only tests.table --no-lint || why="exit $?: $(grep -v '  OK$' "$work/log" | head -3)"
-sed -i '/^| `theta_auto` |/d' "$work/root/README.md"
-sed -i 's/^| `bad_input` |/| `bad_input`, `no_such_test` |/' "$work/root/README.md"
+sed -i '/^| `theta_auto` |/d' "$work/root/$table_doc"
+sed -i 's/^| `bad_input` |/| `bad_input`, `no_such_test` |/' "$work/root/$table_doc"
 if check --only tests.table --no-lint; then why="$why; exit 0 without theta_auto"; fi
 grep -q "tests.table  ctest knows theta_auto  the table does not  DRIFT$" "$work/log" \
   || why="$why; theta_auto not named: $(head -3 "$work/log")"

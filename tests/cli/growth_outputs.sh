@@ -14,6 +14,9 @@
 #     machine lets the test mount one): one line, exit 1, the directory as it
 #     was, then a run elsewhere exit 0; a file system out of inodes (4): one
 #     line, nothing left;
+#     the steps are named as steps in the terminal (also with Terminal
+#     output = checks) and their .pvd time is the load factor (or, as
+#     asked, the crack length);
 #  3. growth output costs O(1) per step: the bytes the process writes
 #     (wchar of /proc/self/io, which counts a reaped child's writes) grow
 #     by the same amount per step from 20 to 40 to 80 steps (within 3 %),
@@ -71,6 +74,43 @@ grep -qF "Fracture/Maximum growth steps = 3 steps reached before the load factor
 "$bilayer" "$prm" --set "Output/Output directory=f" > f.out 2> f.err || why="$why; the corrected run: exit $? $(cat f.err)"
 [[ -s f/growth.csv && ! -e f.failed ]] || why="$why; f.failed kept or f missing"
 verdict "a failed growth run's DIR.failed, then the corrected run: exit 0, DIR.failed gone" "$why"
+
+# Steps named as growth: growth_full_opening.prm (Terminal output = checks)
+# prints "step K: load factor L ..." for every row of growth.csv and the
+# closing "growth: N steps" line; the time of each step in solution.pvd and
+# interface.pvd is its load factor (growth.csv), with Output/Time of growth
+# steps = crack length its crack length.
+why=""
+for time in "load factor" "crack length"; do
+  rm -rf t
+  "$bilayer" "$prm" --set "Output/Output directory=t" --set "Output/Write VTU=true" \
+    --set "Output/Time of growth steps=$time" > t.out 2> t.err || why="$why; $time: exit $?"
+  why="$why$(/usr/bin/python3 - t "$time" t.out <<'PY'
+import csv, re, sys
+d, time, log = sys.argv[1], sys.argv[2], open(sys.argv[3]).read()
+rows = list(csv.DictReader(l for l in open(d + "/growth.csv") if not l.startswith("#")))
+key = "load_factor" if time == "load factor" else "crack_length"
+out = []
+printed = {int(k): float(v) for k, v in re.findall(r"^step (\d+): load factor (\S+) ", log, re.M)}
+for r in rows:
+    k, lam = int(r["step"]), float(r["load_factor"])
+    if k not in printed or abs(printed[k] - lam) > 1e-7 * abs(lam):
+        out.append("no line 'step %d: load factor %.8g ...'" % (k, lam))
+if not re.search(r"^growth: %d steps" % len(rows), log, re.M):
+    out.append("no closing line 'growth: %d steps'" % len(rows))
+for pvd, stem in (("solution.pvd", "solution"), ("interface.pvd", "interface")):
+    times = re.findall(r'timestep="([^"]+)"[^>]*file="%s-(\d+)\.' % stem, open(d + "/" + pvd).read())
+    if not times:
+        out.append("%s: no steps" % pvd)
+    for t, n in times:
+        if abs(float(t) - float(rows[int(n)][key])) > 1e-9 * max(1, abs(float(t))):
+            out.append("%s: step %s at time %s, %s %s" % (pvd, n, t, key, rows[int(n)][key]))
+print("".join("; %s: %s" % (time, o) for o in out[:3]), end="")
+PY
+)"
+done
+verdict "growth steps named as steps (also with Terminal output = checks), .pvd time = load factor or crack length" "$why"
+rm -rf t
 
 # A mode split length below the tip's cell is raised to the cell, and the
 # records carry the length used (summary.json mode_split_length and note).

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
-"""README.md's tables of the outputs ("## Outputs (a contract for scripts)",
-"### Every file, field and column") against what the program writes.
+"""The tables of the outputs in docs/outputs.md ("## Outputs (a contract
+for scripts)", "### Every file, field and column"; the README's until it
+became an entry door) against what the program writes.
 
 Runs BILAYER on parameter_files/partial_closure.prm with VTU and HDF5 output
 and two cycles into a temporary directory, then checks that every name the
-run writes appears in the README's table for its file (program names are a
-subset of the README's: the tables may name more, e.g. columns that another
+run writes appears in the doc's table for its file (program names are a
+subset of the doc's: the tables may name more, e.g. columns that another
 version or another parameter writes):
   - every file of the output directory (the marker included) matches a
     pattern of the table whose header starts with "file" (NN: the cycle,
@@ -17,12 +18,15 @@ version or another parameter writes):
     every key of summary.json (nested objects as "object.key", crack tips as
     "crack_tips[].key", the top level's keys but "cycles" too), the header
     of table.csv, the column headers of table.txt and table.tex, the line
-    kinds of .bilayer-output: each in its file's table.
+    kinds of .bilayer-output: each in its file's table;
+  - table.tex has the compact columns alone: cycle, dofs, energy, eta, and
+    G tip k, dG tip k per tip.
 A table belongs to the file named by the first `code` of the paragraph
-before it. Tip numbers are the README's <k>: G_tip2 is `G_tip<k>`, "G tip 2"
-is `G tip <k>`.
+before it. Tip numbers are the doc's <k>: G_tip2 is `G_tip<k>`, "G tip 2"
+is `G tip <k>`; boundary parts the doc's <part>, regions <K>: Fy_left_r2 is
+`Fy_<part>_r<K>`.
 Usage: readme_outputs.py BILAYER SOURCE_DIR   (exit status 0: every name is
-in the README; 1: the missing names are listed)
+in the doc; 1: the missing names are listed)
 """
 
 import json
@@ -33,15 +37,18 @@ import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
+DOC = os.path.join("docs", "outputs.md")  # the doc with the tables, from SOURCE_DIR
 
-def readme_tables(readme):
+
+def readme_tables(path):
     """{file key: set of names in the first column}, from the Outputs
-    section; the table headed "file" is returned under the key "files"."""
-    with open(readme, encoding="utf-8") as f:
+    section of the doc PATH; the table headed "file" is returned under the
+    key "files"."""
+    with open(path, encoding="utf-8") as f:
         text = f.read()
     start = text.find("\n## Outputs")
     if start < 0:
-        raise SystemExit("README.md has no section '## Outputs'")
+        raise SystemExit("%s has no section '## Outputs'" % DOC)
     end = text.find("\n## ", start + 1)
     lines = text[start:end if end > 0 else len(text)].split("\n")
     tables, paragraph, blank, i = {}, [], False, 0
@@ -62,8 +69,8 @@ def readme_tables(readme):
             else:
                 codes = " ".join(paragraph).split("`")[1::2]
                 if not codes:
-                    raise SystemExit("README.md: a table of the outputs without a `file` "
-                                     "in the paragraph before it: %s" % rows[0])
+                    raise SystemExit("%s: a table of the outputs without a `file` "
+                                     "in the paragraph before it: %s" % (DOC, rows[0]))
                 key = codes[0]
             tables.setdefault(key, set()).update(names)
             paragraph, blank = [], True
@@ -79,12 +86,19 @@ def readme_tables(readme):
 
 
 def tips(name):
-    """The README's spelling of a tip's column: G_tip2 -> G_tip<k>."""
+    """The doc's spelling of a tip's column: G_tip2 -> G_tip<k>."""
     return re.sub(r"tip( ?)\d+", r"tip\1<k>", name)
 
 
+def parts(name):
+    """The doc's spelling of a boundary part's column of table.csv:
+    Fy_left -> Fy_<part>, uy_left_r2 -> uy_<part>_r<K>."""
+    name = re.sub(r"^(F[xy]|u[xy])_.+_r\d+$", r"\1_<part>_r<K>", name)
+    return re.sub(r"^(F[xy]|u[xy])_[^<]+$", r"\1_<part>", name)
+
+
 def file_pattern(pattern):
-    """A README file pattern as a regular expression."""
+    """A file pattern of the doc as a regular expression."""
     out, i = "", 0
     while i < len(pattern):
         if pattern.startswith("NN", i):
@@ -127,8 +141,8 @@ def main(argv):
         print(__doc__.split("\n")[-4], file=sys.stderr)
         return 2
     bilayer, source = argv[1], argv[2]
-    tables = readme_tables(os.path.join(source, "README.md"))
-    with open(os.path.join(source, "README.md"), encoding="utf-8") as f:
+    tables = readme_tables(os.path.join(source, DOC))
+    with open(os.path.join(source, DOC), encoding="utf-8") as f:
         readme = f.read()
     work = tempfile.mkdtemp()
     out = os.path.join(work, "result")
@@ -142,7 +156,7 @@ def main(argv):
         print("bilayer failed (%d):\n%s" % (run.returncode, run.stdout[-2000:]))
         return 1
 
-    written = {}  # file key in the README -> names the program wrote
+    written = {}  # file key in the doc -> names the program wrote
     def add(key, names):
         written.setdefault(key, set()).update(names)
 
@@ -172,7 +186,7 @@ def main(argv):
             with open(p) as h:
                 lines = h.read().split("\n")
             # The note lines "# tip k: <where>, grows towards ..." first: the
-            # README must show their form.
+            # doc must show their form.
             notes = [l for l in lines if l.startswith("#")]
             for l in notes:
                 if not re.match(r"# tip [0-9]+: .*grows", l):
@@ -181,7 +195,7 @@ def main(argv):
                     add(f, ["the note line '%s'" % l])
             header = next(l for l in lines if not l.startswith("#"))
             if f == "table.csv":
-                add("table.csv", {tips(k) for k in header.strip().split(",")})
+                add("table.csv", {parts(tips(k)) for k in header.strip().split(",")})
             else:
                 # "| cycle | P | ... | time [s] | G tip 1 |": cells between bars
                 add("table.txt", [tips(c.strip()) for c in header.strip().strip("|").split("|")])
@@ -191,7 +205,13 @@ def main(argv):
             # the header row: the first row of cells ("a & b & ... \\")
             row = next(l for l in tex.split("\n") if "&" in l)
             row = row.replace("\\hline", "").replace("\\\\", "")
-            add("table.txt", [tips(c.strip().strip("$")) for c in row.split("&")])
+            columns = [tips(c.strip().strip("$")) for c in row.split("&")]
+            add("table.txt", columns)
+            # The compact table for a paper: these columns alone.
+            if columns != ["cycle", "dofs", "energy", "eta"] + ["G tip <k>", "dG tip <k>"] * (
+                    (len(columns) - 4) // 2):
+                add("table.tex", ["the compact columns (cycle, dofs, energy, eta, G and dG "
+                                  "per tip), not %s" % columns])
         elif f == ".bilayer-output":
             kinds = tables.get(".bilayer-output", set())
             with open(p) as h:
@@ -211,19 +231,19 @@ def main(argv):
             missing.append("%s: no table for it after a paragraph naming `%s`" % (key, key))
             continue
         for name in sorted(names - known):
-            missing.append("%s: `%s` is written but not in the README's table" % (key, name))
+            missing.append("%s: `%s` is written but not in the table of %s" % (key, name, DOC))
     for key in ("summary.json", "table.csv", "table.txt", "interface-NN.csv", "interface-NN.vtu",
                 "solution-NN-{u,v}-{minus,plus}.vtu", ".bilayer-output"):
         if not written.get(key):
             missing.append("%s: the run wrote nothing of it (the check is broken)" % key)
     n = sum(len(v) for v in written.values())
     if missing:
-        print("README.md, ## Outputs: %d of %d names the run writes are missing:" % (len(missing), n))
+        print("%s, ## Outputs: %d of %d names the run writes are missing:" % (DOC, len(missing), n))
         for m in missing:
             print("  " + m)
         return 1
-    print("README.md, ## Outputs: all %d files and %d names the run writes are in its tables"
-          % (len(files), n))
+    print("%s, ## Outputs: all %d files and %d names the run writes are in its tables"
+          % (DOC, len(files), n))
     subprocess.run(["rm", "-rf", work])
     return 0
 

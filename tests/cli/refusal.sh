@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# One refusal of bad input (README: "bad input ends with one line
-# `bilayer: error: <entry>: <what is allowed>` and exit code 1"): the
+# One refusal of bad input (docs/running.md, "How a run ends": "bad input
+# ends with one line `bilayer: error: <entry>: <what is allowed>` and exit
+# code 1"): the
 # command must exit with status 1 (not 0, not 2, not a crash or an abort),
 # print nothing on stdout and exactly one line on stderr that starts with
 # "bilayer: error: " and contains EXPECTED (a fixed string), and no

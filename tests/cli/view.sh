@@ -10,7 +10,13 @@
 #    own colour scale (its own 99th percentile over its area) with a bar
 #    titled with the layer, every bar, the title and the legend inside the
 #    picture and apart, the PNG's border background, both layers drawn
-#    alike (edges on both or neither), many colours in each layer;
+#    alike (edges on both or neither), many colours in each layer; length
+#    axes on each layer (round ticks inside its undeformed bounds, labelled,
+#    titled with the length unit), the units of summary.json (or "units of
+#    E", "length unit") in the colour bars, each crack tip's G (from
+#    summary.json) listed and its number drawn at the tip; once more at
+#    1200x600 on a copy of the directory whose summary.json names the units
+#    (mm, MPa, N/mm);
 #  - a second run with other options (--cycle, --field, --scale 0) replaces
 #    the files of the first (written by scripts/view) without --force;
 #  - refusals with exit status 1 and exactly one stderr line "view: ...",
@@ -99,6 +105,23 @@ for case in "800x1200 --no-edges off" "2400x600 --edges on"; do
     echo "scripts/view --size $size $option failed: $(head -3 "$work/stderr")"
   scene "$size ($option)" "$work/view-$size.png" "$work/view-$size.json" "$edges"
 done
+
+# 1c. The units of summary.json, on a copy that names them.
+cp -r "$result" "$work/units"
+python3 - "$work/units/summary.json" << 'PY'
+import json, sys
+summary = json.load(open(sys.argv[1]))
+summary["units"] = {"system": "mm, MPa", "length": "mm", "stress": "MPa", "force": "N/mm",
+                    "energy_release_rate": "N/mm", "energy": "N"}
+json.dump(summary, open(sys.argv[1], "w"))
+PY
+"$view" "$work/units" --png "$work/units.png" --state "$work/units.pvsm" --size 1200x600 \
+  --describe "$work/units.json" > "$work/stdout" 2> "$work/stderr" ||
+  echo "scripts/view on the copy with units failed: $(head -3 "$work/stderr")"
+saved=$result
+result=$work/units
+scene "1200x600, units mm, MPa, N/mm" "$work/units.png" "$work/units.json" auto
+result=$saved
 
 # 2. The state loads back and renders (pvpython; Debian's ParaView 5.11
 # sometimes crashes at exit: up to three tries, the picture is the verdict).

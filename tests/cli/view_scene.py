@@ -17,7 +17,22 @@ VTK's own reader, piece by piece, independently of scripts/view.py):
     on neither, as EDGES says: on, off or auto), edge colour, line width and
     opacity;
   - in the PNG, each layer's region shows many colours (not one uniform
-    colour).
+    colour);
+  - units from RESULT_DIR/summary.json ("units": stress, length,
+    energy_release_rate; without them "units of E", "length unit", "units
+    of E × length"): the colour bars of a stress field and of the contact
+    pressure end in "[stress]", the axes are titled "x [length]" and "y
+    [length]";
+  - length axes on each layer: at least two ticks along x and along y, at
+    round values inside the layer's undeformed bounds (from the pieces),
+    labelled with their values, every label inside the picture, apart from
+    each other, from the layers' regions, the colour bars, the title and the
+    legends;
+  - the crack tips of the cycle (summary.json's crack_tips): a line "tip N
+    at (x, y): G = g ± e" for each (", interface K" after the point where
+    K >= 2), inside the picture and apart from the
+    bars, and a number N drawn at the tip on each layer, inside the layer's
+    region.
 Usage: pvpython view_scene.py DESCRIBE.json PICTURE.png RESULT_DIR EDGES
 Prints one line per check ("...: yes" / "...: NO ..."); exit status 1 if
 any failed.
@@ -157,4 +172,110 @@ for layer in sorted(layers):
             colours.add(tuple(c // 16 for c in pixel(i, j)))
     check("layer %d: many colours in its region of the PNG (%d)" % (layer, len(colours)),
           len(colours) >= 12)
+# Units, axes and crack tips.
+summary = {}
+try:
+    summary = json.load(open("%s/summary.json" % result))
+except (OSError, ValueError):
+    pass
+units = summary.get("units") if isinstance(summary.get("units"), dict) else {}
+stress = units.get("stress") or "units of E"
+length = units.get("length") or "length unit"
+g_unit = units.get("energy_release_rate") or "units of E \u00d7 length"
+stress_field = field in ("von_mises", "stress_xx", "stress_yy", "stress_zz", "stress_xy")
+for layer in sorted(layers):
+    title = layers[layer]["bar"]["title"]
+    if stress_field:
+        check("layer %d: its bar says [%s]" % (layer, stress), ("[%s]" % stress) in title, repr(title))
+if scene.get("contact_pressure_bar"):
+    title = scene["contact_pressure_bar"]["title"]
+    check("the contact pressure bar says [%s]" % stress, ("[%s]" % stress) in title, repr(title))
+
+
+def undeformed_bounds(files):
+    lo, hi = [math.inf] * 2, [-math.inf] * 2
+    for name in files:
+        reader = vtkXMLUnstructuredGridReader()
+        reader.SetFileName(name)
+        reader.Update()
+        b = reader.GetOutput().GetBounds()
+        lo = [min(lo[0], b[0]), min(lo[1], b[2])]
+        hi = [max(hi[0], b[1]), max(hi[1], b[3])]
+    return lo, hi
+
+
+def apart(a, b):
+    return not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3])
+
+
+others = [(name, r) for name, r in rects] + \
+    [("the region of layer %d" % l, layers[l]["region"]) for l in sorted(layers)]
+if scene.get("crack_tips"):
+    others.append(("crack tips", scene["crack_tips"]["rect"]))
+labels = []
+for layer, letter in ((1, "u"), (2, "v")):
+    axes = scene.get("axes", {}).get(str(layer))
+    if layer not in layers:
+        continue
+    if not axes:
+        check("layer %d: length axes drawn" % layer, False, "none described")
+        continue
+    check("layer %d: axes titled x [%s], y [%s]" % (layer, length, length),
+          axes["x_title"] == "x [%s]" % length and axes["y_title"] == "y [%s]" % length,
+          "%r, %r" % (axes["x_title"], axes["y_title"]))
+    lo, hi = undeformed_bounds(glob.glob("%s/solution-%02d-%s-*.vtu" % (result, scene["cycle"], letter)))
+    for k, name in ((0, "x"), (1, "y")):
+        ticks = axes[name + "_ticks"]
+        step = ticks[1] - ticks[0] if len(ticks) > 1 else 0
+        inside = all(lo[k] - 1e-9 * (hi[k] - lo[k]) <= v <= hi[k] + 1e-9 * (hi[k] - lo[k]) for v in ticks)
+        round_ = step > 0 and all(abs(v / step - round(v / step)) < 1e-6 for v in ticks) and \
+            ("%.0e" % step)[0] in "125"
+        check("layer %d: %d round ticks along %s inside [%g, %g]" % (layer, len(ticks), name, lo[k], hi[k]),
+              len(ticks) >= 2 and inside and round_, str(ticks))
+        texts = sorted(float(e["text"]) for e in axes["labels"] if e["name"].startswith(name + " = "))
+        check("layer %d: the %s ticks labelled with their values" % (layer, name),
+              all(abs(a - b) <= 1e-9 * max(1.0, abs(b)) for a, b in zip(texts, ticks)) and
+              len(texts) == len(ticks), "%s for %s" % (texts, ticks))
+    labels += [("layer %d %s" % (layer, e["name"]), e["rect"]) for e in axes["labels"]]
+for name, r in labels:
+    if not (0 <= r[0] < r[2] <= 1 and 0 <= r[1] < r[3] <= 1):
+        check("%s inside the picture" % name, False, str(r))
+    clash = [o for o, q in others if not apart(r, q)]
+    if clash:
+        check("%s apart from %s" % (name, clash[0]), False, "%s" % r)
+clash = [(a[0], b[0]) for i, a in enumerate(labels) for b in labels[i + 1:] if not apart(a[1], b[1])]
+check("%d axis labels inside the picture, apart from each other, the layers and the legends" %
+      len(labels),
+      labels and not clash and all(0 <= r[0] < r[2] <= 1 and 0 <= r[1] < r[3] <= 1 for _, r in labels),
+      str(clash[:3]))
+
+record = [c for c in summary.get("cycles", []) if c.get("cycle") == scene["cycle"]]
+tips = record[0].get("crack_tips") or [] if record else []
+if tips:
+    described = scene.get("crack_tips") or {}
+    text = described.get("text", "")
+    check("the crack tips listed with G [%s]" % g_unit, ("[%s]" % g_unit) in text, repr(text[:80]))
+    for n, tip in enumerate(tips[:8], 1):
+        where = ", interface %s" % tip["interface"] if tip.get("interface", 1) != 1 else ""
+        line = "tip %d at (%.4g, %.4g)%s: " % (n, tip["x"], tip["y"], where)
+        if tip.get("G") is None:
+            line += "G not computed"
+        else:
+            line += "G = %.3g" % tip["G"]
+            if tip.get("G_error") is not None:
+                line += " \u00b1 %.2g" % tip["G_error"]
+        check("the list says %r" % line, line in text.splitlines(), repr(text))
+    r = described.get("rect", [0, 0, 0, 0])
+    check("the list of tips inside the picture and apart from the bars",
+          0 <= r[0] < r[2] <= 1 and 0 <= r[1] < r[3] <= 1 and all(apart(r, q) for _, q in bars), str(r))
+    for layer in sorted(layers):
+        region = layers[layer]["region"]
+        for n in range(1, min(len(tips), 8) + 1):
+            mark = [e for e in scene.get("tip_labels", []) if e["name"] == "tip %d, layer %d" % (n, layer)]
+            ok = len(mark) == 1 and mark[0]["text"] == str(n)
+            if ok:
+                m = mark[0]["rect"]
+                cx = (m[0] + m[2]) / 2
+                ok = region[0] <= cx <= region[2] and region[1] <= m[1] <= region[3]
+            check("layer %d: tip %d numbered at the tip" % (layer, n), ok, str(mark))
 sys.exit(1 if failures else 0)

@@ -390,6 +390,26 @@ namespace bilayer
     void
     check(CycleRecord &record) const;
 
+    /// The forces and mean displacements of the boundary parts and their
+    /// balance, a line each.
+    void
+    print_forces(const ForceBalance &forces) const;
+
+    /// The .pvd time of growth step @p step, the present state
+    /// (Output/Time of growth steps: its load factor, number or crack
+    /// length).
+    double
+    growth_step_time(const unsigned int step) const;
+
+    /// The total length of the cracks of all interfaces now.
+    double
+    crack_length() const;
+
+    /// "step N" in a growth run, "cycle N" else: how the terminal names
+    /// state @p cycle.
+    std::string
+    state_name(const unsigned int cycle) const;
+
     /**
      * One state on the present subproblems: the interface (and the
      * multipliers, from @p previous if given), the outer solve, the

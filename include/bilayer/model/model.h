@@ -128,6 +128,14 @@ namespace bilayer
 
     // The set-up and the solve.
 
+    /// Name the states "Step N, load factor L" in the terminal (a growth
+    /// run) instead of "Cycle N".
+    void
+    name_states_as_steps()
+    {
+      steps_named = true;
+    }
+
     /// The subproblems of the present layers on the present meshes,
     /// assembled and factorised as parallel tasks.
     void
@@ -189,6 +197,12 @@ namespace bilayer
     }
 
     // What the drivers read.
+
+    /// The forces and mean displacements of the boundary parts in the
+    /// present state, and their balance (boundary_forces()).
+    ForceBalance
+    forces() const;
+
 
     /// The work of the unit proportional loads on the present solution.
     double
@@ -291,6 +305,8 @@ namespace bilayer
     double lambda = 1;
     /// keep_meshes().
     bool fixed_meshes = false;
+    /// name_states_as_steps().
+    bool steps_named = false;
 
     Geometry                                          domain;
     PerSubproblem<std::unique_ptr<ElasticSubproblem>> subproblems;

@@ -6,6 +6,8 @@
 #include <bilayer/geometry/geometry.h>
 #include <bilayer/interface/interface.h>
 #include <bilayer/interface/interface_diagnostics.h>
+#include <bilayer/parameters/output_parameters.h>
+#include <bilayer/postprocess/boundary_forces.h>
 #include <bilayer/postprocess/fracture.h>
 #include <bilayer/solvers/outer_solver.h>
 
@@ -69,6 +71,9 @@ namespace bilayer
     /// The energy release rate at each crack tip, ordered by s (empty
     /// without a crack or with Fracture/Energy release rate = false).
     std::vector<EnergyReleaseRate> release;
+    /// The forces and mean displacements of the boundary parts, and their
+    /// balance (boundary_forces()).
+    ForceBalance forces;
     /// Acceptance checks: (description, passed).
     std::vector<std::pair<std::string, bool>> checks;
     double setup_seconds = 0, solve_seconds = 0, total_seconds = 0;
@@ -204,14 +209,17 @@ namespace bilayer
     return field;
   }
 
-  /// summary.json: {"scene": ..., "build": {"bilayer": version, "git_commit",
-  /// "deal_ii", "blas"} (build_info.h), "cycles": [one object per record]},
-  /// and "growth": @p growth (a JSON value) where not empty.
+  /// summary.json: {"scene": ..., "build": {"bilayer": version,
+  /// "git_commit", "deal_ii", "blas"} (build_info.h), "cycles": [one object
+  /// per record], "growth": @p growth (a JSON value) where not empty, and
+  /// last "units": {"system", "length", "stress", "force",
+  /// "energy_release_rate", "energy"} (@p units: names only)}.
   void
   write_summary_json(std::ostream                   &out,
                      const std::string              &scene,
                      const std::vector<CycleRecord> &records,
-                     const std::string              &growth = "");
+                     const std::string              &growth = "",
+                     const UnitNames                &units  = UnitNames());
 
   /// A JSON number: 17 significant digits, null for NaN and infinities.
   std::string
@@ -228,12 +236,46 @@ namespace bilayer
                   const std::vector<CycleRecord> &records,
                   const bool                      along_x);
 
+  /// ", \"boundary_parts\": [...], \"force_balance\": {...}" of a cycle's
+  /// object in summary.json.
+  void
+  write_forces_json(std::ostream &out, const ForceBalance &forces);
+
+  /// The columns of the forces and mean displacements of the boundary
+  /// parts @p parts in table.csv and growth.csv: Fx_NAME, Fy_NAME, ux_NAME,
+  /// uy_NAME per part (the force summed over layers and regions, the
+  /// displacement averaged over the layers), and for a part in several
+  /// regions the same per region, suffixed _rK (region K = 1, 2, ...;
+  /// Omega- and Omega+ are regions 1 and 2).
+  std::vector<std::string>
+  force_columns(const std::vector<PartForce> &parts);
+
+  /// The cells of force_columns(@p columns_of) for the state @p parts
+  /// (null where a part or region is missing), each preceded by a comma.
+  std::string
+  force_cells(const std::vector<PartForce> &columns_of,
+              const std::vector<PartForce> &parts);
+
   /// Append the last of @p records (all records so far) as a row of the
   /// mesh-size table; where the records differ in their number of crack
   /// tips (states of one mesh), the cells of tips a row lacks are empty.
   void
   add_to_table(dealii::ConvergenceTable       &table,
                const std::vector<CycleRecord> &records);
+
+  /// Row @p n - 1 of @p records (the records before it: the earlier rows)
+  /// into @p table; with @p compact only the columns cycle, dofs, energy,
+  /// eta and G, dG at each tip.
+  void
+  add_to_table(dealii::ConvergenceTable       &table,
+               const std::vector<CycleRecord> &records,
+               const std::size_t               n,
+               const bool                      compact);
+
+  /// table.tex: the compact table of @p records (add_to_table(), compact),
+  /// the columns a paper quotes; table.txt and table.csv have the rest.
+  void
+  write_compact_tex(std::ostream &out, const std::vector<CycleRecord> &records);
 } // namespace bilayer
 
 #endif

@@ -4,6 +4,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <bilayer/postprocess/boundary_forces.h>
+
 #include <limits>
 #include <ostream>
 #include <string>
@@ -64,6 +66,9 @@ namespace bilayer
     double conjugate_displacement = std::numeric_limits<double>::quiet_NaN();
     /// Layer 1's displacement at Output/Displacement points.
     std::vector<dealii::Tensor<1, 2>> point_displacements;
+    /// The forces and mean displacements of the boundary parts
+    /// (boundary_forces()): the load-displacement curve.
+    std::vector<PartForce> parts;
     /// The total length of the crack.
     double                 crack_length = 0;
     std::vector<GrowthTip> tips;
@@ -80,18 +85,21 @@ namespace bilayer
   };
 
   /// The head of growth.csv ('#' lines and the header): tip columns for
-  /// @p n_tips tips, point columns for @p n_points points.
+  /// @p n_tips tips, point columns for @p n_points points, then the force
+  /// columns of the boundary parts @p parts (force_columns()).
   void
-  write_growth_csv_head(std::ostream      &out,
-                        const unsigned int n_tips,
-                        const unsigned int n_points);
+  write_growth_csv_head(std::ostream                 &out,
+                        const unsigned int            n_tips,
+                        const unsigned int            n_points,
+                        const std::vector<PartForce> &parts);
 
   /// One row of growth.csv: @p step.
   void
-  write_growth_csv_row(std::ostream      &out,
-                       const GrowthStep  &step,
-                       const unsigned int n_tips,
-                       const unsigned int n_points);
+  write_growth_csv_row(std::ostream                 &out,
+                       const GrowthStep             &step,
+                       const unsigned int            n_tips,
+                       const unsigned int            n_points,
+                       const std::vector<PartForce> &parts);
 
   /// growth.csv: '#' lines (what the columns mean), the header and one row
   /// per step; tip columns for @p n_tips tips (empty cells where a tip is

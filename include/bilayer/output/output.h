@@ -13,6 +13,7 @@
 #include <bilayer/subproblem/subproblem.h>
 
 #include <functional>
+#include <limits>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -97,6 +98,17 @@ namespace bilayer
     /// rewritten whole with every cycle: a growth run of many steps writes
     /// a constant number of bytes per step.
     bool deferred = false;
+    /// The time of the records written next in solution.pvd and
+    /// interface.pvd (a growth step's load factor, ...); NaN: the cycle's
+    /// number.
+    double time = std::numeric_limits<double>::quiet_NaN();
+
+    /// The time of cycle @p cycle in the .pvd collections.
+    double
+    time_of(const unsigned int cycle) const
+    {
+      return time == time ? time : cycle;
+    }
   };
 
   /**

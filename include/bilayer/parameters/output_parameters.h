@@ -36,6 +36,25 @@ namespace bilayer
     best
   };
 
+  /// What the .pvd time of a growth step is (Output/Time of growth
+  /// steps).
+  enum class GrowthTime
+  {
+    load_factor,
+    step,
+    crack_length
+  };
+
+  /// The names of the units of a unit system (Output/Unit system), as the
+  /// outputs and the scripts' axes write them.
+  struct UnitNames
+  {
+    std::string system = "units of the input";
+    std::string length = "length", stress = "stress", force = "stress x length",
+                energy_release_rate = "stress x length",
+                energy              = "stress x length^2";
+  };
+
   struct OutputParameters
   {
     std::string    directory         = "results";
@@ -46,6 +65,10 @@ namespace bilayer
     Compression    compression       = Compression::best_speed;
     unsigned int   progress_interval = 100;
     TerminalOutput terminal          = TerminalOutput::full;
+    /// Output/Time of growth steps.
+    GrowthTime growth_time = GrowthTime::load_factor;
+    /// Output/Unit system: only names the units (nothing is converted).
+    UnitNames units;
     /// Output/Written steps of crack growth: the solution fields (VTU,
     /// HDF5) and interface CSV of every this many steps (0: none), and of
     /// the last step if @p last_step.
@@ -94,6 +117,9 @@ namespace bilayer
     void
     parse_growth_outputs(const std::string &steps, const std::string &points);
   };
+  /// The names of the units of Output/Unit system @p system.
+  UnitNames
+  unit_names(const std::string &system);
 } // namespace bilayer
 
 #endif

@@ -318,6 +318,15 @@ namespace bilayer
       return stiffness;
     }
 
+    /// The load vector F in the unconstrained numbering (tractions, body
+    /// forces and preload at the present load factor; owners of a
+    /// subproblem not distributed() only).
+    const dealii::Vector<double> &
+    load() const
+    {
+      return load_vector;
+    }
+
     /// y = K x, the unconstrained stiffness (collective in the group with
     /// distributed()).
     void
