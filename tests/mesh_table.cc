@@ -133,10 +133,14 @@ main()
   while (std::getline(csv, header) && header.rfind("# ", 0) == 0)
     std::cout << "table.csv note: " << header << std::endl;
   std::cout << "table.csv header: " << header << std::endl;
-  // The fields, then G and its error bar at each of the two crack tips.
+  // The fields, the forces of the boundary parts, then G and its error bar
+  // at each of the two crack tips.
   std::string keys_csv;
   for (const std::string &key : CycleRecord::csv_keys())
     keys_csv += (keys_csv.empty() ? "" : ",") + key;
+  for (const std::string &key :
+       force_columns(study.records().back().forces.parts))
+    keys_csv += "," + key;
   keys_csv += ",G_tip1,dG_tip1,G_tip2,dG_tip2";
   if (header != keys_csv)
     std::cout << "table.csv header is not CycleRecord::csv_keys(): " << keys_csv

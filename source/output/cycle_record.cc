@@ -558,9 +558,10 @@ namespace bilayer
                   const bool                      along_x)
   {
     const std::vector<const RecordField *> columns = csv_fields();
-    // The fields, then G at each tip (the tips are the same in every cycle;
-    // states of one mesh may differ in the crack and their number of tips:
-    // null where a record has fewer).
+    // The fields, the forces of the boundary parts, then G at each tip,
+    // last (the tips are the same in every cycle; states of one mesh may
+    // differ in the crack and their number of tips: null where a record has
+    // fewer).
     unsigned int n_tips = 0;
     for (const CycleRecord &record : records)
       n_tips = std::max<unsigned int>(n_tips, record.release.size());
@@ -570,8 +571,6 @@ namespace bilayer
         out << "# " << note << '\n';
     for (unsigned int c = 0; c < columns.size(); ++c)
       out << (c ? "," : "") << columns[c]->csv_key;
-    for (unsigned int t = 0; t < n_tips; ++t)
-      out << ",G_tip" << t + 1 << ",dG_tip" << t + 1;
     // The forces and mean displacements of the boundary parts (those of
     // the first record: every state of a run has the same parts).
     const std::vector<PartForce>  none;
@@ -579,11 +578,14 @@ namespace bilayer
       records.empty() ? none : records[0].forces.parts;
     for (const std::string &column : force_columns(parts))
       out << ',' << column;
+    for (unsigned int t = 0; t < n_tips; ++t)
+      out << ",G_tip" << t + 1 << ",dG_tip" << t + 1;
     out << '\n';
     for (const CycleRecord &record : records)
       {
         for (unsigned int c = 0; c < columns.size(); ++c)
           out << (c ? "," : "") << csv(columns[c]->value(record));
+        out << force_cells(parts, record.forces.parts);
         for (unsigned int t = 0; t < n_tips; ++t)
           out << ","
               << (t < record.release.size() ? json(record.release[t].G) :
@@ -591,7 +593,6 @@ namespace bilayer
               << ","
               << (t < record.release.size() ? json(record.release[t].error) :
                                               std::string("null"));
-        out << force_cells(parts, record.forces.parts);
         out << '\n';
       }
   }

@@ -20,6 +20,9 @@ namespace bilayer
   Tensor<1, 2>
   PartForce::force() const
   {
+    if (layer_force.empty())
+      return Tensor<1, 2>({std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::quiet_NaN()});
     Tensor<1, 2> sum;
     for (const Tensor<1, 2> &f : layer_force)
       sum += f;
@@ -30,12 +33,13 @@ namespace bilayer
   Tensor<1, 2>
   PartForce::mean_displacement() const
   {
+    if (layer_mean_displacement.empty())
+      return Tensor<1, 2>({std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::quiet_NaN()});
     Tensor<1, 2> sum;
     for (const Tensor<1, 2> &u : layer_mean_displacement)
       sum += u;
-    return layer_mean_displacement.empty() ?
-             sum :
-             sum / static_cast<double>(layer_mean_displacement.size());
+    return sum / static_cast<double>(layer_mean_displacement.size());
   }
 
 

@@ -54,11 +54,12 @@ namespace bilayer
     };
     std::vector<RegionShare> regions;
 
-    /// The sum of layer_force over the layers.
+    /// The sum of layer_force over the layers (NaN where not computed).
     dealii::Tensor<1, 2>
     force() const;
 
-    /// The mean of layer_mean_displacement over the layers.
+    /// The mean of layer_mean_displacement over the layers (NaN where not
+    /// computed).
     dealii::Tensor<1, 2>
     mean_displacement() const;
   };
