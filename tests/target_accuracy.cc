@@ -157,20 +157,20 @@ main()
   {
     const std::string example = file_text(
       std::string(SOURCE_DIR) + "/../parameter_files/partial_closure.prm");
-    const Outcome o =
-      run(example + mesh(" set Number of cycles = 20\n"
-                         " set Target accuracy = 1e-3\n"
-                         " set Refinement = adaptive\n"
-                         " set Polynomial degree of layer 1 = 2\n"
-                         " set Polynomial degree of layer 2 = 2\n") +
-          "subsection Solver\n set Method = active set\n"
-          " set Warm start = true\nend\n");
-    const auto &r  = o.records;
-    bool        ok = o.accepted && r.size() >= 2 && r.size() < 20 &&
+    const Outcome o  = run(example +
+                          mesh(" set Number of cycles = 20\n"
+                                " set Target accuracy = 1e-3\n"
+                                " set Refinement = adaptive\n"
+                                " set Polynomial degree of layer 1 = 2\n"
+                                " set Polynomial degree of layer 2 = 2\n") +
+                          "subsection Solver\n set Method = active set\n"
+                           " set Warm start = true\nend\n");
+    const auto   &r  = o.records;
+    bool          ok = o.accepted && r.size() >= 2 && r.size() < 20 &&
               r.back().release.size() == 2;
     if (ok)
       {
-        const EnergyReleaseRate &open = r.back().release[0],
+        const EnergyReleaseRate &open   = r.back().release[0],
                                 &closed = r.back().release[1];
         ok = std::abs(open.error) <= 1e-3 * std::abs(open.G) &&
              std::abs(closed.G) + std::abs(closed.error) <=

@@ -57,27 +57,15 @@ namespace bilayer
   ForceBalance
   Model::forces() const
   {
-    // The tractions of every present layer on every boundary part.
-    const unsigned int n_slots = Layout::n_slots(scene.materials.n_layers);
-    std::vector<std::vector<std::unique_ptr<FunctionParser<2>>>> owners(
-      n_slots);
-    std::vector<std::vector<const Function<2> *>> traction(n_slots);
-    for (const Layer layer : scene.materials.layers())
-      if (scene.materials.has_layer(layer))
-        for (unsigned int part = 0; part < scene.geometry.parts.size(); ++part)
-          {
-            const unsigned int l = static_cast<unsigned int>(layer);
-            owners[l].push_back(scene.loads.traction_function(layer, part));
-            traction[l].push_back(owners[l].back().get());
-          }
+    const TractionFunctions tractions = traction_functions();
     return boundary_forces(subproblem_views(),
                            coupling,
                            w,
                            mu,
                            scene.geometry.parts.names,
                            scene.geometry.clamped,
-                           traction,
-                           n_slots);
+                           tractions.by_layer,
+                           Layout::n_slots(scene.materials.n_layers));
   }
 
 

@@ -179,6 +179,26 @@ namespace bilayer
   }
 
 
+  Model::TractionFunctions
+  Model::traction_functions() const
+  {
+    const unsigned int n_slots = Layout::n_slots(scene.materials.n_layers);
+    TractionFunctions  functions;
+    functions.owners.resize(n_slots);
+    functions.by_layer.resize(n_slots);
+    for (const Layer layer : scene.materials.layers())
+      if (scene.materials.has_layer(layer))
+        for (unsigned int part = 0; part < scene.geometry.parts.size(); ++part)
+          {
+            const unsigned int l = static_cast<unsigned int>(layer);
+            functions.owners[l].push_back(
+              scene.loads.traction_function(layer, part));
+            functions.by_layer[l].push_back(functions.owners[l].back().get());
+          }
+    return functions;
+  }
+
+
   void
   Model::set_up_subproblems()
   {
@@ -186,23 +206,15 @@ namespace bilayer
     // factorisation) as parallel tasks.
     const unsigned int n_slots = Layout::n_slots(scene.materials.n_layers);
     std::vector<decltype(scene.loads.prescribed_function(Layer::first))>
-      prescribed(n_slots);
-    std::vector<std::vector<std::unique_ptr<FunctionParser<2>>>>
-                                                  traction_owners(n_slots);
-    std::vector<std::vector<const Function<2> *>> traction(n_slots);
-    Tasks                                         setups;
+                            prescribed(n_slots);
+    const TractionFunctions tractions = traction_functions();
+    const auto             &traction  = tractions.by_layer;
+    Tasks                   setups;
     for (const Layer layer : scene.materials.layers())
       if (scene.materials.has_layer(layer))
         {
           const unsigned int l = static_cast<unsigned int>(layer);
           prescribed[l]        = scene.loads.prescribed_function(layer);
-          for (unsigned int part = 0; part < scene.geometry.parts.size();
-               ++part)
-            {
-              traction_owners[l].push_back(
-                scene.loads.traction_function(layer, part));
-              traction[l].push_back(traction_owners[l].back().get());
-            }
           for (const unsigned int r :
                Layout::indices(regions_and_layers.n_regions()))
             {

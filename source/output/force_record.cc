@@ -58,7 +58,7 @@ namespace bilayer
         << ", \"reactions\": " << json(forces.reactions)
         << ", \"residual\": " << json_number(forces.residual)
         << ", \"force_scale\": " << json_number(forces.force_scale)
-        << ", \"relative_imbalance\": " << json_number(forces.imbalance)
+        << ", \"relative_imbalance\": " << json_number(forces.imbalance())
         << ", \"roundoff\": " << json_number(forces.roundoff) << "}";
   }
 

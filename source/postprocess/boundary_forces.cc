@@ -17,29 +17,34 @@ namespace bilayer
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// The sum of @p list; NaN where it is empty (not computed).
+    Tensor<1, 2>
+    sum(const std::vector<Tensor<1, 2>> &list)
+    {
+      Tensor<1, 2> total;
+      if (list.empty())
+        total[0] = total[1] = std::numeric_limits<double>::quiet_NaN();
+      for (const Tensor<1, 2> &v : list)
+        total += v;
+      return total;
+    }
+  } // namespace
+
+
   Tensor<1, 2>
   PartForce::force() const
   {
-    if (layer_force.empty())
-      return Tensor<1, 2>({std::numeric_limits<double>::quiet_NaN(),
-                           std::numeric_limits<double>::quiet_NaN()});
-    Tensor<1, 2> sum;
-    for (const Tensor<1, 2> &f : layer_force)
-      sum += f;
-    return sum;
+    return sum(layer_force);
   }
 
 
   Tensor<1, 2>
   PartForce::mean_displacement() const
   {
-    if (layer_mean_displacement.empty())
-      return Tensor<1, 2>({std::numeric_limits<double>::quiet_NaN(),
-                           std::numeric_limits<double>::quiet_NaN()});
-    Tensor<1, 2> sum;
-    for (const Tensor<1, 2> &u : layer_mean_displacement)
-      sum += u;
-    return sum / static_cast<double>(layer_mean_displacement.size());
+    return sum(layer_mean_displacement) /
+           std::max<double>(layer_mean_displacement.size(), 1);
   }
 
 
@@ -298,11 +303,9 @@ namespace bilayer
           roundoff += v(n_parts * per_part + 4);
         }
     force_scale += balance.applied.norm();
-    const double residual = (balance.applied + balance.reactions).norm();
-    balance.imbalance     = force_scale > 0 ? residual / force_scale : residual;
-    balance.roundoff      = std::numeric_limits<double>::epsilon() * roundoff;
-    balance.residual      = residual;
-    balance.force_scale   = force_scale;
+    balance.residual    = (balance.applied + balance.reactions).norm();
+    balance.roundoff    = std::numeric_limits<double>::epsilon() * roundoff;
+    balance.force_scale = force_scale;
     return balance;
   }
 } // namespace bilayer

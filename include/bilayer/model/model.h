@@ -260,6 +260,18 @@ namespace bilayer
     }
 
   private:
+    /// The traction functions of every present layer on every boundary
+    /// part (Loads/Layer k/Traction on ...): their owners and, by layer
+    /// slot, the functions in the order of the parts.
+    struct TractionFunctions
+    {
+      std::vector<std::vector<std::unique_ptr<dealii::FunctionParser<2>>>>
+                                                            owners;
+      std::vector<std::vector<const dealii::Function<2> *>> by_layer;
+    };
+    TractionFunctions
+    traction_functions() const;
+
     /// The tips of interface @p i with the crack of @p curve (the other
     /// interfaces and the faces between plies, @p material_faces, are
     /// obstacles of theta).

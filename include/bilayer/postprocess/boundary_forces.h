@@ -8,6 +8,7 @@
 #include <bilayer/interface/interface.h>
 #include <bilayer/subproblem/subproblem.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -76,18 +77,25 @@ namespace bilayer
     /// The sum of the norms of the forces on the parts, by region and
     /// layer, and of the applied resultant [force].
     double force_scale = 0;
-    /// residual / force_scale; NaN where not computed (a subproblem
-    /// shared by a group of processes).
-    double imbalance = std::numeric_limits<double>::quiet_NaN();
     /// The round-off of the sums: machine epsilon times
     /// sum_i (sum_j |K_ij| |w_j| + |F_i| + |c_i|) over the subproblems
     /// [force].
     double roundoff = std::numeric_limits<double>::quiet_NaN();
 
+    /// Whether the forces were computed (not where a subproblem is shared
+    /// by a group of processes).
     bool
     computed() const
     {
-      return imbalance == imbalance;
+      return std::isfinite(residual);
+    }
+
+    /// residual / force_scale (residual where force_scale is 0); NaN where
+    /// not computed.
+    double
+    imbalance() const
+    {
+      return force_scale > 0 ? residual / force_scale : residual;
     }
 
     /// Whether the forces balance: residual <= roundoff + the tolerance
