@@ -21,7 +21,8 @@ main()
     "  set Poisson's ratio = 0.5\n end\nend\n",
     "subsection Geometry\n set Height of Sigma = 1.5\nend\n",
     "subsection Geometry\n set Crack interval on Sigma = 0.5, -0.5\nend\n",
-    "subsection Geometry\n set Clamped sides = bottom\nend\n",
+    "subsection Geometry\n set Clamped sides = left\n"
+    " set Crack interval on Sigma = -1, 0.5\nend\n",
     "subsection Solver\n set Uzawa step theta = 0\nend\n",
     "subsection Solver\n set Uzawa step theta = fast\nend\n",
     "subsection Solver\n set Tolerance = 0\nend\n",

@@ -30,6 +30,22 @@ namespace bilayer
            << " x " << record.forces.force_scale << ")";
       record.checks.emplace_back(what.str(), false);
     }
+
+
+    /// With floating subproblems: their anchors balanced to the
+    /// acceptance tolerance.
+    void
+    check_floating(CycleRecord &record, const double tolerance)
+    {
+      if (record.floating.subproblems.empty())
+        return;
+      std::ostringstream what;
+      what << std::setprecision(3)
+           << "anchors of the floating subproblems carry at most " << tolerance
+           << " of the load scale";
+      record.checks.emplace_back(what.str(),
+                                 record.floating.out_of_balance <= tolerance);
+    }
   } // namespace
 
 
@@ -201,6 +217,7 @@ namespace bilayer
       (std::isfinite(record.eta) || !estimates_error(record));
     record.checks.emplace_back("energy and residuals finite", finite);
     check_forces(record);
+    check_floating(record, scene.solver.acceptance_tolerance);
     // With a given support radius the last cycle must report G at every
     // tip where it is defined (the check appears only where it fails:
     // earlier cycles report NaN).

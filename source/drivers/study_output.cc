@@ -327,6 +327,31 @@ namespace bilayer
 
 
   void
+  Study::print_floating(const FloatingReport &floating) const
+  {
+    if (floating.subproblems.empty())
+      return;
+    pcout << "  floating subproblems         ";
+    for (unsigned int s = 0; s < floating.subproblems.size(); ++s)
+      pcout << (s ? ", " : "") << floating.subproblems[s];
+    pcout << (floating.free_specimen ? " (free specimen)" : "")
+          << ": largest anchor reaction " << std::scientific
+          << std::setprecision(2) << floating.out_of_balance
+          << " of the load scale after " << floating.outer_solves
+          << " outer solves and " << floating.jacobian_solves
+          << " coarse solves (" << std::setprecision(3)
+          << floating.coarse_seconds << " s)\n";
+    if (floating.free_specimen)
+      pcout << "  free specimen                load resultant ("
+            << floating.resultant[0] << ", " << floating.resultant[1]
+            << "), moment " << floating.resultant[2]
+            << "; rigid motion removed (" << floating.normalisation[0] << ", "
+            << floating.normalisation[1] << "), rotation "
+            << floating.normalisation[2] << "\n";
+  }
+
+
+  void
   Study::print_release(const CycleRecord &record) const
   {
     pcout << std::scientific << std::setprecision(4);
@@ -414,6 +439,7 @@ namespace bilayer
           << "  KKT residual (relative)      " << r.kkt.value() << "\n";
     print_release(record);
     print_forces(record.forces);
+    print_floating(record.floating);
     pcout << std::defaultfloat << std::setprecision(3)
           << "  processes                    " << record.processes
           << ", traces sent " << record.shared_values << " values in "

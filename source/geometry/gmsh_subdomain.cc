@@ -248,15 +248,12 @@ namespace bilayer
     // Boundary ids and manifolds from the line elements.
     const std::map<int, types::manifold_id> manifold_of =
       set_arc_manifolds(arc_centres, tria);
-    const bool clamped_part = assign_line_ids(g,
-                                              geometry.parts.names,
-                                              geometry.clamped,
-                                              surface.node_of,
-                                              manifold_of,
-                                              tria);
-    AssertThrow(clamped_part,
-                ExcMessage(where + ": '" + name +
-                           "' has no clamped part (Geometry/Clamped sides): "
-                           "each region must touch Gamma_D"));
+    // (A region without a clamped part floats: docs/floating.md.)
+    assign_line_ids(g,
+                    geometry.parts.names,
+                    geometry.clamped,
+                    surface.node_of,
+                    manifold_of,
+                    tria);
   }
 } // namespace bilayer

@@ -40,17 +40,18 @@ namespace bilayer
                  std::to_string(scene.mesh.goal_tip + 1) + ": the scene has " +
                  std::to_string(record.release.size()) + " tips (1 to " +
                  std::to_string(record.release.size()) + ")"));
-    const GoalEstimates estimates =
-      goal_oriented_estimates(subproblem_views(),
-                              coupling,
-                              w,
-                              mu,
-                              record.release,
-                              loads,
-                              goal,
-                              scene.mesh.goal_tip);
-    goal_fields.names  = {"dwr_energy"};
-    goal_fields.values = {estimates.energy_terms};
+    const FloatingParts floating  = floating_parts();
+    const GoalEstimates estimates = goal_oriented_estimates(subproblem_views(),
+                                                            coupling,
+                                                            w,
+                                                            mu,
+                                                            record.release,
+                                                            loads,
+                                                            goal,
+                                                            scene.mesh.goal_tip,
+                                                            &floating);
+    goal_fields.names             = {"dwr_energy"};
+    goal_fields.values            = {estimates.energy_terms};
     if (std::any_of(estimates.G_terms.begin(),
                     estimates.G_terms.end(),
                     [](const Vector<double> &v) { return v.size() > 0; }))

@@ -277,6 +277,18 @@ namespace bilayer
         {
           problem = one_line_message(e);
         }
+    // Floating subproblems (no clamped side) are balanced through
+    // held-set solves of all subproblems in one process.
+    if (problem.empty() && distribution.n_processes() > 1)
+      for (const auto &sub : subproblems)
+        if (sub != nullptr && sub->floating())
+          {
+            problem = "subproblem " + sub->name() +
+                      " touches no clamped part (Geometry/Clamped sides): "
+                      "floating subproblems are solved in runs of one "
+                      "process; run without mpirun or clamp a part of it";
+            break;
+          }
     problem = distribution.first_error(problem);
     if (!problem.empty())
       throw CollectiveError(problem);
@@ -363,6 +375,16 @@ namespace bilayer
   }
 
 
+  FloatingParts
+  Model::floating_parts() const
+  {
+    PerSubproblem<ElasticSubproblem *> targets(subproblems.size(), nullptr);
+    for (unsigned int s = 0; s < subproblems.size(); ++s)
+      targets[s] = subproblems[s].get();
+    return FloatingParts(targets, coupling);
+  }
+
+
   MultiplierSpace::Functions
   Model::multiplier_functions() const
   {
@@ -394,19 +416,32 @@ namespace bilayer
     Timer               solve_timer;
     const unsigned long shared_before  = distribution.shared_values();
     const double        seconds_before = distribution.shared_seconds();
-    if (scene.contact.friction == Friction::coulomb &&
-        scene.contact.coulomb_method == CoulombMethod::fixed_point)
-      {
-        FixedPointRecord fixed_point;
-        record.result =
-          CoulombFixedPoint(scene.solver, scene.contact, scene.output, pcout)
-            .solve(subproblem_views(), coupling, mu, w, fixed_point);
-        record.friction_iterations   = fixed_point.iterations;
-        record.friction_bound_change = fixed_point.bound_change;
-      }
+    const auto          outer = [&](BlockVector<double> &m, Solutions &u) {
+      if (scene.contact.friction == Friction::coulomb &&
+          scene.contact.coulomb_method == CoulombMethod::fixed_point)
+        {
+          FixedPointRecord   fixed_point;
+          const SolverResult result =
+            CoulombFixedPoint(scene.solver, scene.contact, scene.output, pcout)
+              .solve(subproblem_views(), coupling, m, u, fixed_point);
+          record.friction_iterations += fixed_point.iterations;
+          record.friction_bound_change = fixed_point.bound_change;
+          return result;
+        }
+      return create_outer_solver(scene.solver, scene.output, pcout)
+        ->solve(subproblem_views(), coupling, m, u);
+    };
+    record.friction_iterations   = 0;
+    const FloatingParts floating = floating_parts();
+    if (floating.any())
+      record.result = floating.balance(outer,
+                                       scene.solver.acceptance_tolerance,
+                                       mu,
+                                       w,
+                                       record.floating,
+                                       pcout);
     else
-      record.result = create_outer_solver(scene.solver, scene.output, pcout)
-                        ->solve(subproblem_views(), coupling, mu, w);
+      record.result = outer(mu, w);
     record.theta         = record.result.theta;
     record.solve_seconds = solve_timer.wall_time();
     if (scene.solver.dual_spectrum_steps > 0)

@@ -537,6 +537,7 @@ namespace bilayer
           }
         out << "]";
         write_forces_json(out, records[i].forces);
+        write_floating_json(out, records[i].floating);
         out << "}";
       }
     out << "\n  ]";

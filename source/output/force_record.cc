@@ -59,7 +59,36 @@ namespace bilayer
         << ", \"residual\": " << json_number(forces.residual)
         << ", \"force_scale\": " << json_number(forces.force_scale)
         << ", \"relative_imbalance\": " << json_number(forces.imbalance())
-        << ", \"roundoff\": " << json_number(forces.roundoff) << "}";
+        << ", \"roundoff\": " << json_number(forces.roundoff)
+        << ", \"anchors\": " << json(forces.anchors) << "}";
+  }
+
+
+  /// The "floating" object of a cycle: the floating subproblems and their
+  /// balance (nothing where every subproblem is clamped).
+  void
+  write_floating_json(std::ostream &out, const FloatingReport &floating)
+  {
+    if (floating.subproblems.empty())
+      return;
+    out << ", \"floating\": {\"subproblems\": [";
+    for (unsigned int s = 0; s < floating.subproblems.size(); ++s)
+      out << (s ? ", " : "") << json_text(floating.subproblems[s]);
+    out << "], \"free_specimen\": "
+        << (floating.free_specimen ? "true" : "false")
+        << ", \"outer_solves\": " << floating.outer_solves
+        << ", \"coarse_solves\": " << floating.jacobian_solves
+        << ", \"out_of_balance\": " << json_number(floating.out_of_balance);
+    if (floating.free_specimen)
+      out << ", \"load_resultant\": [" << json_number(floating.resultant[0])
+          << ", " << json_number(floating.resultant[1]) << ", "
+          << json_number(floating.resultant[2])
+          << "], \"load_magnitude\": " << json_number(floating.load_magnitude)
+          << ", \"rigid_motion_removed\": ["
+          << json_number(floating.normalisation[0]) << ", "
+          << json_number(floating.normalisation[1]) << ", "
+          << json_number(floating.normalisation[2]) << "]";
+    out << "}";
   }
 
 

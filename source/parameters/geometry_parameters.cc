@@ -151,13 +151,8 @@ namespace bilayer
                            "interface: leave the entry empty"));
     if (!gmsh_file.empty())
       {
-        // The file's own checks (Geometry) say which subdomain lacks a
-        // clamped part.
-        AssertThrow(std::find(clamped.begin(), clamped.end(), true) !=
-                      clamped.end(),
-                    ExcMessage("Geometry/Clamped sides must name at least one "
-                               "boundary curve of '" +
-                               gmsh_file + "', got '" + clamped_text + "'"));
+        // (No clamped curve: a free specimen; a region without one floats,
+        // docs/floating.md.)
         return;
       }
 
@@ -182,12 +177,6 @@ namespace bilayer
                       crack_text,
                       crack_start,
                       crack_end);
-    const bool sides = clamped[0] || clamped[1];
-    AssertThrow(sides || (clamped[2] && clamped[3]),
-                ExcMessage("Geometry/Clamped sides must clamp a part of the "
-                           "boundary of both Omega- and Omega+ (left or right, "
-                           "or both bottom and top), got '" +
-                           clamped_text + "'"));
     check_crack_ends("Geometry/Crack interval on Sigma",
                      "Sigma",
                      crack_text,
@@ -206,13 +195,6 @@ namespace bilayer
                                "; allowed: above the interface below it (y = " +
                                number(below) + ") and below y_max = " +
                                number(y_max) + ", by increasing y"));
-        AssertThrow(sides,
-                    ExcMessage(what +
-                               ": the regions between interfaces are "
-                               "held by the left or right side only; "
-                               "Geometry/Clamped sides = '" +
-                               clamped_text +
-                               "' clamps neither (clamp left or right)"));
         const std::string text =
           number(f.crack_start) + ", " + number(f.crack_end);
         check_crack_range(what, text, f.crack_start, f.crack_end);

@@ -62,10 +62,11 @@ namespace bilayer
     }
 
     /// Per part: force (2), int w ds (2), length; then the applied load's
-    /// resultant (2) and the reactions' (2), and the scale of the
-    /// round-off of the sums, sum_i (sum_j |K_ij| |w_j| + |F_i| + |c_i|).
+    /// resultant (2) and the reactions' (2), the scale of the round-off of
+    /// the sums, sum_i (sum_j |K_ij| |w_j| + |F_i| + |c_i|), and the
+    /// resultant of the reactions at a floating subproblem's anchors (2).
     constexpr unsigned int per_part = 5;
-    constexpr unsigned int totals   = 5;
+    constexpr unsigned int totals   = 7;
 
     /// The residual r = K w - F - c of @p sub with the residuals of the
     /// hanging nodes moved to their masters.
@@ -143,6 +144,15 @@ namespace bilayer
                   values(p * per_part + component(i)) += r(i);
                   values(n_parts * per_part + 2 + component(i)) += r(i);
                 }
+          }
+
+      // A floating subproblem's anchors: what they carry is a reaction
+      // too (zero where the floating parts are balanced).
+      if (sub.floating())
+        for (const types::global_dof_index i : sub.anchors())
+          {
+            values(n_parts * per_part + 2 + component(i)) += r(i);
+            values(n_parts * per_part + 5 + component(i)) += r(i);
           }
 
       // The tractions' resultants, int w ds and the lengths.
@@ -301,6 +311,8 @@ namespace bilayer
           balance.reactions += Tensor<1, 2>(
             {v(n_parts * per_part + 2), v(n_parts * per_part + 3)});
           roundoff += v(n_parts * per_part + 4);
+          balance.anchors += Tensor<1, 2>(
+            {v(n_parts * per_part + 5), v(n_parts * per_part + 6)});
         }
     force_scale += balance.applied.norm();
     balance.residual    = (balance.applied + balance.reactions).norm();

@@ -182,7 +182,8 @@ namespace bilayer
                           const std::vector<EnergyReleaseRate> &release,
                           const BoundaryLoads                  &loads,
                           const RefinementGoal                  goal,
-                          const unsigned int                    goal_tip)
+                          const unsigned int                    goal_tip,
+                          const FloatingParts                  *floating)
   {
     Timer              timer;
     GoalEstimates      result;
@@ -222,7 +223,10 @@ namespace bilayer
               });
           tasks.join_all();
           HeldSetSolution dual =
-            solve_with_held_set(subproblems, interface, w, mu, j, 1e-10, 2000);
+            floating != nullptr && floating->any() ?
+              floating->solve_with_held_set(w, mu, j, 1e-10, 2000) :
+              solve_with_held_set(
+                subproblems, interface, w, mu, j, 1e-10, 2000);
           result.dual_iterations += dual.iterations;
           result.subdomain_solves += dual.subdomain_solves;
           if (!dual.converged)

@@ -3,6 +3,7 @@
 #include <bilayer/solvers/feti_preconditioner.h>
 
 #include <algorithm>
+#include <memory>
 
 namespace bilayer
 {
@@ -15,7 +16,10 @@ namespace bilayer
                       const BlockVector<double> &mu,
                       const Solutions           &j,
                       const double               tolerance,
-                      const unsigned int         max_iterations)
+                      const unsigned int         max_iterations,
+                      const BlockVector<double> *jump_offset,
+                      FetiPreconditioner        *given,
+                      const bool                 whole_z)
   {
     HeldSetSolution result;
     // The free set I of the state.
@@ -32,17 +36,31 @@ namespace bilayer
     for (const unsigned int s : Layout::indices(subproblems.size()))
       if (subproblems[s] != nullptr)
         {
+          // (No solve for a zero load.)
+          if (j[s].linfty_norm() == 0)
+            {
+              z0[s].reinit(subproblems[s]->n_dofs());
+              continue;
+            }
           subproblems[s]->solve_load(j[s], z0[s]);
           largest = std::max(largest, z0[s].linfty_norm());
           ++result.subdomain_solves;
         }
     BlockVector<double> r;
     interface.jumps(z0, r);
+    if (jump_offset != nullptr)
+      {
+        r += *jump_offset;
+        largest = std::max(largest, jump_offset->linfty_norm());
+      }
     interface.space().scale_by_weights(r);
     r.scale(mask);
-    FetiPreconditioner preconditioner(DualPreconditioner::lumped,
-                                      subproblems,
-                                      interface);
+    std::unique_ptr<FetiPreconditioner> lumped;
+    if (given == nullptr)
+      lumped = std::make_unique<FetiPreconditioner>(DualPreconditioner::lumped,
+                                                    subproblems,
+                                                    interface);
+    FetiPreconditioner &preconditioner = given ? *given : *lumped;
     preconditioner.reinit(mask);
     const double start  = active_set::largest_jump(interface, r);
     const double target = tolerance * std::max(largest, 1e-300);
@@ -62,6 +80,8 @@ namespace bilayer
     if (result.nu.size() == 0)
       set.initialize(result.nu);
 
+    if (!whole_z)
+      return result;
     // z = K^{-1} (j - B^T nu), whole.
     Solutions loads;
     interface.apply(result.nu, loads);

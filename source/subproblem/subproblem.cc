@@ -394,21 +394,7 @@ namespace bilayer
     Timer timer;
     dofs.distribute_dofs(*fe_system);
 
-    constraints.clear();
-    homogeneous_constraints.clear();
-    DoFTools::make_hanging_node_constraints(dofs, constraints);
-    DoFTools::make_hanging_node_constraints(dofs, homogeneous_constraints);
-    const Functions::ZeroFunction<2> zero(2);
-    for (unsigned int side = 0; side < clamped.size(); ++side)
-      if (clamped[side])
-        {
-          VectorTools::interpolate_boundary_values(
-            mapping(), dofs, side, prescribed, constraints);
-          VectorTools::interpolate_boundary_values(
-            mapping(), dofs, side, zero, homogeneous_constraints);
-        }
-    constraints.close();
-    homogeneous_constraints.close();
+    make_constraints(clamped, prescribed);
     start_load_parts(volume);
     const IndexSet on_sigma =
       DoFTools::extract_boundary_dofs(dofs,
@@ -503,8 +489,32 @@ namespace bilayer
               }
           }
       }
+    make_anchor_modes();
     factorisation_seconds = timer.wall_time();
     ++factorisations;
+  }
+
+
+  void
+  ElasticSubproblem::make_constraints(const std::vector<bool> &clamped,
+                                      const Function<2>       &prescribed)
+  {
+    constraints.clear();
+    homogeneous_constraints.clear();
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    DoFTools::make_hanging_node_constraints(dofs, homogeneous_constraints);
+    choose_anchors(clamped);
+    const Functions::ZeroFunction<2> zero(2);
+    for (unsigned int side = 0; side < clamped.size(); ++side)
+      if (clamped[side])
+        {
+          VectorTools::interpolate_boundary_values(
+            mapping(), dofs, side, prescribed, constraints);
+          VectorTools::interpolate_boundary_values(
+            mapping(), dofs, side, zero, homogeneous_constraints);
+        }
+    constraints.close();
+    homogeneous_constraints.close();
   }
 
 

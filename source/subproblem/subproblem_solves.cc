@@ -113,6 +113,7 @@ namespace bilayer
         factorisation.solve(solution);
       }
     constraints.distribute(solution);
+    add_anchor_displacements(solution);
   }
 
 

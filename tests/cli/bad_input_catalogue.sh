@@ -182,7 +182,7 @@ run "crack outside Sigma" "Geometry/Crack interval on Sigma must satisfy -1 <= x
 run "crack touching Gamma_D" "Geometry/Crack interval on Sigma = '-0.5, 1' reaches the right side (x = 1), which is clamped (Geometry/Clamped sides = 'left, right')" "Geometry/Crack interval on Sigma=-0.5, 1"
 run "edge crack at a clamped side" "Geometry/Crack interval on Sigma = '-1, 0.5' reaches the left side (x = -1), which is clamped" "Geometry/Crack interval on Sigma=-1, 0.5" --set "Geometry/Clamped sides=left"
 run "crack covering all of Sigma" "Geometry/Crack interval on Sigma = '-1, 1' covers all of Sigma" "Geometry/Crack interval on Sigma=-1, 1" --set "Geometry/Clamped sides=bottom, top" --set "Loads/Layer 1/Traction on bottom side=0; 0" --set "Loads/Layer 1/Traction on top side=0; 0"
-run "no clamped part" "Geometry/Clamped sides must clamp a part of the boundary of both Omega- and Omega+" "Geometry/Clamped sides=bottom"
+run "free specimen, unbalanced loads" "nothing is clamped (Geometry/Clamped sides is empty): a free specimen's loads must be in equilibrium, but their resultant force is" "Geometry/Clamped sides=" --set "Loads/Layer 1/Traction on top side=0; 1"
 # Several interfaces (Geometry/Interfaces above Sigma): the list's form, the
 # heights in order inside Omega, each crack as on Sigma, one layer, no growth.
 run "interfaces above Sigma malformed" "Geometry/Interfaces above Sigma must be a list of 'y' or 'y: x_start, x_end' separated by ';', got '0.5: 1'" "Geometry/Interfaces above Sigma=0.5: 1"

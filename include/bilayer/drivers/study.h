@@ -394,6 +394,9 @@ namespace bilayer
     /// balance, a line each.
     void
     print_forces(const ForceBalance &forces) const;
+    /// The floating subproblems' balance (nothing where none floats).
+    void
+    print_floating(const FloatingReport &floating) const;
 
     /// The .pvd time of growth step @p step, the present state
     /// (Output/Time of growth steps: its load factor, number or crack

@@ -160,6 +160,11 @@ namespace bilayer
     MultiplierSpace::Functions
     multiplier_functions() const;
 
+    /// The floating subproblems of the present mesh (FloatingParts: none
+    /// where every subproblem touches a clamped part).
+    FloatingParts
+    floating_parts() const;
+
     /// The outer solve (the solver of Solver/Method; Coulomb friction by
     /// the fixed point where asked), its times and the MPI exchange in
     /// @p record.

@@ -9,6 +9,7 @@
 #include <bilayer/parameters/output_parameters.h>
 #include <bilayer/postprocess/boundary_forces.h>
 #include <bilayer/postprocess/fracture.h>
+#include <bilayer/solvers/floating_parts.h>
 #include <bilayer/solvers/outer_solver.h>
 
 #include <array>
@@ -71,6 +72,9 @@ namespace bilayer
     /// The energy release rate at each crack tip, ordered by s (empty
     /// without a crack or with Fracture/Energy release rate = false).
     std::vector<EnergyReleaseRate> release;
+    /// The floating subproblems and their balance (FloatingParts; empty
+    /// where every subproblem is clamped).
+    FloatingReport floating;
     /// The forces and mean displacements of the boundary parts, and their
     /// balance (boundary_forces()).
     ForceBalance forces;
@@ -240,6 +244,11 @@ namespace bilayer
   /// object in summary.json.
   void
   write_forces_json(std::ostream &out, const ForceBalance &forces);
+
+  /// The "floating" object of a cycle's object in summary.json (nothing
+  /// where no subproblem floats).
+  void
+  write_floating_json(std::ostream &out, const FloatingReport &floating);
 
   /// The columns of the forces and mean displacements of the boundary
   /// parts @p parts in table.csv and growth.csv: Fx_NAME, Fy_NAME, ux_NAME,

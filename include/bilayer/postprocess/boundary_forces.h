@@ -70,8 +70,12 @@ namespace bilayer
   {
     std::vector<PartForce> parts;
     /// The resultant of every applied load (tractions and body forces of
-    /// all layers) and of every reaction of the clamps.
+    /// all layers) and of every reaction of the clamps and of the anchors
+    /// of floating subproblems (ElasticSubproblem::floating()).
     dealii::Tensor<1, 2> applied, reactions;
+    /// The resultant of the anchors' reactions alone (in reactions): the
+    /// out-of-balance force left on the floating subproblems.
+    dealii::Tensor<1, 2> anchors;
     /// |applied + reactions| [force].
     double residual = std::numeric_limits<double>::quiet_NaN();
     /// The sum of the norms of the forces on the parts, by region and

@@ -7,6 +7,7 @@
 
 #include <bilayer/interface/interface.h>
 #include <bilayer/postprocess/fracture.h>
+#include <bilayer/solvers/floating_parts.h>
 #include <bilayer/solvers/subdomain_solves.h>
 
 #include <string>
@@ -90,7 +91,9 @@ namespace bilayer
    * the interfaces (t the multipliers' traction). Not computed (note says
    * why): in a run with MPI, and for tips whose G carries contact or
    * friction face terms the dual load leaves out (the G estimate is still
-   * computed: the note names the missing terms).
+   * computed: the note names the missing terms). With @p floating, the
+   * dual problems balance its floating subproblems' anchors
+   * (FloatingParts::solve_with_held_set()).
    */
   GoalEstimates
   goal_oriented_estimates(const Subproblems                    &subproblems,
@@ -100,7 +103,8 @@ namespace bilayer
                           const std::vector<EnergyReleaseRate> &release,
                           const BoundaryLoads                  &loads,
                           const RefinementGoal                  goal,
-                          const unsigned int                    goal_tip);
+                          const unsigned int                    goal_tip,
+                          const FloatingParts *floating = nullptr);
 
   namespace goal
   {

@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/block_vector.h>
 
+#include <bilayer/solvers/feti_preconditioner.h>
 #include <bilayer/solvers/subdomain_solves.h>
 
 namespace bilayer
@@ -36,6 +37,12 @@ namespace bilayer
    * goal-oriented error estimates (docs/fracture.md §11) are of this kind:
    * the operators are symmetric, so the dual of the linearised problem is
    * the problem itself with the derivative of the goal as the load.
+   * With @p jump_offset, (B z + jump_offset)_I = 0 instead (the jumps of
+   * a prescribed motion, e.g. of a floating subproblem's anchors), and the
+   * tolerance is relative to the larger of |z0| and |jump_offset|. With
+   * @p preconditioner, that one (built for @p subproblems and
+   * @p interface; restricted to I here) instead of the lumped one.
+   * Without @p whole_z only nu is computed (z stays empty).
    * Serial subproblems only (each owned by this process, none shared).
    */
   HeldSetSolution
@@ -45,7 +52,10 @@ namespace bilayer
                       const dealii::BlockVector<double> &mu,
                       const Solutions                   &j,
                       const double                       tolerance,
-                      const unsigned int                 max_iterations);
+                      const unsigned int                 max_iterations,
+                      const dealii::BlockVector<double> *jump_offset = nullptr,
+                      FetiPreconditioner *preconditioner             = nullptr,
+                      const bool          whole_z                    = true);
 } // namespace bilayer
 
 #endif

@@ -146,6 +146,82 @@ namespace bilayer
     apply_schur_complement(const dealii::Vector<double> &x,
                            dealii::Vector<double>       &y) const;
 
+    /**
+     * Whether the subproblem floats: no side of it is clamped, so its
+     * stiffness has the rigid motions (two translations and a rotation) as
+     * kernel. setup() then holds three anchor dofs at zero (both components
+     * at one support point near the middle, one component at the support
+     * point farthest from it), which makes the factorised matrix K~
+     * non-singular: K~^{-1} b solves K w = b wherever the load b is in
+     * equilibrium (R^T b = 0, R the rigid motions), since the anchors' three
+     * reactions then balance each other and vanish. Where it is not, the
+     * anchors carry the out-of-balance force and moment: the reactions that
+     * FloatingParts (solvers/floating_parts.h) drives to zero by moving the
+     * anchors (set_anchor_displacements()).
+     */
+    bool
+    floating() const
+    {
+      return !anchors_.empty();
+    }
+
+    /// With floating(): the three anchor dofs.
+    const std::vector<dealii::types::global_dof_index> &
+    anchors() const
+    {
+      return anchors_;
+    }
+
+    /**
+     * With floating(), on an owner: E_k, the solution without load for a
+     * unit displacement of anchor k and zero at the other two (the rigid
+     * motion with these anchor values: the discrete-harmonic extension of
+     * the anchor values, a rigid motion wherever the element space holds
+     * the rigid motions exactly).
+     */
+    const dealii::Vector<double> &
+    anchor_mode(const unsigned int k) const
+    {
+      return anchor_modes[k];
+    }
+
+    /// With floating(): the support point of anchor @p k and the component
+    /// (0: x, 1: y) it holds.
+    std::pair<dealii::Point<2>, unsigned int>
+    anchor_place(const unsigned int k) const
+    {
+      return anchor_places[k];
+    }
+
+    /// With floating(): the anchors' displacements alpha (zero after
+    /// setup()). solve() and solve_on_sigma() (not the homogeneous solves)
+    /// add sum_k alpha_k E_k: the anchors prescribed at alpha.
+    void
+    set_anchor_displacements(const std::array<double, 3> &alpha);
+
+    const std::array<double, 3> &
+    anchor_displacements() const
+    {
+      return anchor_values;
+    }
+
+    /**
+     * With floating(), on an owner: the reactions at the three anchors,
+     * (K w - b) at the anchor dofs, K the unconstrained stiffness, of a
+     * solution w of the anchored problem with the load @p b (its load()
+     * plus the multiplier terms for a state) and the anchors at
+     * @p alpha. Since K w - b vanishes off the anchors and K E_k off them
+     * too, E_k^T (K w - b) is the reaction r_k, and it equals
+     * sum_j Q_jk alpha_j - E_k^T b, Q_jk = (K E_k)(a_j) (zero where the
+     * element space holds the rigid motions exactly): no use of w. With
+     * @p sigma_only, @p b is taken to vanish off the Sigma dofs (multiplier
+     * terms) and the products run over those alone.
+     */
+    std::array<double, 3>
+    anchor_reactions(const std::array<double, 3>  &alpha,
+                     const dealii::Vector<double> &b,
+                     const bool                    sigma_only = false) const;
+
     /// Whether a group of processes shares it (DistributedSystem).
     bool
     distributed() const
@@ -495,6 +571,31 @@ namespace bilayer
       std::vector<std::pair<unsigned int, double>> entries;
     };
     std::vector<ConstrainedSigmaDof> constrained_sigma_dofs;
+
+    /// With floating(): the anchor dofs (hanging-node free, off Sigma
+    /// where possible), their modes E_k (owners) and displacements.
+    std::vector<dealii::types::global_dof_index> anchors_;
+    std::array<dealii::Vector<double>, 3>        anchor_modes;
+    std::array<double, 3>                        anchor_values = {{0, 0, 0}};
+    /// Q_jk = (K E_k)(a_j) (owners).
+    std::array<std::array<double, 3>, 3> anchor_stiffness = {};
+    std::array<std::pair<dealii::Point<2>, unsigned int>, 3> anchor_places;
+    /// In setup(): the hanging nodes, the anchors of a floating subproblem
+    /// and the clamped sides (prescribed and zero), closed.
+    void
+    make_constraints(const std::vector<bool>   &clamped,
+                     const dealii::Function<2> &prescribed);
+    /// In setup(), with the hanging-node constraints made: the anchors of a
+    /// subproblem none of whose sides in @p clamped is clamped (none
+    /// otherwise).
+    void
+    choose_anchors(const std::vector<bool> &clamped);
+    /// In setup(), after the factorisation: the modes E_k (owners).
+    void
+    make_anchor_modes();
+    /// sum_k alpha_k E_k added to @p solution (non-homogeneous solves).
+    void
+    add_anchor_displacements(dealii::Vector<double> &solution) const;
 
     /// The load factor, whether there is a preload, and the parts of the
     /// load (owners only): unit_rhs and unit_load the proportional ones at
