@@ -17,6 +17,9 @@
 //   normalisation change with it): translated by (100, -37) the energy and
 //   the curvature agree to 1e-7 (measured 8e-9 and 1.5e-8: the KKT
 //   tolerance and the round-off of coordinates near 100);
+// - the free strip is normalised: the integrals of w and of (x - c) x w
+//   over all subproblems (c the centroid) vanish to 1e-10 of those of |w|
+//   and |x - c| |w|;
 // - the steady state of a debond in a cooled film on a free substrate
 //   (tests/film_steady_state.cc, now with nothing clamped): G within 1 % of
 //   the energy per unit length of the bonded strip, and of the rigid-
@@ -26,10 +29,14 @@
 //   eps_xx = 0 through the thickness, so G tends to G_ss whatever E_s
 //   (within 1 %), and the film with its far end clamped as well (30 film
 //   thicknesses from the tip) releases the same G within 1 %;
+//   and, on one mesh (global refinement, cells of h/4), G within 1 % of the
+//   fourth-order difference of the energy in the debond length (G = -dPi/da);
 // - an unbalanced traction on a free specimen is refused in one line
 //   naming the resultant.
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <bilayer/drivers/study.h>
 #include <bilayer/parameters/parameters.h>
@@ -115,7 +122,70 @@ namespace
   {
     bool   accepted  = false;
     double curvature = 0, energy = 0;
+    /// |int w dx| / int |w| dx and |int (x - c) x w dx| / int |x - c| |w| dx
+    /// over all subproblems (c the centroid): the mean translation and
+    /// rotation the normalisation leaves.
+    double translation = 1, rotation = 1;
   };
+
+  /// The mean translation and rotation of the solution of @p study,
+  /// relative (BimetalRun).
+  void
+  mean_rigid_motion(const Study &study, BimetalRun &r)
+  {
+    const auto subproblems = study.state().subproblem_views();
+    double     m0 = 0, mx = 0, my = 0;
+    for (const ElasticSubproblem *sub : subproblems)
+      if (sub != nullptr)
+        {
+          FEValues<2> values(sub->mapping(),
+                             sub->fe(),
+                             QGauss<2>(sub->fe().degree + 1),
+                             update_quadrature_points | update_JxW_values);
+          for (const auto &cell : sub->dof_handler().active_cell_iterators())
+            {
+              values.reinit(cell);
+              for (const unsigned int q : values.quadrature_point_indices())
+                {
+                  m0 += values.JxW(q);
+                  mx += values.quadrature_point(q)[0] * values.JxW(q);
+                  my += values.quadrature_point(q)[1] * values.JxW(q);
+                }
+            }
+        }
+    const Point<2> c(mx / m0, my / m0);
+    Tensor<1, 2>   mean;
+    double         size = 0, turn = 0, turn_size = 0;
+    for (unsigned int s = 0; s < subproblems.size(); ++s)
+      if (subproblems[s] != nullptr)
+        {
+          const ElasticSubproblem    &sub = *subproblems[s];
+          FEValues<2>                 values(sub.mapping(),
+                             sub.fe(),
+                             QGauss<2>(sub.fe().degree + 1),
+                             update_values | update_quadrature_points |
+                               update_JxW_values);
+          std::vector<Vector<double>> w(values.n_quadrature_points,
+                                        Vector<double>(2));
+          for (const auto &cell : sub.dof_handler().active_cell_iterators())
+            {
+              values.reinit(cell);
+              values.get_function_values(study.solutions()[s], w);
+              for (const unsigned int q : values.quadrature_point_indices())
+                {
+                  const Tensor<1, 2> d  = values.quadrature_point(q) - c;
+                  const double       dx = values.JxW(q);
+                  const Tensor<1, 2> u({w[q](0), w[q](1)});
+                  mean += u * dx;
+                  size += u.norm() * dx;
+                  turn += (d[0] * u[1] - d[1] * u[0]) * dx;
+                  turn_size += d.norm() * u.norm() * dx;
+                }
+            }
+        }
+    r.translation = mean.norm() / size;
+    r.rotation    = std::abs(turn) / turn_size;
+  }
 
   BimetalRun
   run_bimetal(const bool stress, const double x0, const double y0)
@@ -132,6 +202,7 @@ namespace
     };
     r.curvature = (u_y(L / 2 + d) - 2 * u_y(L / 2) + u_y(L / 2 - d)) / (d * d);
     r.energy    = study.records().back().energy;
+    mean_rigid_motion(study, r);
     return r;
   }
 
@@ -140,7 +211,8 @@ namespace
        const double       E_s,
        const double       crack_start,
        const double       crack_end,
-       const double       width)
+       const double       width,
+       const bool         adaptive = true)
   {
     std::ostringstream s;
     s.precision(17);
@@ -151,7 +223,9 @@ namespace
       << "\n set Clamped sides = " << clamped << "\nend\n"
       << "subsection Mesh\n set Cells along Sigma = " << 4 * width
       << "\n set Polynomial degree of layer 1 = 2\n"
-      << " set Refinement = adaptive\n set Number of cycles = 5\nend\n"
+      << (adaptive ? " set Refinement = adaptive\n set Number of cycles = 5\n" :
+                     " set Refinement = global\n set Number of cycles = 1\n")
+      << "end\n"
       << "subsection Materials\n set Number of layers = 1\n"
       << " subsection Layer 1\n  set Young's modulus = " << E_s
       << "\n  set Poisson's ratio = 0.28\n  set Thermal expansion = 0\n"
@@ -166,17 +240,22 @@ namespace
     return s.str();
   }
 
-  /// G at the tips of a run (empty where it is not accepted).
+  /// G at the tips of a run (empty where it is not accepted), and its
+  /// energy in @p energy (NaN where not accepted).
   std::vector<double>
-  release(const std::string &scene)
+  release(const std::string &scene, double *energy = nullptr)
   {
     std::ostringstream  sink;
     Study               study(scene_from_string(scene, "film"), sink);
     std::vector<double> G;
+    if (energy != nullptr)
+      *energy = std::nan("");
     if (!study.run())
       return G;
     for (const auto &r : study.records().back().release)
       G.push_back(r.G);
+    if (energy != nullptr)
+      *energy = study.records().back().energy;
     return G;
   }
 } // namespace
@@ -196,10 +275,11 @@ main()
       strip(stress, kappa, energy);
       const BimetalRun a = run_bimetal(stress, 0, 0);
       const BimetalRun b = run_bimetal(stress, 100, -37);
-      measured << name << ": kappa " << -a.curvature << " Timoshenko " << kappa
-               << " translated " << -b.curvature << "; energy " << a.energy
-               << " translated " << b.energy << " strip " << energy * L
-               << std::endl;
+      measured << name << ": mean translation " << a.translation << " rotation "
+               << a.rotation << "; kappa " << -a.curvature << " Timoshenko "
+               << kappa << " translated " << -b.curvature << "; energy "
+               << a.energy << " translated " << b.energy << " strip "
+               << energy * L << std::endl;
       std::cout << name
                 << ": free strip accepted: " << yes(a.accepted && b.accepted)
                 << std::endl;
@@ -209,6 +289,11 @@ main()
                 << ": energy between the long strip's over L - 4 h and L: "
                 << yes(a.energy <= energy * L &&
                        a.energy >= energy * (L - 4 * (h1 + h2)))
+                << std::endl;
+      std::cout << name
+                << ": zero mean translation and rotation (1e-10 relative): "
+                << yes(a.translation < 1e-10 && a.rotation < 1e-10 &&
+                       b.translation < 1e-10 && b.rotation < 1e-10)
                 << std::endl;
       std::cout << name
                 << ": translated strip, same energy and curvature (1e-7): "
@@ -268,6 +353,23 @@ main()
     std::cout << "G within 1 % of G_ss: "
               << yes(held.size() == 1 && std::abs(held[0] / G_ss - 1) < 0.01)
               << std::endl;
+    // G against the fourth-order difference of the energy in the debond
+    // length on one mesh (global refinement: the same cells for every a;
+    // the cell 0.25 = delta, so every tip lies on a vertex).
+    const double delta = 0.25;
+    double       Pi[5], G_here = std::nan("");
+    for (int k = -2; k <= 2; ++k)
+      {
+        const std::vector<double> g = release(
+          film("bottom", 700, 0, 10 + k * delta, 40, false), &Pi[k + 2]);
+        if (k == 0 && g.size() == 1)
+          G_here = g[0];
+      }
+    const double G_fd = -(Pi[0] - 8 * Pi[1] + 8 * Pi[3] - Pi[4]) / (12 * delta);
+    measured << "held through the substrate, one mesh: G " << G_here
+             << " fourth-order difference of the energy " << G_fd << std::endl;
+    std::cout << "G within 1 % of the fourth-order difference of the energy: "
+              << yes(std::abs(G_here / G_fd - 1) < 0.01) << std::endl;
     std::cout << "G within 1 % of the film clamped at its far end as well: "
               << yes(held.size() == 1 && both.size() == 1 &&
                      std::abs(held[0] / both[0] - 1) < 0.01)

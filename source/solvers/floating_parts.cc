@@ -1,7 +1,9 @@
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <bilayer/core/layout.h>
@@ -297,6 +299,29 @@ namespace bilayer
 
 
   void
+  FloatingParts::predict_multipliers(const Jacobian            &J,
+                                     const std::vector<double> &step,
+                                     BlockVector<double>       &mu) const
+  {
+    // The multipliers the held set predicts: exact where it holds. Not on
+    // a contact multiplier that is zero now (an open crack node, or one at
+    // its bound): a coarse matrix carried over from another state would
+    // leave a stray value there, which the outer solver may accept as it
+    // stands (its residual small) though the node is open.
+    const MultiplierSet &set = interface.space().set();
+    BlockVector<double>  change;
+    set.initialize(change);
+    for (unsigned int u = 0; u < unknowns.size(); ++u)
+      change.add(step[u], J.nu[u]);
+    for (unsigned int i = 0; i < change.size(); ++i)
+      if (set.contact(i) && mu(i) == 0)
+        change(i) = 0;
+    mu += change;
+    set.project(mu);
+  }
+
+
+  void
   FloatingParts::move_anchors(const std::vector<double> &step) const
   {
     for (unsigned int u = 0; u < unknowns.size(); ++u)
@@ -316,48 +341,41 @@ namespace bilayer
     report.subproblems   = names();
     if (!free)
       return;
-    // Resultant force and moment about the origin, then about the centroid
-    // of the support points.
-    double   fx = 0, fy = 0, m = 0, magnitude = 0, n_points = 0;
-    Point<2> centre, low, high;
-    bool     first = true;
+    // The resultant force and moment about the centre of the bounding box:
+    // the work of the load on the rigid motions, each made of the anchor
+    // modes (rigid motions with unit anchor values: t^T F = sum_k
+    // t(a_k) E_k^T F).
+    BoundingBox<2> box;
+    bool           first = true;
+    for (const unsigned int s : floating)
+      {
+        const auto b = GridTools::compute_bounding_box(
+          subproblems[s]->dof_handler().get_triangulation());
+        if (first)
+          box = b;
+        else
+          box.merge_with(b);
+        first = false;
+      }
+    const Point<2> centre = box.center();
+    const Point<2> low    = box.get_boundary_points().first,
+                   high   = box.get_boundary_points().second;
+    double fx = 0, fy = 0, m = 0, magnitude = 0;
     for (const unsigned int s : floating)
       {
         const ElasticSubproblem &sub = *subproblems[s];
-        std::vector<Point<2>>    points(sub.n_dofs());
-        DoFTools::map_dofs_to_support_points(sub.mapping(),
-                                             sub.dof_handler(),
-                                             points);
-        const IndexSet x_dofs =
-          DoFTools::extract_dofs(sub.dof_handler(),
-                                 ComponentMask(std::vector<bool>{true, false}));
-        const Vector<double> &F = sub.load();
-        for (types::global_dof_index i = 0; i < sub.n_dofs(); ++i)
+        const Vector<double>    &F   = sub.load();
+        magnitude += F.l1_norm();
+        for (unsigned int k = 0; k < 3; ++k)
           {
-            const Point<2> &p = points[i];
-            centre += p;
-            n_points += 1;
-            for (unsigned int d = 0; d < 2; ++d)
-              {
-                low[d]  = first ? p[d] : std::min(low[d], p[d]);
-                high[d] = first ? p[d] : std::max(high[d], p[d]);
-              }
-            first = false;
-            magnitude += std::abs(F(i));
-            if (x_dofs.is_element(i))
-              {
-                fx += F(i);
-                m -= p[1] * F(i);
-              }
-            else
-              {
-                fy += F(i);
-                m += p[0] * F(i);
-              }
+            const double work = sub.anchor_mode(k) * F;
+            const auto [p, c] = sub.anchor_place(k);
+            const double turning =
+              c == 0 ? -(p[1] - centre[1]) : p[0] - centre[0];
+            (c == 0 ? fx : fy) += work;
+            m += turning * work;
           }
       }
-    centre /= std::max(n_points, 1.);
-    m -= centre[0] * fy - centre[1] * fx;
     const double diameter  = low.distance(high);
     report.resultant       = {{fx, fy, m}};
     report.load_magnitude  = magnitude;
@@ -491,10 +509,7 @@ namespace bilayer
         step              = newton_step(J, r);
         t                 = 1;
         move_anchors(step);
-        // The multipliers the held set predicts: exact where it holds.
-        for (unsigned int u = 0; u < unknowns.size(); ++u)
-          mu.add(step[u], J.nu[u]);
-        interface.space().set().project(mu);
+        predict_multipliers(J, step, mu);
       }
     report.subdomain_solves    = total.subdomain_solves;
     last.iterations            = total.iterations;

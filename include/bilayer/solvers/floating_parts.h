@@ -196,6 +196,13 @@ namespace bilayer
     std::vector<double>
     newton_step(const Jacobian &J, const std::vector<double> &r) const;
 
+    /// The multipliers after the anchors' Newton @p step, as the coarse
+    /// matrix's responses predict them (projected on their bounds).
+    void
+    predict_multipliers(const Jacobian                    &J,
+                        const std::vector<double>         &step,
+                        dealii::BlockVector<double>       &mu) const;
+
     /// Move the unknown anchors by @p step.
     void
     move_anchors(const std::vector<double> &step) const;

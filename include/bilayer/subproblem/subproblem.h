@@ -173,11 +173,12 @@ namespace bilayer
     }
 
     /**
-     * With floating(), on an owner: E_k, the solution without load for a
-     * unit displacement of anchor k and zero at the other two (the rigid
-     * motion with these anchor values: the discrete-harmonic extension of
-     * the anchor values, a rigid motion wherever the element space holds
-     * the rigid motions exactly).
+     * With floating(), on an owner: E_k, the rigid motion with a unit
+     * displacement of anchor k and zero at the other two, interpolated at
+     * the support points where the element space holds the rigid motions
+     * (K E_k = 0 to round-off: Lagrange elements on straight cells,
+     * isoparametric ones); otherwise the discrete-harmonic extension of
+     * those anchor values (the solution without load).
      */
     const dealii::Vector<double> &
     anchor_mode(const unsigned int k) const
