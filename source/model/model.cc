@@ -435,6 +435,7 @@ namespace bilayer
     const FloatingParts floating = floating_parts();
     if (floating.any())
       record.result = floating.balance(outer,
+                                       scene.solver.tolerance,
                                        scene.solver.acceptance_tolerance,
                                        mu,
                                        w,

@@ -402,6 +402,7 @@ namespace bilayer
   SolverResult
   FloatingParts::balance(const std::function<SolverResult(BlockVector<double> &,
                                                           Solutions &)> &outer,
+                         const double              solver_tolerance,
                          const double              acceptance_tolerance,
                          BlockVector<double>      &mu,
                          Solutions                &w,
@@ -409,6 +410,8 @@ namespace bilayer
                          const ConditionalOStream &pcout) const
   {
     check_free_loads(report);
+    const double target =
+      std::max(1e-12, floating_balance_target * solver_tolerance);
     SolverResult       total;
     SolverResult       last;
     const unsigned int max_outer = 20;
@@ -448,7 +451,7 @@ namespace bilayer
         pcout << "    floating parts (" << floating.size()
               << " subproblems): largest anchor reaction " << relative
               << " of the load scale" << std::endl;
-        if (relative <= floating_balance_target || scale == 0)
+        if (relative <= target || scale == 0)
           break;
         if (solve + 1 >= max_outer)
           {
@@ -490,12 +493,12 @@ namespace bilayer
             // (No sign change along the step: start again from here.)
           }
         // A new coarse matrix only where the last Newton step gained less
-        // than a factor 10 (the held set changed much along it): an older
-        // one still contracts, and an outer solve from a warm start costs
-        // less than the coarse matrix.
+        // than a factor 100 (the held set changed along it): an older one
+        // that contracts faster costs fewer outer solves than a new one
+        // costs coarse solves.
         // A step with a matrix carried over that gained too little starts
         // again from where it ended, with the matrix computed there.
-        fresh = J.columns.empty() || relative > 0.1 * accepted_relative;
+        fresh = J.columns.empty() || relative > 0.01 * accepted_relative;
         if (fresh)
           {
             Timer timer;

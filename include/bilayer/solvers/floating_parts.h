@@ -50,9 +50,11 @@ namespace bilayer
   constexpr double free_specimen_tolerance = 1e-8;
 
   /// The anchors of the floating subproblems are balanced when their
-  /// largest reaction is at most this times the load scale (the sum of
-  /// the magnitudes of the nodal loads on the floating subproblems).
-  constexpr double floating_balance_target = 1e-11;
+  /// largest reaction is at most this times the outer solver's tolerance
+  /// times the load scale (the sum of the magnitudes of the nodal loads on
+  /// the floating subproblems), and at least 1e-12 of it: finer than the
+  /// multipliers the outer solver delivers is noise.
+  constexpr double floating_balance_target = 1e-2;
 
   /// What balance() did.
   struct FloatingReport
@@ -115,7 +117,8 @@ namespace bilayer
     /**
      * Solve the coupled problem: @p outer (an outer solver run from the
      * multipliers and solutions given) repeated with the anchors moved by
-     * Newton steps until they carry no force (floating_balance_target), or
+     * Newton steps until they carry no force (floating_balance_target times
+     * @p solver_tolerance), or
      * until a step gains less than half (the outer solver's own accuracy).
      * Progress lines to @p pcout. Returns the last outer result, with the
      * counts of all solves and the balance in its message where it is not
@@ -124,6 +127,7 @@ namespace bilayer
     SolverResult
     balance(const std::function<SolverResult(dealii::BlockVector<double> &,
                                              Solutions &)> &outer,
+            const double                                    solver_tolerance,
             const double                      acceptance_tolerance,
             dealii::BlockVector<double>      &mu,
             Solutions                        &w,
@@ -199,9 +203,9 @@ namespace bilayer
     /// The multipliers after the anchors' Newton @p step, as the coarse
     /// matrix's responses predict them (projected on their bounds).
     void
-    predict_multipliers(const Jacobian                    &J,
-                        const std::vector<double>         &step,
-                        dealii::BlockVector<double>       &mu) const;
+    predict_multipliers(const Jacobian              &J,
+                        const std::vector<double>   &step,
+                        dealii::BlockVector<double> &mu) const;
 
     /// Move the unknown anchors by @p step.
     void
