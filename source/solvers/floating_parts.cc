@@ -433,8 +433,8 @@ namespace bilayer
           break;
         double                    scale = 0;
         const std::vector<double> r     = reactions(
-          [&](const unsigned int t) {
-            return subproblems[t]->anchor_displacements();
+          [&](const unsigned int s) {
+            return subproblems[s]->anchor_displacements();
           },
           state_loads(mu),
           false,
@@ -468,8 +468,6 @@ namespace bilayer
                                 "tolerance = " +
                                 number(acceptance_tolerance) + ")";
               }
-            else
-              report.out_of_balance = std::min(relative, accepted_relative);
             break;
           }
         // Too little gain along a step computed with the coarse matrix of
@@ -495,9 +493,9 @@ namespace bilayer
         // A new coarse matrix only where the last Newton step gained less
         // than a factor 100 (the held set changed along it): an older one
         // that contracts faster costs fewer outer solves than a new one
-        // costs coarse solves.
-        // A step with a matrix carried over that gained too little starts
-        // again from where it ended, with the matrix computed there.
+        // costs coarse solves. (A step with a matrix carried over that
+        // gained too little thus starts again from where it ended, with
+        // the matrix computed there.)
         fresh = J.columns.empty() || relative > 0.01 * accepted_relative;
         if (fresh)
           {
