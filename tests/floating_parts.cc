@@ -360,8 +360,9 @@ main()
     double       Pi[5], G_here = std::nan("");
     for (int k = -2; k <= 2; ++k)
       {
-        const std::vector<double> g = release(
-          film("bottom", 700, 0, 10 + k * delta, 40, false), &Pi[k + 2]);
+        const std::vector<double> g =
+          release(film("bottom", 700, 0, 10 + k * delta, 40, false),
+                  &Pi[k + 2]);
         if (k == 0 && g.size() == 1)
           G_here = g[0];
       }

@@ -59,12 +59,7 @@ namespace bilayer
         const SolverResult r   = tresca->solve(subproblems, interface, mu, w);
         const SolverResult sum = total;
         total                  = r;
-        total.iterations += sum.iterations;
-        total.subdomain_solves += sum.subdomain_solves;
-        total.preconditioner_solves += sum.preconditioner_solves;
-        total.linear_iterations += sum.linear_iterations;
-        total.setup_seconds += sum.setup_seconds;
-        total.iteration_seconds += sum.iteration_seconds;
+        total.add_work(sum);
         record.iterations                             = k;
         const std::vector<std::vector<double>> next   = coulomb_bounds();
         double                                 change = 0, largest = 0;

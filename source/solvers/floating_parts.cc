@@ -42,18 +42,6 @@ namespace bilayer
       return s.str();
     }
 
-    /// The work of @p one outer solve added to @p total.
-    void
-    add_work(const SolverResult &one, SolverResult &total)
-    {
-      total.iterations += one.iterations;
-      total.subdomain_solves += one.subdomain_solves;
-      total.linear_iterations += one.linear_iterations;
-      total.preconditioner_solves += one.preconditioner_solves;
-      total.setup_seconds += one.setup_seconds;
-      total.iteration_seconds += one.iteration_seconds;
-    }
-
     /**
      * The search along a Newton step of the anchors that gained too little
      * (the held set changed along it; r is piecewise affine, the gradient
@@ -337,8 +325,6 @@ namespace bilayer
   void
   FloatingParts::check_free_loads(FloatingReport &report) const
   {
-    report.free_specimen = free;
-    report.subproblems   = names();
     if (!free)
       return;
     // The resultant force and moment about the centre of the bounding box:
@@ -409,10 +395,13 @@ namespace bilayer
                          FloatingReport           &report,
                          const ConditionalOStream &pcout) const
   {
+    report.free_specimen = free;
+    report.subproblems   = names();
     check_free_loads(report);
     const double target =
       std::max(1e-12, floating_balance_target * solver_tolerance);
-    SolverResult       total;
+    // The last outer solve's result, and the work before it.
+    SolverResult       earlier;
     SolverResult       last;
     const unsigned int max_outer = 20;
     // The last accepted state's reactions (2-norm and relative size), the
@@ -426,9 +415,10 @@ namespace bilayer
     bool                fresh = false;
     for (unsigned int solve = 0;; ++solve)
       {
+        if (solve > 0)
+          earlier.add_work(last);
         last = outer(mu, w);
         ++report.outer_solves;
-        add_work(last, total);
         if (!last.converged || unknowns.empty())
           break;
         double                    scale = 0;
@@ -503,7 +493,7 @@ namespace bilayer
             J = jacobian(w, mu, false);
             report.coarse_seconds += timer.wall_time();
             report.jacobian_solves += unknowns.size();
-            total.subdomain_solves += J.subdomain_solves;
+            earlier.subdomain_solves += J.subdomain_solves;
           }
         accepted_relative = relative;
         search            = LineSearch(r, norm);
@@ -512,13 +502,13 @@ namespace bilayer
         move_anchors(step);
         predict_multipliers(J, step, mu);
       }
-    report.subdomain_solves    = total.subdomain_solves;
-    last.iterations            = total.iterations;
-    last.subdomain_solves      = total.subdomain_solves;
-    last.linear_iterations     = total.linear_iterations;
-    last.preconditioner_solves = total.preconditioner_solves;
-    last.setup_seconds         = total.setup_seconds;
-    last.iteration_seconds     = total.iteration_seconds;
+    // (The work of every outer solve and coarse matrix in the result; the
+    // message is the last outer solve's.)
+    last.add_work(earlier);
+    if (report.outer_solves > 1)
+      last.message += " (the last of " + std::to_string(report.outer_solves) +
+                      " outer solves balancing the floating subproblems)";
+    report.subdomain_solves = last.subdomain_solves;
     if (free)
       normalise(w, report);
     return last;

@@ -70,7 +70,8 @@ namespace bilayer
     /// The largest anchor reaction at the end over the load scale.
     double out_of_balance = 0;
     /// The free specimen's resultant force (x, y) and moment about the
-    /// centroid, and the sum of the magnitudes of the nodal loads.
+    /// centre of the bounding box, and the sum of the magnitudes of the nodal
+    /// loads.
     std::array<double, 3> resultant      = {{0, 0, 0}};
     double                load_magnitude = 0;
     /// The rigid motion removed by the normalisation (translation x, y and
@@ -106,8 +107,9 @@ namespace bilayer
 
     /**
      * With free_specimen(): the resultant force and moment (about the
-     * centroid of the support points) of the subproblems' loads at their
-     * present load factors, and the sum of the magnitudes of the nodal
+     * centre of the bounding box of the floating subproblems) of their loads at
+     * their present load factors (the work of the load on the rigid motions
+     * made of the anchor modes), and the sum of the magnitudes of the nodal
      * loads; refused in one line where the resultant exceeds
      * free_specimen_tolerance.
      */

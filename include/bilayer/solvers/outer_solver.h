@@ -52,6 +52,19 @@ namespace bilayer
     /// Wall time of the solver's own set-up (spectrum estimates,
     /// preconditioner factorisations) and of its iterations [s].
     double setup_seconds = 0, iteration_seconds = 0;
+
+    /// Add the work of @p other (iterations, solves, times), for a solve
+    /// made of several outer solves.
+    void
+    add_work(const SolverResult &other)
+    {
+      iterations += other.iterations;
+      subdomain_solves += other.subdomain_solves;
+      preconditioner_solves += other.preconditioner_solves;
+      linear_iterations += other.linear_iterations;
+      setup_seconds += other.setup_seconds;
+      iteration_seconds += other.iteration_seconds;
+    }
   };
 
   /**
