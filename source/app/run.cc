@@ -303,9 +303,10 @@ namespace bilayer
       unsigned int failed_cycle = 0;
       try
         {
-          passed = scene.fracture.growth == CrackGrowth::none ?
-                     study.run() :
-                     study.run_growth();
+          passed = scene.cohesive.active() ? study.run_cohesive() :
+                   scene.fracture.growth == CrackGrowth::none ?
+                                             study.run() :
+                                             study.run_growth();
           if (!passed)
             {
               failed_cycle = study.records().back().cycle;

@@ -19,6 +19,8 @@ namespace bilayer
   std::string
   Study::growth_mode() const
   {
+    if (scene.cohesive.active())
+      return "cohesive";
     return scene.fracture.growth == CrackGrowth::sweep ? "sweep" :
                                                          "quasi-static";
   }

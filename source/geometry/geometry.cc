@@ -207,10 +207,12 @@ namespace bilayer
 
 
   void
-  Geometry::set_crack(const CrackSet &crack, const unsigned int i)
+  Geometry::set_crack(const CrackSet    &crack,
+                      const unsigned int i,
+                      const bool         whole_allowed)
   {
     InterfaceCurve   &curve   = curves[i];
-    const std::string refusal = curve.crack_refusal(crack);
+    const std::string refusal = curve.crack_refusal(crack, whole_allowed);
     AssertThrow(refusal.empty(), ExcMessage(refusal));
     const CrackSet previous = curve.crack();
     curve.set_crack(crack);

@@ -311,7 +311,8 @@ namespace bilayer
 
 
   std::string
-  InterfaceCurve::crack_refusal(const CrackSet &crack) const
+  InterfaceCurve::crack_refusal(const CrackSet &crack,
+                                const bool      whole_allowed) const
   {
     const double tol          = tolerance();
     const auto  &pieces       = crack.pieces();
@@ -332,7 +333,7 @@ namespace bilayer
         previous_end        = piece.end;
         const bool at_begin = std::abs(piece.start - s_begin()) <= tol,
                    at_end   = std::abs(piece.end - s_end()) <= tol;
-        if (at_begin && at_end)
+        if (at_begin && at_end && !whole_allowed)
           {
             m << " covers all of Sigma (s in [" << s_begin() << ", " << s_end()
               << "]): some of Sigma must stay glued";

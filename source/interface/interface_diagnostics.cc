@@ -253,6 +253,8 @@ namespace bilayer
     InterfaceReport          report;
     BlockVector<double>      g;
     interface.jumps(w, g);
+    // (The jumps less the cohesive springs': the residual of their law.)
+    interface.space().add_cohesive_jumps(mu, g);
     const double scale        = displacement_scale(interface, w);
     report.displacement_scale = scale;
     const double violation    = space.discrete_violation(g, mu);

@@ -221,6 +221,7 @@ namespace bilayer
 
     drop_cross_point_ends(curves);
     build_set(curves, contact);
+    crack_set = set_;
     join_end_rows(curves);
   }
 
@@ -563,7 +564,9 @@ namespace bilayer
                 ExcMessage("MultiplierSpace::set_friction_bounds: one bound "
                            "per node of the block is needed"));
     for (unsigned int a = 0; a < n_nodes(b); ++a)
-      if (friction_node(a, b) && set_.free(b, Layout::entry(a, Layout::normal)))
+      if (friction_node(a, b) &&
+          set_.free(b, Layout::entry(a, Layout::normal)) &&
+          !set_.cohesive(b, Layout::entry(a, Layout::tangential)))
         {
           const unsigned int t = Layout::entry(a, Layout::tangential);
           const double       g = std::min(bounds[a], multiplier_bound);

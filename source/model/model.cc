@@ -162,9 +162,11 @@ namespace bilayer
 
 
   void
-  Model::set_crack(const CrackSet &crack, const unsigned int i)
+  Model::set_crack(const CrackSet    &crack,
+                   const unsigned int i,
+                   const bool         whole_allowed)
   {
-    domain.set_crack(crack, i);
+    domain.set_crack(crack, i, whole_allowed);
     tips_current = false;
   }
 

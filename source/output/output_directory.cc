@@ -263,6 +263,7 @@ namespace bilayer
   {
     static const std::regex output(
       "(used_parameters\\.prm|summary\\.json|table\\.(txt|tex|csv)|growth\\.csv|"
+      "cohesive(-[0-9]{4,})?\\.csv|"
       "interface([2-9]|[1-9][0-9]+)?\\.pvd|solution\\.(pvd|xdmf)|"
       "interface([2-9]|[1-9][0-9]+)?-[0-9]{2,}\\.(csv|vtu)|"
       "solution-[0-9]{2,}\\.pvtu|"

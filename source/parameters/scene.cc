@@ -25,6 +25,7 @@ namespace bilayer
     ContactParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
     FractureParameters::declare_parameters(prm);
+    CohesiveParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
   }
 
@@ -39,6 +40,7 @@ namespace bilayer
     contact.parse_parameters(prm);
     solver.parse_parameters(prm);
     fracture.parse_parameters(prm);
+    cohesive.parse_parameters(prm);
     output.parse_parameters(prm);
     check_scene_relations(*this, parts);
     // Gmsh scenes: the loads are checked where they act, on the assembled

@@ -34,6 +34,25 @@ namespace bilayer
                            "Solver/Method = uzawa or accelerated (the "
                            "active set solves Coulomb friction by the fixed "
                            "point over Tresca problems)"));
+    if (scene.cohesive.active())
+      {
+        AssertThrow(solver.method == SolverMethod::active_set,
+                    ExcMessage("Cohesive/Law needs Solver/Method = active set "
+                               "(the step sizes of the first-order methods do "
+                               "not know the cohesive springs)"));
+        AssertThrow(scene.fracture.growth == CrackGrowth::none,
+                    ExcMessage("Cohesive/Law and Fracture/Crack growth exclude "
+                               "each other (two models of one delamination): "
+                               "set Crack growth = none"));
+        AssertThrow(contact.non_penetration,
+                    ExcMessage("Cohesive/Law needs Contact/Non-penetration on "
+                               "the crack = true (the zone's faces touch "
+                               "exactly under pressure)"));
+        AssertThrow(!scene.fracture.goal_oriented,
+                    ExcMessage("Cohesive/Law does not take Fracture/"
+                               "Goal-oriented estimate = true (the estimates "
+                               "know no cohesive springs)"));
+      }
     for (const Layer layer : materials.layers())
       AssertThrow(mesh.shape == ElementShape::quadrilateral ||
                     mesh.degree(layer) <= 2,
@@ -147,10 +166,11 @@ namespace bilayer
                                "release rate = true (or Mesh/Target quantity = "
                                "energy)"));
       }
-    AssertThrow(growth || (factors.size() == 1 && factors[0] == 1),
+    AssertThrow(growth || scene.cohesive.active() ||
+                  (factors.size() == 1 && factors[0] == 1),
                 ExcMessage("Loads/Load factor must be 1 without "
-                           "Fracture/Crack growth (it sets the loads of the "
-                           "growth steps)"));
+                           "Fracture/Crack growth or Cohesive/Law (it sets "
+                           "the loads of their steps)"));
     if (!growth)
       return;
     AssertThrow(fracture.energy_release_rate,

@@ -23,6 +23,7 @@ namespace bilayer
       void
       apply_dual_operator(const Subproblems         &subproblems,
                           const Interface           &interface,
+                          const BlockVector<double> &at,
                           const BlockVector<double> &x,
                           BlockVector<double>       &result)
       {
@@ -31,6 +32,7 @@ namespace bilayer
         interface.jumps(homogeneous, result);
         interface.space().scale_by_weights(result);
         result *= -1.;
+        interface.space().add_cohesive_operator(at, x, result);
       }
 
 
@@ -63,7 +65,7 @@ namespace bilayer
         interface.space().restrict_to_free(step);
         if (!(t > 0) || !std::isfinite(t))
           {
-            apply_dual_operator(subproblems, interface, step, Fs);
+            apply_dual_operator(subproblems, interface, mu, step, Fs);
             solves += subproblems.size();
             t = (step * step) / (step * Fs);
             if (!(t > 0) || !std::isfinite(t))
@@ -75,7 +77,7 @@ namespace bilayer
         step.sadd(t, 1., mu);
         interface.space().project(step);
         step -= mu;
-        apply_dual_operator(subproblems, interface, step, Fs);
+        apply_dual_operator(subproblems, interface, mu, step, Fs);
         solves += subproblems.size();
         const double slope = gradient * step, curvature = step * Fs;
         const double a = curvature > 0 ? std::min(1., slope / curvature) : 1.;
@@ -332,7 +334,7 @@ namespace bilayer
           if (reduction > 0)
             {
               // The line search of the face step of this reduction.
-              apply_dual_operator(subproblems, interface, face_step, Fd);
+              apply_dual_operator(subproblems, interface, mu, face_step, Fd);
               result.subdomain_solves += subproblems.size();
               const auto candidate = best_on_segment(gradient * face_step,
                                                      face_step * Fd,
@@ -372,7 +374,7 @@ namespace bilayer
       reduced_mask(first) = 0;
       held(first) = set.bound_towards(first, face_step(first)) - mu(first);
       BlockVector<double> rhs(gradient), face_delta;
-      apply_dual_operator(subproblems, interface, held, Fd);
+      apply_dual_operator(subproblems, interface, mu, held, Fd);
       result.subdomain_solves += subproblems.size();
       rhs -= Fd;
       rhs.scale(reduced_mask);
@@ -383,6 +385,7 @@ namespace bilayer
                                         interface,
                                         preconditioner,
                                         reduced_mask,
+                                        mu,
                                         largest_jump(interface, rhs),
                                         0.1 * parameters.tolerance *
                                           displacement_scale(interface, w),

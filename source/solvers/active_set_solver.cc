@@ -48,6 +48,7 @@ namespace bilayer
                                     const Interface           &interface,
                                     const FetiPreconditioner  &preconditioner,
                                     const BlockVector<double> &mask,
+                                    const BlockVector<double> &at,
                                     const double               start,
                                     const double               target,
                                     const unsigned int         max_iterations,
@@ -74,6 +75,7 @@ namespace bilayer
           interface.jumps(homogeneous, q);
           interface.space().scale_by_weights(q);
           q *= -1.; // F p
+          interface.space().add_cohesive_operator(at, p, q);
           q.scale(mask);
           const double pq = p * q;
           if (!(pq > 0))
@@ -176,6 +178,7 @@ namespace bilayer
       result.subdomain_solves += subproblems.size();
       result.iterations = k;
       interface.jumps(w, g);
+      interface.space().add_cohesive_jumps(mu, g);
       const KKTResidual kkt = kkt_residual(interface, w, g, mu);
       result.stopping_value = kkt.value();
       gradient              = g;
@@ -338,6 +341,7 @@ namespace bilayer
                                         interface,
                                         preconditioner,
                                         mask,
+                                        mu,
                                         start,
                                         target,
                                         parameters.max_inner_iterations,
@@ -435,7 +439,9 @@ namespace bilayer
                                           result);
 
     const std::string message = iteration.run();
-    if (!iteration.stalled())
+    // (Cohesive springs: the accelerated method's step sizes do not know
+    // them; the failure is reported instead.)
+    if (!iteration.stalled() || interface.space().set().has_cohesive())
       return finish(message, false);
     // The same Newton step rejected again and again (a degenerate contact
     // zone, issue 45): the accelerated method from the multipliers where it

@@ -26,6 +26,7 @@ namespace bilayer
     const MultiplierSet &set = interface.space().set();
     BlockVector<double>  g, mask;
     interface.jumps(w, g);
+    interface.space().add_cohesive_jumps(mu, g);
     set.initialize(mask);
     for (unsigned int i = 0; i < mask.size(); ++i)
       mask(i) = set.held(i, mu(i), g(i)) ? 0. : 1.;
@@ -69,6 +70,7 @@ namespace bilayer
                                                   interface,
                                                   preconditioner,
                                                   mask,
+                                                  mu,
                                                   start,
                                                   target,
                                                   max_iterations,

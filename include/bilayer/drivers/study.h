@@ -30,6 +30,9 @@
 
 namespace bilayer
 {
+  class CohesiveZone;
+  class CohesiveLaw;
+
   /**
    * A study of one scene: a sequence of states, each solved and checked and
    * written as one record (VTU/PVD, interface-NN.csv, summary.json, the
@@ -139,6 +142,24 @@ namespace bilayer
     bool
     run_growth();
 
+    /**
+     * The cohesive driver (Cohesive/Law, docs/cohesive.md): on the meshes
+     * of the last cycle, with the subproblems factorised once, the zone
+     * joins the crack of its interface with its nodes intact, and each
+     * step solves the equilibrium at the step's control (a load factor of
+     * Loads/Load factor, or, with Control = separation, the load factor
+     * at which the largest separation in the zone grows by Separation
+     * increment) by the secant iteration: solve with the springs of the
+     * damage so far, damage from the new separations, until no damage
+     * changes by more than Damage tolerance. Each step is a record and a
+     * GrowthStep (growth.csv: the load-displacement curve) and a row of
+     * cohesive.csv (the zone: process zone, cracked length, dissipated
+     * energy); cohesive-NNNN.csv holds the zone's nodes of each written
+     * step. True if every step converged and passed its checks.
+     */
+    bool
+    run_cohesive();
+
     /// The steps of run_growth() so far.
     const std::vector<GrowthStep> &
     growth() const
@@ -228,6 +249,67 @@ namespace bilayer
 
   private:
     std::function<void()> directory_check;
+
+    // The cohesive driver (cohesive.cc).
+
+    /// One step of the cohesive driver: what cohesive.csv holds.
+    struct CohesiveStep
+    {
+      unsigned int step = 0, iterations = 0;
+      double       load_factor = 0, conjugate_displacement = 0;
+      /// The external work along the path (trapezoidal rule over the
+      /// steps) and the energy dissipated by the energy balance: work
+      /// less the stored energy lambda q / 2 (Clapeyron).
+      double external_work = 0, dissipated_balance = 0;
+      /// The zone (CohesiveZone::summary()).
+      double dissipated = 0, cracked_length = 0, process_length = 0,
+             process_start = 0, process_end = 0, largest_damage = 0,
+             largest_separation = 0;
+    };
+    std::vector<CohesiveStep> cohesive_steps;
+
+    /// The cohesive run's set-up: the meshes of the last cycle and their
+    /// subproblems in @p first, the zone joined to its interface's crack,
+    /// the interface; the zone of @p law on it, intact.
+    std::unique_ptr<CohesiveZone>
+    start_cohesive(CycleRecord &first, const CohesiveLaw &law, const bool path);
+
+    /// How the secant iteration of a step ended: its iterations, and
+    /// whether the zone cannot dissipate another increment (Control =
+    /// dissipation; the step is then not taken).
+    struct CohesiveSettle
+    {
+      unsigned int iterations = 0;
+      bool         exhausted  = false;
+    };
+
+    /**
+     * The secant iteration of the step of @p record at the load factor
+     * @p lambda (with path following: from it, and the step's on return),
+     * Anderson-accelerated on the zone's trial histories; with @p to_onset
+     * the step ends at the elastic limit. The state is solved with the
+     * springs of the trial damage within Damage tolerance of the one
+     * returned (and again with the nodes broken in the last update as
+     * crack faces); the zone holds the trial state.
+     */
+    CohesiveSettle
+    settle_cohesive_step(CycleRecord  &record,
+                         CohesiveZone &zone,
+                         double       &lambda,
+                         const bool    to_onset);
+
+    /// The GrowthStep and the row of cohesive.csv of the step just
+    /// recorded, the files, and its line in the terminal.
+    void
+    record_cohesive_step(const CohesiveZone &zone,
+                         const unsigned int  step,
+                         const unsigned int  iterations,
+                         const double        lambda);
+
+    /// cohesive.csv (the rows so far), and with @p zone the zone's nodes
+    /// of step @p step (cohesive-NNNN.csv).
+    void
+    write_cohesive(const unsigned int step, const CohesiveZone *zone);
 
     // The growth driver (growth.cc, growth_output.cc).
 

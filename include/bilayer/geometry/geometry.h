@@ -195,10 +195,13 @@ namespace bilayer
      * only where it is not on Gamma_D: an edge crack, leaving some of Sigma
      * glued; InterfaceCurve::crack_refusal()) and end at vertices of both
      * meshes on Sigma; else nothing changes and the error names the piece or
-     * the end point. The crack of interface @p i (Sigma: 0).
+     * the end point. The crack of interface @p i (Sigma: 0); with
+     * @p whole_allowed it may cover all of the interface (a cohesive zone).
      */
     void
-    set_crack(const CrackSet &crack, const unsigned int i = 0);
+    set_crack(const CrackSet    &crack,
+              const unsigned int i             = 0,
+              const bool         whole_allowed = false);
 
     /// The parameters s of the vertices of interface @p i (Sigma: 0) that
     /// both meshes have, increasing: where a crack tip may stand

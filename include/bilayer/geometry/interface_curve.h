@@ -196,10 +196,12 @@ namespace bilayer
      * may reach an end of Sigma (an edge crack, its mouth on the outer
      * boundary) only where that end is not on Gamma_D of either side
      * (gamma_c and Gamma_D are disjoint: end_on_gamma_d()), and some of
-     * Sigma must stay glued (no piece covers all of it).
+     * Sigma must stay glued (no piece covers all of it), unless
+     * @p whole_allowed (a cohesive zone: its springs hold the regions).
      */
     std::string
-    crack_refusal(const CrackSet &crack) const;
+    crack_refusal(const CrackSet &crack,
+                  const bool      whole_allowed = false) const;
     const CrackSet &
     crack() const
     {

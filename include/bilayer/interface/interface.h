@@ -58,6 +58,15 @@ namespace bilayer
       return space_;
     }
 
+    /// The springs of the cohesive zone of block @p b
+    /// (MultiplierSpace::set_cohesive_compliance()).
+    void
+    set_cohesive_compliance(const std::vector<double> &compliance,
+                            const unsigned int         b)
+    {
+      space_.set_cohesive_compliance(compliance, b);
+    }
+
     /// The friction bounds of the crack nodes of mu_1 (one per node):
     /// MultiplierSpace::set_friction_bounds(). Coulomb friction's fixed
     /// point changes them between solves.

@@ -236,6 +236,40 @@ namespace bilayer
       return crack_nodes[b][a] && !corner_nodes[b][a];
     }
 
+    /**
+     * The cohesive zone of block @p b (docs/cohesive.md): per node, the
+     * compliance c >= 0 of its springs (the inverse of the secant stiffness
+     * of the traction-separation law), +infinity where the node is fully
+     * damaged, NaN where it is not in the zone. The zone's nodes (crack
+     * nodes that are not corners) take both components as springs
+     * (MultiplierSet::set_cohesive(), the normal one in tension only);
+     * the fully damaged ones and those outside take the kinds that the
+     * crack gives them (contact, friction). The multipliers are not
+     * touched.
+     */
+    void
+    set_cohesive_compliance(const std::vector<double> &compliance,
+                            const unsigned int         b);
+
+    /// Whether node @p a of block @p b may carry a cohesive spring: a crack
+    /// node of a block across an interface, not a corner, with a normal
+    /// component that carries a multiplier in the crack's set.
+    bool
+    cohesive_node(const unsigned int a, const unsigned int b) const;
+
+    /// g <- g - c phi(mu): the jumps less those the springs hold at mu
+    /// (MultiplierSet::cohesive_term()); the residual of the cohesive law.
+    void
+    add_cohesive_jumps(const dealii::BlockVector<double> &mu,
+                       dealii::BlockVector<double>       &g) const;
+
+    /// Fx <- Fx + D c'(mu) x: the springs' part of the Hessian of the
+    /// dual function at mu (MultiplierSet::cohesive_slope()).
+    void
+    add_cohesive_operator(const dealii::BlockVector<double> &mu,
+                          const dealii::BlockVector<double> &x,
+                          dealii::BlockVector<double>       &Fx) const;
+
     /// Nodes of block @p b.
     unsigned int
     n_nodes(const unsigned int b = Layout::across_sigma) const
@@ -563,6 +597,9 @@ namespace bilayer
     /// The bound p of the multiplier sets (Contact/Multiplier bound p).
     double        multiplier_bound = 0;
     MultiplierSet set_;
+    /// The set as build_set() made it (the crack's kinds that a cohesive
+    /// node takes back once fully damaged).
+    MultiplierSet crack_set;
   };
 } // namespace bilayer
 

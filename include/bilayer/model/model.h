@@ -81,7 +81,9 @@ namespace bilayer
     /// found again at the next update_tips() (the one place where the
     /// crack changes).
     void
-    set_crack(const CrackSet &crack, const unsigned int i = 0);
+    set_crack(const CrackSet    &crack,
+              const unsigned int i             = 0,
+              const bool         whole_allowed = false);
 
     /**
      * The tips of the present crack (found if the crack changed since they
@@ -159,6 +161,23 @@ namespace bilayer
     /// next state); empty before the first set-up.
     MultiplierSpace::Functions
     multiplier_functions() const;
+
+    /// The springs of the cohesive zone of block @p b (docs/cohesive.md;
+    /// Interface::set_cohesive_compliance()), kept for the next solve.
+    void
+    set_cohesive_compliance(const std::vector<double> &compliance,
+                            const unsigned int         b)
+    {
+      coupling.set_cohesive_compliance(compliance, b);
+    }
+
+    /// Scale the multipliers by @p factor (a warm start at a new load
+    /// factor under proportional loading).
+    void
+    scale_multipliers(const double factor)
+    {
+      mu *= factor;
+    }
 
     /// The floating subproblems of the present mesh (FloatingParts: none
     /// where every subproblem touches a clamped part).

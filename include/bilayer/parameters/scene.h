@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <bilayer/parameters/cohesive_parameters.h>
 #include <bilayer/parameters/contact_parameters.h>
 #include <bilayer/parameters/fracture_parameters.h>
 #include <bilayer/parameters/geometry_parameters.h>
@@ -35,6 +36,7 @@ namespace bilayer
     ContactParameters  contact;
     SolverParameters   solver;
     FractureParameters fracture;
+    CohesiveParameters cohesive;
     OutputParameters   output;
     /// The parameter file and the files it includes (not the mesh files).
     std::vector<std::string> input_files;

@@ -31,6 +31,15 @@ namespace bilayer
    *    stick ([u].tau = 0) where the multiplier lies inside, and slip
    *    against it where a jump holds it at a bound. In two dimensions the
    *    Tresca disk is this interval, so K stays a box.
+   *  - Kind::cohesive: a component of a node of a cohesive zone that is not
+   *    fully damaged (docs/cohesive.md): the multiplier, in [-p, p], is the
+   *    traction of a spring of compliance c (the inverse of the secant
+   *    stiffness k (1 - d) of the traction-separation law) on the jump:
+   *    g = c mu for a tangential component, g = c min(mu, 0) for a normal
+   *    one (a spring in tension, non-penetration g = 0 exact under
+   *    pressure). The dual function gains -D c phi(mu)^2 / 2
+   *    (cohesive_term()), its gradient D (g - c phi(mu)), its Hessian
+   *    -(F + D c') (cohesive_slope()).
    * A set that couples the components of a node (a Coulomb cone with its
    * normal force as a variable) would be a kind of its own here, with its
    * projection and its classification.
@@ -43,7 +52,8 @@ namespace bilayer
       none,
       glued,
       contact,
-      friction
+      friction,
+      cohesive
     };
 
     /// Blocks of @p sizes components, every one of kind none.
@@ -53,7 +63,86 @@ namespace bilayer
       lower.reinit(sizes);
       upper.reinit(sizes);
       kinds.assign(lower.size(), Kind::none);
+      compliance.assign(lower.size(), 0.);
+      tension_only.assign(lower.size(), false);
       cones.clear();
+    }
+
+    /**
+     * Component @p i of block @p b: a cohesive spring of compliance @p c
+     * (>= 0) acting on the jump, in tension only with @p normal
+     * (Kind::cohesive), bound @p p.
+     */
+    void
+    set_cohesive(const unsigned int b,
+                 const unsigned int i,
+                 const double       c,
+                 const bool         normal,
+                 const double       p)
+    {
+      lower.block(b)(i)    = -p;
+      upper.block(b)(i)    = p;
+      const unsigned int k = global(b, i);
+      kinds[k]             = Kind::cohesive;
+      compliance[k]        = c;
+      tension_only[k]      = normal;
+    }
+
+    /// Component @p i of block @p b as it is in @p other (a set of the
+    /// same layout): kind, box and spring.
+    void
+    copy_component(const MultiplierSet &other,
+                   const unsigned int   b,
+                   const unsigned int   i)
+    {
+      const unsigned int k = global(b, i);
+      lower.block(b)(i)    = other.lower.block(b)(i);
+      upper.block(b)(i)    = other.upper.block(b)(i);
+      kinds[k]             = other.kinds[k];
+      compliance[k]        = other.compliance[k];
+      tension_only[k]      = other.tension_only[k];
+    }
+
+    /// Whether component @p i is a cohesive spring.
+    bool
+    cohesive(const unsigned int i) const
+    {
+      return kind(i) == Kind::cohesive;
+    }
+
+    /// Whether component @p i of block @p b is a cohesive spring.
+    bool
+    cohesive(const unsigned int b, const unsigned int i) const
+    {
+      return cohesive(global(b, i));
+    }
+
+    /// Whether some component is a cohesive spring.
+    bool
+    has_cohesive() const
+    {
+      return std::find(kinds.begin(), kinds.end(), Kind::cohesive) !=
+             kinds.end();
+    }
+
+    /// The jump c phi(mu_i) that the spring of component @p i holds at the
+    /// multiplier @p mu_i (0 for other kinds).
+    double
+    cohesive_term(const unsigned int i, const double mu_i) const
+    {
+      if (!cohesive(i))
+        return 0.;
+      return compliance[i] * (tension_only[i] ? std::min(mu_i, 0.) : mu_i);
+    }
+
+    /// The derivative of cohesive_term() at @p mu_i (the tension side's at
+    /// a normal component's kink mu = 0 only below it).
+    double
+    cohesive_slope(const unsigned int i, const double mu_i) const
+    {
+      if (!cohesive(i))
+        return 0.;
+      return tension_only[i] && mu_i >= 0 ? 0. : compliance[i];
     }
 
     /// Component @p i of block @p b: a gluing constraint, bound @p p.
@@ -182,6 +271,8 @@ namespace bilayer
       // projection, normal first).
       for (const Cone &c : cones)
         {
+          if (kinds[c.tangential] == Kind::cohesive)
+            continue; // a cohesive node's spring, its cone once cracked
           const double g      = std::min(c.F * std::max(mu(c.normal), 0.), c.p);
           lower(c.tangential) = -g;
           upper(c.tangential) = g;
@@ -230,7 +321,8 @@ namespace bilayer
      * max(g, 0) of a contact constraint ([u].nu >= 0 with g = -[u].nu),
      * for a friction component |g| where it sticks (inside its box, or at a
      * bound with a jump that pushes inward) and 0 where it slips (held at a
-     * bound), 0 without multiplier.
+     * bound), 0 without multiplier; for a cohesive component |g| of the
+     * jumps less the springs' (MultiplierSpace::add_cohesive_jumps()).
      */
     double
     violation(const unsigned int i, const double g_i, const double mu_i) const
@@ -242,6 +334,8 @@ namespace bilayer
           case Kind::contact:
             return std::max(g_i, 0.);
           case Kind::friction:
+            return held_at_bound(i, mu_i, g_i) ? 0. : std::abs(g_i);
+          case Kind::cohesive:
             return held_at_bound(i, mu_i, g_i) ? 0. : std::abs(g_i);
           default:
             return 0.;
@@ -328,6 +422,10 @@ namespace bilayer
     /// What each component constrains: set with its box, never inferred
     /// from it.
     std::vector<Kind> kinds;
+    /// Per component: the compliance of a cohesive spring, and whether it
+    /// acts in tension only (set_cohesive()).
+    std::vector<double> compliance;
+    std::vector<bool>   tension_only;
   };
 } // namespace bilayer
 

@@ -51,8 +51,10 @@ namespace bilayer
      * Preconditioned conjugate gradients on F_II delta = r from delta = 0:
      * F p is minus the weighted jumps D g of the homogeneous solutions with
      * the multiplier loads of p (4 subdomain solves), restricted by @p mask
-     * to the free components I. On entry @p r is the right-hand side (zero
-     * off I) with largest jump @p start, on return the residual.
+     * to the free components I, plus D c' p of the cohesive springs at the
+     * multipliers @p at (MultiplierSpace::add_cohesive_operator()). On
+     * entry @p r is the right-hand side (zero off I) with largest jump
+     * @p start, on return the residual.
      *
      * The iteration stops when the largest jump of the residual,
      * max_i |r_i| / D_i, is at most @p target; when p^T F p is no longer
@@ -66,6 +68,7 @@ namespace bilayer
                                     const Interface          &interface,
                                     const FetiPreconditioner &preconditioner,
                                     const dealii::BlockVector<double> &mask,
+                                    const dealii::BlockVector<double> &at,
                                     const double                       start,
                                     const double                       target,
                                     const unsigned int           max_iterations,
