@@ -48,6 +48,12 @@ namespace bilayer
                     ExcMessage("Cohesive/Law needs Contact/Non-penetration on "
                                "the crack = true (the zone's faces touch "
                                "exactly under pressure)"));
+        AssertThrow(mesh.refinement != Refinement::adaptive ||
+                      mesh.n_cycles == 1,
+                    ExcMessage("Cohesive/Law runs on the meshes of one "
+                               "cycle: Mesh/Refinement = adaptive needs "
+                               "Mesh/Number of cycles = 1 with it, got " +
+                               std::to_string(mesh.n_cycles)));
         AssertThrow(!scene.fracture.goal_oriented,
                     ExcMessage("Cohesive/Law does not take Fracture/"
                                "Goal-oriented estimate = true (the estimates "
