@@ -133,7 +133,7 @@ namespace bilayer
               lambda = scene.loads.load_factors[step];
             set_load_factor(lambda);
             const unsigned int   cracked_before = zone->summary().n_cracked;
-            const CohesiveSettle settled        = settle_cohesive_step(
+            const CohesiveSettle settled        = settle_or_halve(
               record, *zone, lambda, path && step == 0 && zone->undamaged());
             if (settled.exhausted)
               {
@@ -191,12 +191,7 @@ namespace bilayer
         write_cohesive(0, nullptr);
         throw;
       }
-    if (stop.empty())
-      stop = path ? "the steps are done" : "the load factors are done";
-    growth_stop = stop;
-    write_growth(true);
-    rout << "cohesive: " << cohesive_steps.size() << " steps, " << stop
-         << std::endl;
+    finish_cohesive(stop, path, *zone);
     return stop != "a step failed its checks";
   }
 
@@ -218,9 +213,21 @@ namespace bilayer
                            std::to_string(curves.size()) + ", got " +
                            std::to_string(i + 1)));
     const double tolerance = curves[i].tolerance();
-    model.set_crack(join_zone(curves[i].crack(), parameters.zone, tolerance),
-                    i,
-                    true);
+    try
+      {
+        model.set_crack(
+          join_zone(curves[i].crack(), parameters.zone, tolerance), i, true);
+      }
+    catch (const ExceptionBase &e)
+      {
+        // (The crack joined with the zone: the zone's pieces are what the
+        // user wrote.)
+        AssertThrow(false,
+                    ExcMessage("Cohesive/Zone: its pieces join the crack of "
+                               "interface " +
+                               std::to_string(i + 1) + ", and " +
+                               one_line_message(e)));
+      }
     model.update_tips(first);
     growth_steps.clear();
     followed.clear();
@@ -247,11 +254,78 @@ namespace bilayer
   }
 
 
+  void
+  Study::finish_cohesive(std::string        &stop,
+                         const bool          path,
+                         const CohesiveZone &zone)
+  {
+    if (stop.empty())
+      stop = path ? "the steps are done" : "the load factors are done";
+    growth_stop = stop;
+    // The last step's fields and zone where Output/Written steps = last
+    // (or every N and the last is not a multiple of N).
+    const unsigned int last =
+      cohesive_steps.empty() ? 0 : cohesive_steps.size() - 1;
+    if (stop != "a step failed its checks" && scene.output.written_steps_last &&
+        !scene.output.writes_step(last) && !cohesive_steps.empty())
+      {
+        write_step_fields(last);
+        write_cohesive(last, &zone);
+      }
+    write_growth(true);
+    rout << "cohesive: " << cohesive_steps.size() << " steps, " << stop
+         << std::endl;
+  }
+
+
+  Study::CohesiveSettle
+  Study::settle_or_halve(CycleRecord  &record,
+                         CohesiveZone &zone,
+                         double       &lambda,
+                         const bool    to_onset)
+  {
+    const CohesiveParameters &parameters = scene.cohesive;
+    const bool path = parameters.control != CohesiveControl::load_factor;
+    const unsigned int step = record.cycle;
+    // A path-following step that does not settle is taken again
+    // from its start with half the increment, down to 1/64.
+    const double   start = lambda;
+    CohesiveSettle settled;
+    for (double fraction = 1;; fraction /= 2)
+      {
+        settled =
+          settle_cohesive_step(record, zone, lambda, to_onset, fraction);
+        if (settled.converged)
+          break;
+        if (fraction <= 1. / 64)
+          throw RunFailure(
+            step,
+            "the secant iteration of step " + std::to_string(step) +
+              " did not settle in Cohesive/Maximum iterations = " +
+              std::to_string(parameters.maximum_iterations) +
+              " even with 1/64 of the increment (its damage or load "
+              "factor still changes by " +
+              format(settled.change, 3) +
+              "): a larger Damage tolerance or a finer mesh may let it");
+        rout << "step " << step
+             << ": the secant iteration did not settle; the "
+                "increment halved to "
+             << fraction / 2 << " of its value" << std::endl;
+        zone.reset_trial();
+        lambda = start;
+        set_load_factor(lambda);
+        model.set_cohesive_compliance(zone.compliance(), parameters.interface);
+      }
+    return settled;
+  }
+
+
   Study::CohesiveSettle
   Study::settle_cohesive_step(CycleRecord  &record,
                               CohesiveZone &zone,
                               double       &lambda,
-                              const bool    to_onset)
+                              const bool    to_onset,
+                              const double  fraction)
   {
     const CohesiveParameters &parameters = scene.cohesive;
     const unsigned int        i          = parameters.interface;
@@ -277,6 +351,14 @@ namespace bilayer
                          "the outer solve of " + what +
                            " did not converge: " + record.result.message);
     };
+    // The first iterate: the histories extrapolated from the last two
+    // steps (a step that starts at the elastic limit starts intact).
+    if (!to_onset)
+      {
+        iterate = zone.predicted_histories();
+        zone.set_trial_histories(iterate);
+        model.set_cohesive_compliance(zone.compliance(), i);
+      }
     for (settled.iterations = 1;; ++settled.iterations)
       {
         solve("secant iteration " + std::to_string(settled.iterations));
@@ -320,18 +402,25 @@ namespace bilayer
             lambda_change <= parameters.damage_tolerance)
           break;
         if (settled.iterations >= parameters.maximum_iterations)
-          throw RunFailure(
-            step,
-            "the secant iteration of step " + std::to_string(step) +
-              " at load factor " + format(lambda, 8) +
-              " did not settle in Cohesive/Maximum iterations = " +
-              std::to_string(parameters.maximum_iterations) +
-              " (damage still changes by " + format(change, 3) + ")" +
-              (path ? std::string(": take a smaller Cohesive/Separation or "
-                                  "Dissipation increment") :
-                      std::string(": the load factor may lie past a limit "
-                                  "point of the curve; Cohesive/Control = "
-                                  "dissipation traces it through")));
+          {
+            if (path)
+              {
+                // (The caller takes the step again with a smaller
+                // increment.)
+                settled.converged = false;
+                settled.change    = std::max(change, lambda_change);
+                return settled;
+              }
+            throw RunFailure(
+              step,
+              "the secant iteration of step " + std::to_string(step) +
+                " at load factor " + format(lambda, 8) +
+                " did not settle in Cohesive/Maximum iterations = " +
+                std::to_string(parameters.maximum_iterations) +
+                " (damage still changes by " + format(change, 3) +
+                "): the load factor may lie past a limit point of the "
+                "curve; Cohesive/Control = dissipation traces it through");
+          }
         if (path)
           {
             lambda *= factor;

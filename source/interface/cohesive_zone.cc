@@ -127,9 +127,23 @@ namespace bilayer
   }
 
 
+  std::vector<double>
+  CohesiveZone::predicted_histories() const
+  {
+    std::vector<double> h;
+    for (unsigned int a = 0; a < zone.size(); ++a)
+      if (zone[a])
+        h.push_back(previous_history.empty() ?
+                      committed_history[a] :
+                      2 * committed_history[a] - previous_history[a]);
+    return h;
+  }
+
+
   void
   CohesiveZone::commit()
   {
+    previous_history  = committed_history;
     committed_history = trial_history;
     committed_damage  = trial_damage;
   }

@@ -52,8 +52,8 @@ namespace bilayer
                             ExcMessage(
                               "Cohesive/Bilinear/Penalty stiffness must exceed "
                               "strength^2 / (2 G_c) = " +
-                              number(s * s / (2 * toughness(B))) +
-                              " (mode " + (B == 0 ? "I" : "II") +
+                              number(s * s / (2 * toughness(B))) + " (mode " +
+                              (B == 0 ? "I" : "II") +
                               "; a smaller strength or a larger toughness "
                               "also does), got " +
                               entries::number(k0)));
@@ -72,6 +72,12 @@ namespace bilayer
       {
         const double dn = properties.normal_strength / k0,
                      dt = properties.shear_strength / k0;
+        // (The pure modes alone: an extreme strength of the other mode
+        // must not enter, inf times 0.)
+        if (B <= 0)
+          return dn;
+        if (B >= 1)
+          return dt;
         if (properties.criterion == CohesiveCriterion::benzeggagh_kenane)
           return std::sqrt(dn * dn + (dt * dt - dn * dn) * mixing(B));
         return 1. / std::sqrt((1 - B) / (dn * dn) + B / (dt * dt));

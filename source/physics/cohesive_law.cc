@@ -26,6 +26,10 @@ namespace bilayer
   {
     const double g1 = properties.mode_i_toughness,
                  g2 = properties.mode_ii_toughness;
+    if (B <= 0)
+      return g1;
+    if (B >= 1)
+      return g2;
     if (properties.criterion == CohesiveCriterion::benzeggagh_kenane)
       return g1 + (g2 - g1) * mixing(B);
     // ((1 - B) G / G_Ic)^a + (B G / G_IIc)^a = 1.

@@ -4,7 +4,8 @@
 theory.
 
 Every shipped scene (parameter_files/*.prm) runs with one mesh cycle (a
-growth scene runs all its steps), without VTU or interface files, and
+growth scene runs all its steps, a cohesive scene under path following its
+first 10), without VTU or interface files, and
 els.prm with 4 adaptive cycles (hanging nodes, on the clamped end too), and
 on every state:
   - the run is accepted (its own check of the balance among the checks);
@@ -60,7 +61,8 @@ def run(bilayer, prm, out, cycles=1):
              "--set", "Output/Output directory=" + out,
              "--set", "Mesh/Number of cycles=%d" % cycles,
              "--set", "Output/Write VTU=false",
-             "--set", "Output/Write interface CSV=false"],
+             "--set", "Output/Write interface CSV=false",
+             "--set", "Cohesive/Steps=10"],
             stdout=log, stderr=subprocess.STDOUT)
 
 

@@ -281,6 +281,10 @@ namespace bilayer
     {
       unsigned int iterations = 0;
       bool         exhausted  = false;
+      /// Whether the iteration settled (false only under path following:
+      /// the caller halves the increment), and the last damage change.
+      bool   converged = true;
+      double change    = 0;
     };
 
     /**
@@ -290,13 +294,32 @@ namespace bilayer
      * the step ends at the elastic limit. The state is solved with the
      * springs of the trial damage within Damage tolerance of the one
      * returned (and again with the nodes broken in the last update as
-     * crack faces); the zone holds the trial state.
+     * crack faces); the zone holds the trial state. Path following takes
+     * @p fraction of the increment.
      */
     CohesiveSettle
     settle_cohesive_step(CycleRecord  &record,
                          CohesiveZone &zone,
                          double       &lambda,
-                         const bool    to_onset);
+                         const bool    to_onset,
+                         const double  fraction);
+
+    /// settle_cohesive_step() of the whole increment; under path
+    /// following, where it does not settle, again from the step's start
+    /// with half the increment, down to 1/64 (then a RunFailure).
+    CohesiveSettle
+    settle_or_halve(CycleRecord  &record,
+                    CohesiveZone &zone,
+                    double       &lambda,
+                    const bool    to_onset);
+
+    /// The end of a cohesive run: why it ended in @p stop (set where it
+    /// is empty), the last step's fields where Output/Written steps wants
+    /// them, growth.csv and summary.json, the terminal's line.
+    void
+    finish_cohesive(std::string        &stop,
+                    const bool          path,
+                    const CohesiveZone &zone);
 
     /// The GrowthStep and the row of cohesive.csv of the step just
     /// recorded, the files, and its line in the terminal.

@@ -72,6 +72,20 @@ namespace bilayer
     void
     set_trial_histories(const std::vector<double> &histories);
 
+    /// The histories of the next step extrapolated linearly from the last
+    /// two committed ones (the committed ones before a second commit), in
+    /// the order of trial_histories(): the first iterate of a step.
+    std::vector<double>
+    predicted_histories() const;
+
+    /// The trial state back to the committed one (a step taken again).
+    void
+    reset_trial()
+    {
+      trial_history = committed_history;
+      trial_damage  = committed_damage;
+    }
+
     /// The trial state becomes the committed one.
     void
     commit();
@@ -193,7 +207,9 @@ namespace bilayer
     const unsigned int     b;
     std::vector<bool>      zone;
     std::vector<double>    committed_history, committed_damage;
-    std::vector<double>    trial_history, trial_damage, trial_mixity;
+    /// The committed histories before the last commit.
+    std::vector<double> previous_history;
+    std::vector<double> trial_history, trial_damage, trial_mixity;
   };
 } // namespace bilayer
 

@@ -38,11 +38,11 @@ namespace bilayer
     unsigned int interface = 0;
     /// The pieces of the zone, intervals of the coordinate s along it.
     std::vector<std::array<double, 2>> zone;
-    CohesiveControl control              = CohesiveControl::load_factor;
-    double          separation_increment = 0, dissipation_increment = 0;
-    unsigned int    steps              = 100;
-    double          damage_tolerance   = 1e-6;
-    unsigned int    maximum_iterations = 200;
+    CohesiveControl                    control = CohesiveControl::load_factor;
+    double       separation_increment = 0, dissipation_increment = 0;
+    unsigned int steps              = 100;
+    double       damage_tolerance   = 1e-6;
+    unsigned int maximum_iterations = 200;
 
     bool
     active() const

@@ -36,9 +36,9 @@ namespace bilayer
   /// The law of a cohesive zone and its constants (Cohesive/...).
   struct CohesiveProperties
   {
-    CohesiveLawType type             = CohesiveLawType::none;
-    double          normal_strength  = 1, shear_strength = 1;
-    double          mode_i_toughness = 1, mode_ii_toughness = 1;
+    CohesiveLawType   type            = CohesiveLawType::none;
+    double            normal_strength = 1, shear_strength = 1;
+    double            mode_i_toughness = 1, mode_ii_toughness = 1;
     CohesiveCriterion criterion = CohesiveCriterion::benzeggagh_kenane;
     double            exponent  = 2;
     /// Bilinear/Penalty stiffness.
