@@ -185,16 +185,16 @@ namespace bilayer
     law.normal_strength =
       positive(prm, "Normal strength", prm.get("Normal strength"));
     const std::string shear = prm.get("Shear strength");
-    law.shear_strength =
-      shear.empty() ? law.normal_strength : positive(prm, "Shear strength", shear);
+    law.shear_strength      = shear.empty() ? law.normal_strength :
+                                              positive(prm, "Shear strength", shear);
     law.mode_i_toughness =
       positive(prm, "Mode I toughness", prm.get("Mode I toughness"));
-    const std::string g2 = prm.get("Mode II toughness");
-    law.mode_ii_toughness =
-      g2.empty() ? law.mode_i_toughness : positive(prm, "Mode II toughness", g2);
-    law.criterion = prm.get("Mixed-mode criterion") == "power law" ?
-                  CohesiveCriterion::power_law :
-                  CohesiveCriterion::benzeggagh_kenane;
+    const std::string g2  = prm.get("Mode II toughness");
+    law.mode_ii_toughness = g2.empty() ? law.mode_i_toughness :
+                                         positive(prm, "Mode II toughness", g2);
+    law.criterion         = prm.get("Mixed-mode criterion") == "power law" ?
+                              CohesiveCriterion::power_law :
+                              CohesiveCriterion::benzeggagh_kenane;
     law.exponent =
       positive(prm, "Mixed-mode exponent", prm.get("Mixed-mode exponent"));
     const std::string c = prm.get("Control");

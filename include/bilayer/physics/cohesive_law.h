@@ -87,22 +87,6 @@ namespace bilayer
     virtual double
     onset_separation(const double B) const = 0;
 
-    /// The peak traction at mixity B.
-    double
-    strength(const double B) const
-    {
-      return initial_stiffness() * onset_separation(B);
-    }
-
-    /// The cohesive length of mode I, l_cz = E G_Ic / sigma_max^2 for the
-    /// Young's modulus @p E (docs/cohesive.md: the cells the zone needs).
-    double
-    cohesive_length(const double E) const
-    {
-      const double s = strength(0.);
-      return E * properties.mode_i_toughness / (s * s);
-    }
-
     /// What the law's entries are (a line for the terminal).
     virtual std::string
     describe() const = 0;
