@@ -14,6 +14,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 namespace bilayer
@@ -111,6 +112,11 @@ namespace bilayer
     CycleRecord first;
     const std::unique_ptr<CohesiveZone> zone =
       start_cohesive(first, *law, path);
+    written_zone = zone.get();
+    // (The zone lives until this function returns.)
+    const std::shared_ptr<void> forget(nullptr, [this](void *) {
+      written_zone = nullptr;
+    });
 
     const unsigned int n_steps =
       path ? parameters.steps : scene.loads.load_factors.size();
@@ -285,12 +291,12 @@ namespace bilayer
                          const bool    to_onset)
   {
     const CohesiveParameters &parameters = scene.cohesive;
-    const bool path = parameters.control != CohesiveControl::load_factor;
-    const unsigned int step = record.cycle;
+    const unsigned int        step       = record.cycle;
     // A path-following step that does not settle is taken again
     // from its start with half the increment, down to 1/64.
-    const double   start = lambda;
-    CohesiveSettle settled;
+    const double                      start             = lambda;
+    const dealii::BlockVector<double> start_multipliers = model.multipliers();
+    CohesiveSettle                    settled;
     for (double fraction = 1;; fraction /= 2)
       {
         settled =
@@ -303,9 +309,12 @@ namespace bilayer
             "the secant iteration of step " + std::to_string(step) +
               " did not settle in Cohesive/Maximum iterations = " +
               std::to_string(parameters.maximum_iterations) +
-              " even with 1/64 of the increment (its damage or load "
-              "factor still changes by " +
-              format(settled.change, 3) +
+              " even with 1/64 of the increment (" +
+              (std::isinf(settled.change) ?
+                 std::string("an iterate's separations could not carry "
+                             "the increment") :
+                 "its damage or load factor still changes by " +
+                   format(settled.change, 3)) +
               "): a larger Damage tolerance or a finer mesh may let it");
         rout << "step " << step
              << ": the secant iteration did not settle; the "
@@ -314,6 +323,7 @@ namespace bilayer
         zone.reset_trial();
         lambda = start;
         set_load_factor(lambda);
+        model.set_multipliers(start_multipliers);
         model.set_cohesive_compliance(zone.compliance(), parameters.interface);
       }
     return settled;
@@ -330,9 +340,9 @@ namespace bilayer
     const CohesiveParameters &parameters = scene.cohesive;
     const unsigned int        i          = parameters.interface;
     const unsigned int        step       = record.cycle;
-    const bool   path = parameters.control != CohesiveControl::load_factor;
-    const double target =
-      zone.committed_dissipation() + parameters.dissipation_increment;
+    const bool   path   = parameters.control != CohesiveControl::load_factor;
+    const double target = zone.committed_dissipation() +
+                          fraction * parameters.dissipation_increment;
     // The secant iteration: solve with the springs of the trial damage,
     // new trial damage from the separations (and, with path following,
     // the load factor of the step's increment), until nothing changes.
@@ -352,10 +362,13 @@ namespace bilayer
                            " did not converge: " + record.result.message);
     };
     // The first iterate: the histories extrapolated from the last two
-    // steps (a step that starts at the elastic limit starts intact).
-    if (!to_onset)
+    // steps, the last increment times the fraction of this one (a step
+    // that starts at the elastic limit starts intact; the second step
+    // starts from the first: the first's increment, from the unloaded
+    // state, is no tangent of the path).
+    if (!to_onset && step >= 2)
       {
-        iterate = zone.predicted_histories();
+        iterate = zone.predicted_histories(fraction);
         zone.set_trial_histories(iterate);
         model.set_cohesive_compliance(zone.compliance(), i);
       }
@@ -368,18 +381,26 @@ namespace bilayer
         if (path)
           {
             // (The first step ends at the elastic limit.)
-            factor = to_onset ?
-                       zone.scale_for_onset(delta) :
-                     parameters.control == CohesiveControl::separation ?
-                       zone.scale_for_increment(delta,
-                                                parameters.separation_increment,
-                                                control) :
-                       zone.scale_for_dissipation(delta, target);
+            factor =
+              to_onset ?
+                zone.scale_for_onset(delta) :
+              parameters.control == CohesiveControl::separation ?
+                zone.scale_for_increment(
+                  delta, fraction * parameters.separation_increment, control) :
+                zone.scale_for_dissipation(delta, target);
             if (!to_onset &&
                 parameters.control == CohesiveControl::dissipation &&
                 std::isinf(factor))
               {
                 settled.exhausted = true;
+                return settled;
+              }
+            // (An iterate whose separations cannot carry the step: the
+            // step is taken again with a smaller increment.)
+            if (std::isnan(factor) && settled.iterations > 1)
+              {
+                settled.converged = false;
+                settled.change    = std::numeric_limits<double>::infinity();
                 return settled;
               }
             if (!std::isfinite(factor) || !(factor > 0))

@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <bilayer/drivers/study.h>
+#include <bilayer/interface/cohesive_zone.h>
 #include <bilayer/output/output.h>
 
 #include <cmath>
@@ -217,12 +218,20 @@ namespace bilayer
     for (const unsigned int i :
          Layout::indices(model.topology().n_interfaces()))
       {
-        const std::vector<InterfaceNode> nodes =
+        std::vector<InterfaceNode> nodes =
           interface_nodes(model.interface(),
                           model.solutions(),
                           model.multipliers(),
                           scene.solver.acceptance_tolerance,
                           i);
+        // The cohesive zone's damage (committed: the step's state).
+        if (written_zone != nullptr && written_zone->block() == i)
+          for (unsigned int a = 0; a < nodes.size(); ++a)
+            {
+              nodes[a].cohesive = true;
+              if (written_zone->in_zone(a))
+                nodes[a].damage = written_zone->damage(a);
+            }
         std::vector<std::string> trace_names;
         for (const unsigned int s : trace_subproblems(model.topology(), i))
           trace_names.push_back(model.topology().field_name(s));

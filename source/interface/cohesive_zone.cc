@@ -128,14 +128,15 @@ namespace bilayer
 
 
   std::vector<double>
-  CohesiveZone::predicted_histories() const
+  CohesiveZone::predicted_histories(const double fraction) const
   {
     std::vector<double> h;
     for (unsigned int a = 0; a < zone.size(); ++a)
       if (zone[a])
         h.push_back(previous_history.empty() ?
                       committed_history[a] :
-                      2 * committed_history[a] - previous_history[a]);
+                      committed_history[a] + fraction * (committed_history[a] -
+                                                         previous_history[a]));
     return h;
   }
 
@@ -206,7 +207,7 @@ namespace bilayer
     double high = 1;
     for (unsigned int k = 0; dissipation(high) < reachable; ++k, high *= 2)
       if (k == 200)
-        return std::numeric_limits<double>::infinity();
+        return std::numeric_limits<double>::quiet_NaN();
     double low = 0;
     for (unsigned int k = 0; k < 200 && high - low > 1e-15 * high; ++k)
       {

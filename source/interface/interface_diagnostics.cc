@@ -533,8 +533,9 @@ namespace bilayer
       out << ',' << name << "_x," << name << "_y";
     out << ",s,y,normal_x,normal_y,contact_pressure,normal_traction,state";
     const bool frictional = !nodes.empty() && nodes.front().frictional;
-    out << (frictional ? ",tangential_force,friction_bound,friction_state\n" :
-                         "\n");
+    const bool cohesive   = !nodes.empty() && nodes.front().cohesive;
+    out << (frictional ? ",tangential_force,friction_bound,friction_state" : "")
+        << (cohesive ? ",damage\n" : "\n");
     out << std::setprecision(12);
     for (const InterfaceNode &n : nodes)
       {
@@ -555,6 +556,8 @@ namespace bilayer
         if (frictional)
           out << ',' << n.tangential_force + 0. << ',' << n.friction_bound
               << ',' << static_cast<int>(n.friction_state);
+        if (cohesive)
+          out << ',' << n.damage;
         out << '\n';
       }
   }

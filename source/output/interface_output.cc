@@ -56,6 +56,8 @@ namespace bilayer
           return double(n.friction_state);
         });
       }
+    if (!nodes.empty() && nodes.front().cohesive)
+      scalars.emplace_back("damage", [](const auto &n) { return n.damage; });
     std::vector<std::pair<std::string, Field>> vectors = {
       {"mu_g", [](const auto &n) { return n.mu_g; }},
       {"mu_minus", [](const auto &n) { return n.mu_minus; }},

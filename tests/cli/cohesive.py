@@ -25,13 +25,19 @@ against closed forms:
     never above tau_max, the dissipated
     energy G_IIc times the width at full damage, and once broken the shear
     traction is Coulomb's F p at every node (1e-8); pressed without shear,
-    nothing is damaged whatever the pressure and nothing penetrates;
+    nothing is damaged whatever the pressure and nothing penetrates; with
+    half of Sigma cohesive, the interface CSV carries the zone's damage at
+    its nodes, -1 off it, and no node's damage falls from step to step;
+  - parameter_files/cohesive_dcb.prm with 14 iterations allowed: steps
+    that do not settle are retaken with half the increment, and each step
+    dissipates the fraction it announces of Dissipation increment (1e-9);
   - a bad entry (a penalty below strength^2 / (2 G_c)) refused in one line.
 Usage: cohesive.py BILAYER PARAMETER_FILES
 """
 import csv
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -173,6 +179,40 @@ def bar(bilayer, files, work):
           not os.path.exists(out) and os.path.isdir(out + ".failed"))
 
 
+def halving(bilayer, files, work):
+    # A path-following step that does not settle is taken again with half
+    # the increment: with few iterations allowed, the DCB's first steps
+    # are halved, and each step then adds the fraction it announces of
+    # Dissipation increment (the bisection on the load factor hits its
+    # target to round-off).
+    scene = os.path.join(files, "cohesive_dcb.prm")
+    out = os.path.join(work, "halving")
+    code, stdout, err = run(bilayer, scene, out,
+                            {"Cohesive/Maximum iterations": "14",
+                             "Cohesive/Steps": "3",
+                             "Output/Write VTU": "false"})
+    check("halving: the run ends with exit 0", code == 0)
+    if code != 0:
+        print(err)
+        return
+    fraction = {}
+    for line in stdout.splitlines():
+        m = re.match(r"step (\d+): the secant iteration did not settle; the "
+                     r"increment halved to ([0-9.e-]+) of its value", line)
+        if m:
+            fraction[int(m.group(1))] = 0.5 ** round(
+                -math.log2(float(m.group(2))))
+    steps = rows(os.path.join(out, "cohesive.csv"))
+    worst = 0
+    for before, r in zip(steps, steps[1:]):
+        added = float(r["dissipated"]) - float(before["dissipated"])
+        expected = 4e-3 * fraction.get(int(r["step"]), 1.)
+        worst = max(worst, abs(added - expected) / expected)
+    check("halving: some step is halved", len(fraction) > 0)
+    check("halving: each step dissipates the fraction of the increment it "
+          "announces (1e-9)", len(steps) == 3 and worst <= 1e-9)
+
+
 def shear(bilayer, files, work):
     scene = os.path.join(files, "cohesive_shear.prm")
     E, H, F, tau, g2, Uy, width = 100., 1., 0.5, 0.01, 2e-4, 2e-5, 1.
@@ -219,6 +259,38 @@ def shear(bilayer, files, work):
     check("shear: the dissipated energy is G_IIc times the width (1e-9)",
           abs(float(steps[-1]["dissipated"]) - g2 * width) <= 1e-9 * g2)
 
+    # Half the interface cohesive: the interface files carry each zone
+    # node's damage (the zone's own file's), -1 off the zone, and no
+    # node's damage falls from one step to the next (irreversibility).
+    out = os.path.join(work, "half")
+    code, _, err = run(bilayer, scene, out,
+                       {"Cohesive/Zone": "0, 0.5",
+                        "Output/Write interface CSV": "true"})
+    check("half zone: the run ends with exit 0", code == 0)
+    if code == 0:
+        steps = rows(os.path.join(out, "cohesive.csv"))
+        agree, off, falls, damaged = True, True, False, 0
+        before = {}
+        for r in steps:
+            step = int(r["step"])
+            of_zone = {round(float(n["s"]), 9): float(n["damage"])
+                       for n in zone(out, step)}
+            for n in rows(os.path.join(out, "interface-%02d.csv" % step)):
+                key, d = round(float(n["s"]), 9), float(n["damage"])
+                if key in of_zone:
+                    agree = agree and abs(d - of_zone[key]) <= 1e-12
+                    damaged += d > 0
+                    falls = falls or d < before.get(key, 0.) - 1e-12
+                    before[key] = d
+                else:
+                    off = off and d == -1 and key >= 0.5
+        check("half zone: the interface CSV's damage is the zone's at its "
+              "nodes, damage grows somewhere", agree and damaged > 0)
+        check("half zone: damage -1 off the zone", off)
+        check("half zone: no node's damage falls between steps", not falls)
+    else:
+        print(err)
+
     # Pressed without shear, 1000 times harder: no damage, no penetration.
     out = os.path.join(work, "pressed")
     code, _, err = run(bilayer, scene, out,
@@ -251,6 +323,7 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         bar(bilayer, files, work)
         shear(bilayer, files, work)
+        halving(bilayer, files, work)
     if failures:
         print("FAILED: " + "; ".join(failures))
         sys.exit(1)

@@ -267,6 +267,9 @@ namespace bilayer
              largest_separation = 0;
     };
     std::vector<CohesiveStep> cohesive_steps;
+    /// The zone of a cohesive run while it runs (its damage goes into the
+    /// interface files).
+    const CohesiveZone *written_zone = nullptr;
 
     /// The cohesive run's set-up: the meshes of the last cycle and their
     /// subproblems in @p first, the zone joined to its interface's crack,

@@ -73,10 +73,11 @@ namespace bilayer
     set_trial_histories(const std::vector<double> &histories);
 
     /// The histories of the next step extrapolated linearly from the last
-    /// two committed ones (the committed ones before a second commit), in
-    /// the order of trial_histories(): the first iterate of a step.
+    /// two committed ones, the last increment times @p fraction (the
+    /// committed ones before a second commit), in the order of
+    /// trial_histories(): the first iterate of a step.
     std::vector<double>
-    predicted_histories() const;
+    predicted_histories(const double fraction) const;
 
     /// The trial state back to the committed one (a step taken again).
     void
@@ -112,7 +113,9 @@ namespace bilayer
      * the smallest such f, by bisection (the dissipation is a
      * nondecreasing function of f). A target beyond what the whole zone
      * can dissipate (every node broken) is replaced by all but 1e-6 of
-     * that; infinity where the committed state dissipates that already.
+     * that; infinity where the committed state dissipates that already;
+     * NaN where no scaling of @p delta reaches the target (nodes that do
+     * not open under it hold the rest of the zone's toughness).
      */
     double
     scale_for_dissipation(const std::vector<Separation> &delta,

@@ -232,6 +232,12 @@ namespace bilayer
     /// tangential state.
     double        tangential_force = 0, friction_bound = 0;
     FrictionState friction_state = FrictionState::glued;
+    /// Whether the interface carries a cohesive zone (the CSV then has the
+    /// column below, the VTU the field damage).
+    bool cohesive = false;
+    /// The damage of the cohesive law at a node of the zone (1: a crack
+    /// face; -1 off the zone).
+    double damage = -1;
   };
 
   /**

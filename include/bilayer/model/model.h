@@ -179,6 +179,14 @@ namespace bilayer
       mu *= factor;
     }
 
+    /// Start the next solve from @p start (multipliers of this mesh).
+    void
+    set_multipliers(const dealii::BlockVector<double> &start)
+    {
+      AssertDimension(start.size(), mu.size());
+      mu = start;
+    }
+
     /// The floating subproblems of the present mesh (FloatingParts: none
     /// where every subproblem touches a clamped part).
     FloatingParts
