@@ -87,6 +87,44 @@ namespace bilayer
       out << std::setprecision(digits) << x;
       return out.str();
     }
+
+
+    /// Path following: the factor of the load factor that makes the
+    /// separations @p delta take the step (the first step: to the elastic
+    /// limit), as CohesiveZone::scale_for_*() give it.
+    double
+    path_factor(const CohesiveParameters                    &parameters,
+                const CohesiveZone                          &zone,
+                const std::vector<CohesiveZone::Separation> &delta,
+                const bool                                   to_onset,
+                const double                                 fraction,
+                const double                                 target,
+                int                                         &control)
+    {
+      if (to_onset)
+        return zone.scale_for_onset(delta);
+      if (parameters.control == CohesiveControl::separation)
+        return zone.scale_for_increment(
+          delta, fraction * parameters.separation_increment, control);
+      return zone.scale_for_dissipation(delta, target);
+    }
+
+
+    /// The line of a step at a prescribed load factor that does not settle.
+    std::string
+    not_settled(const unsigned int        step,
+                const double              lambda,
+                const double              change,
+                const CohesiveParameters &parameters)
+    {
+      return "the secant iteration of step " + std::to_string(step) +
+             " at load factor " + format(lambda, 8) +
+             " did not settle in Cohesive/Maximum iterations = " +
+             std::to_string(parameters.maximum_iterations) +
+             " (damage still changes by " + format(change, 3) +
+             "): the load factor may lie past a limit point of the "
+             "curve; Cohesive/Control = dissipation traces it through";
+    }
   } // namespace
 
 
@@ -380,14 +418,8 @@ namespace bilayer
         double factor = 1;
         if (path)
           {
-            // (The first step ends at the elastic limit.)
-            factor =
-              to_onset ?
-                zone.scale_for_onset(delta) :
-              parameters.control == CohesiveControl::separation ?
-                zone.scale_for_increment(
-                  delta, fraction * parameters.separation_increment, control) :
-                zone.scale_for_dissipation(delta, target);
+            factor = path_factor(
+              parameters, zone, delta, to_onset, fraction, target, control);
             if (!to_onset &&
                 parameters.control == CohesiveControl::dissipation &&
                 std::isinf(factor))
@@ -432,15 +464,8 @@ namespace bilayer
                 settled.change    = std::max(change, lambda_change);
                 return settled;
               }
-            throw RunFailure(
-              step,
-              "the secant iteration of step " + std::to_string(step) +
-                " at load factor " + format(lambda, 8) +
-                " did not settle in Cohesive/Maximum iterations = " +
-                std::to_string(parameters.maximum_iterations) +
-                " (damage still changes by " + format(change, 3) +
-                "): the load factor may lie past a limit point of the "
-                "curve; Cohesive/Control = dissipation traces it through");
+            throw RunFailure(step,
+                             not_settled(step, lambda, change, parameters));
           }
         if (path)
           {
