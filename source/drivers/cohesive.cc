@@ -399,6 +399,12 @@ namespace bilayer
                          "the outer solve of " + what +
                            " did not converge: " + record.result.message);
     };
+    if (path && !to_onset &&
+        parameters.control == CohesiveControl::dissipation && zone.exhausted())
+      {
+        settled.exhausted = true;
+        return settled;
+      }
     // The first iterate: the histories extrapolated from the last two
     // steps, the last increment times the fraction of this one (a step
     // that starts at the elastic limit starts intact; the second step
@@ -420,16 +426,13 @@ namespace bilayer
           {
             factor = path_factor(
               parameters, zone, delta, to_onset, fraction, target, control);
-            if (!to_onset &&
-                parameters.control == CohesiveControl::dissipation &&
-                std::isinf(factor))
-              {
-                settled.exhausted = true;
-                return settled;
-              }
-            // (An iterate whose separations cannot carry the step: the
-            // step is taken again with a smaller increment.)
-            if (std::isnan(factor) && settled.iterations > 1)
+            // (An iterate whose separations cannot carry the step, or
+            // whose mixities leave the zone less to dissipate than the
+            // step asks: the step is taken again with a smaller
+            // increment.)
+            if ((std::isnan(factor) && settled.iterations > 1) ||
+                (std::isinf(factor) && !to_onset &&
+                 parameters.control == CohesiveControl::dissipation))
               {
                 settled.converged = false;
                 settled.change    = std::numeric_limits<double>::infinity();

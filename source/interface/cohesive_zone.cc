@@ -42,6 +42,7 @@ namespace bilayer
     trial_history = committed_history;
     trial_damage  = committed_damage;
     trial_mixity.assign(n, 0.);
+    committed_mixity = trial_mixity;
   }
 
 
@@ -147,6 +148,7 @@ namespace bilayer
     previous_history  = committed_history;
     committed_history = trial_history;
     committed_damage  = trial_damage;
+    committed_mixity  = trial_mixity;
   }
 
 
@@ -225,8 +227,19 @@ namespace bilayer
     for (unsigned int a = 0; a < zone.size(); ++a)
       if (zone[a])
         sum += space.node_mass(a, b) *
-               law.dissipated_energy(committed_history[a], trial_mixity[a]);
+               law.dissipated_energy(committed_history[a], committed_mixity[a]);
     return sum;
+  }
+
+
+  bool
+  CohesiveZone::exhausted() const
+  {
+    double most = 0;
+    for (unsigned int a = 0; a < zone.size(); ++a)
+      if (zone[a])
+        most += space.node_mass(a, b) * law.toughness(committed_mixity[a]);
+    return !(committed_dissipation() < (1 - 1e-6) * most);
   }
 
 

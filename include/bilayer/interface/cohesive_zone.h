@@ -85,6 +85,7 @@ namespace bilayer
     {
       trial_history = committed_history;
       trial_damage  = committed_damage;
+      trial_mixity  = committed_mixity;
     }
 
     /// The trial state becomes the committed one.
@@ -124,6 +125,12 @@ namespace bilayer
     /// The committed dissipated energy (per unit width).
     double
     committed_dissipation() const;
+
+    /// Whether the committed state has dissipated all but 1e-6 of what the
+    /// zone can (every node's toughness at its committed mixity times its
+    /// length): dissipation control has nothing left to trace.
+    bool
+    exhausted() const;
 
     /// Path following to the onset: the factor by which the separations
     /// @p delta must be scaled for the first node to reach the onset
@@ -209,7 +216,7 @@ namespace bilayer
     const MultiplierSpace &space;
     const unsigned int     b;
     std::vector<bool>      zone;
-    std::vector<double>    committed_history, committed_damage;
+    std::vector<double> committed_history, committed_damage, committed_mixity;
     /// The committed histories before the last commit.
     std::vector<double> previous_history;
     std::vector<double> trial_history, trial_damage, trial_mixity;
