@@ -319,6 +319,22 @@ namespace bilayer
     write_growth(true);
     rout << "cohesive: " << cohesive_steps.size() << " steps, " << stop
          << std::endl;
+    // The process zone's resolution while the zone cracks (the median
+    // over those steps: the zone's ends shorten it for a few): fewer
+    // than 3 nodes in it and the curve follows the mesh node by node (a
+    // saw tooth; docs/cohesive.md, choosing the mesh).
+    std::vector<unsigned int> held;
+    for (const CohesiveStep &r : cohesive_steps)
+      if (r.cracked_nodes > 0 && r.cracked_nodes < zone.summary().n_nodes)
+        held.push_back(r.process_nodes);
+    std::sort(held.begin(), held.end());
+    if (!held.empty() && held[held.size() / 2] < 3)
+      rout << "cohesive: the process zone held " << held[held.size() / 2]
+           << " node(s) while the zone cracked (the median over " << held.size()
+           << " steps; fewer than 3): the curve follows the nodes one by "
+              "one; a finer mesh along the zone or a longer cohesive length "
+              "resolves it (docs/cohesive.md)"
+           << std::endl;
   }
 
 
@@ -536,6 +552,8 @@ namespace bilayer
     row.process_length     = s.process_length;
     row.process_start      = s.process_start;
     row.process_end        = s.process_end;
+    row.process_nodes      = s.n_process;
+    row.cracked_nodes      = s.n_cracked;
     row.largest_damage     = s.largest_damage;
     row.largest_separation = s.largest_separation;
     cohesive_steps.push_back(row);
@@ -569,7 +587,7 @@ namespace bilayer
            "lengths per unit width\n";
       o << "step,load_factor,q,iterations,largest_separation,largest_damage,"
            "cracked_length,process_length,process_start,process_end,"
-           "dissipated,work,dissipated_balance\n";
+           "dissipated,work,dissipated_balance,process_nodes\n";
       o << std::setprecision(12);
       for (const CohesiveStep &r : cohesive_steps)
         o << r.step << ',' << r.load_factor << ',' << r.conjugate_displacement
@@ -577,7 +595,7 @@ namespace bilayer
           << r.largest_damage << ',' << r.cracked_length << ','
           << r.process_length << ',' << r.process_start << ',' << r.process_end
           << ',' << r.dissipated << ',' << r.external_work << ','
-          << r.dissipated_balance << '\n';
+          << r.dissipated_balance << ',' << r.process_nodes << '\n';
     });
     if (zone == nullptr)
       return;

@@ -31,6 +31,9 @@ against closed forms:
   - parameter_files/cohesive_dcb.prm with 14 iterations allowed: steps
     that do not settle are retaken with half the increment, and each step
     dissipates the fraction it announces of Dissipation increment (1e-9);
+  - the same DCB with l_cz = h / 4 on 12 cells per h: cohesive.csv's
+    process_nodes counts the nodes with 0 < d < 1, and one line says that
+    the process zone (about one node) is not resolved;
   - a bad entry (a penalty below strength^2 / (2 G_c)) refused in one line.
 Usage: cohesive.py BILAYER PARAMETER_FILES
 """
@@ -213,6 +216,35 @@ def halving(bilayer, files, work):
           "announces (1e-9)", len(steps) == 3 and worst <= 1e-9)
 
 
+def coarse(bilayer, files, work):
+    # The DCB with a cohesive length of h / 4 on 12 cells per h: a process
+    # zone of about one node. cohesive.csv counts the nodes with
+    # 0 < d < 1 of each step's zone file, and the run says in one line
+    # that the zone is not resolved.
+    scene = os.path.join(files, "cohesive_dcb.prm")
+    out = os.path.join(work, "coarse")
+    code, stdout, err = run(bilayer, scene, out,
+                            {"Cohesive/Normal strength": "0.2",
+                             "Cohesive/Shear strength": "0.2",
+                             "Cohesive/Steps": "4",
+                             "Output/Written steps": "every 1",
+                             "Output/Write VTU": "false"})
+    check("coarse zone: the run ends with exit 0", code == 0)
+    if code != 0:
+        print(err)
+        return
+    counted = True
+    for r in rows(os.path.join(out, "cohesive.csv")):
+        inside = sum(1 for n in zone(out, int(r["step"]))
+                     if 0 < float(n["damage"]) < 1)
+        counted = counted and int(r["process_nodes"]) == inside
+    check("coarse zone: process_nodes counts the nodes with 0 < d < 1",
+          counted)
+    check("coarse zone: one line says the process zone is not resolved",
+          sum("the process zone held" in line and "fewer than 3" in line
+              for line in stdout.splitlines()) == 1)
+
+
 def shear(bilayer, files, work):
     scene = os.path.join(files, "cohesive_shear.prm")
     E, H, F, tau, g2, Uy, width = 100., 1., 0.5, 0.01, 2e-4, 2e-5, 1.
@@ -324,6 +356,7 @@ def main():
         bar(bilayer, files, work)
         shear(bilayer, files, work)
         halving(bilayer, files, work)
+        coarse(bilayer, files, work)
     if failures:
         print("FAILED: " + "; ".join(failures))
         sys.exit(1)

@@ -265,6 +265,8 @@ namespace bilayer
       double dissipated = 0, cracked_length = 0, process_length = 0,
              process_start = 0, process_end = 0, largest_damage = 0,
              largest_separation = 0;
+      /// The nodes of the process zone (0 < d < 1) and the broken ones.
+      unsigned int process_nodes = 0, cracked_nodes = 0;
     };
     std::vector<CohesiveStep> cohesive_steps;
     /// The zone of a cohesive run while it runs (its damage goes into the
