@@ -351,6 +351,12 @@ namespace bilayer
     const double                      start             = lambda;
     const dealii::BlockVector<double> start_multipliers = model.multipliers();
     CohesiveSettle                    settled;
+    if (parameters.control == CohesiveControl::dissipation && !to_onset &&
+        zone.exhausted())
+      {
+        settled.exhausted = true;
+        return settled;
+      }
     for (double fraction = 1;; fraction /= 2)
       {
         settled =
@@ -415,12 +421,6 @@ namespace bilayer
                          "the outer solve of " + what +
                            " did not converge: " + record.result.message);
     };
-    if (path && !to_onset &&
-        parameters.control == CohesiveControl::dissipation && zone.exhausted())
-      {
-        settled.exhausted = true;
-        return settled;
-      }
     // The first iterate: the histories extrapolated from the last two
     // steps, the last increment times the fraction of this one (a step
     // that starts at the elastic limit starts intact; the second step
