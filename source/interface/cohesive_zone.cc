@@ -51,7 +51,9 @@ namespace bilayer
                             const Solutions &w) const
   {
     BlockVector<double> g;
-    interface.jumps(w, g);
+    // (Every component: a broken node's frictionless sliding has no
+    // multiplier, and its mixity and history read it.)
+    interface.jumps(w, g, true);
     std::vector<Separation> delta(space.n_nodes(b), {{0., 0.}});
     for (unsigned int a = 0; a < delta.size(); ++a)
       {

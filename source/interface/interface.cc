@@ -35,7 +35,9 @@ namespace bilayer
 
 
   void
-  Interface::jumps(const Solutions &w, BlockVector<double> &g) const
+  Interface::jumps(const Solutions     &w,
+                   BlockVector<double> &g,
+                   const bool           every_component) const
   {
     const bool weighted = contact.sampling == JumpSampling::weighted;
     space_.initialize(g);
@@ -44,7 +46,7 @@ namespace bilayer
       if (active(b))
         for (unsigned int i = 0; i < g.block(b).size(); ++i)
           g.block(b)(i) =
-            space_.set().free(b, i) ?
+            every_component || space_.set().free(b, i) ?
               g.block(b)(i) /
                 (weighted ? space_.node_weight(i / Layout::n_components, b) :
                             1.) :

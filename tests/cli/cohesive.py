@@ -24,7 +24,8 @@ against closed forms:
     difference between the damage solved with and the one reported) and
     never above tau_max, the dissipated
     energy G_IIc times the width at full damage, and once broken the shear
-    traction is Coulomb's F p at every node (1e-8); pressed without shear,
+    traction is Coulomb's F p at every node (1e-8); without friction a
+    broken node's history is the prescribed slip (1e-9); pressed without shear,
     nothing is damaged whatever the pressure and nothing penetrates; with
     half of Sigma cohesive, the interface CSV carries the zone's damage at
     its nodes, -1 off it, and no node's damage falls from step to step;
@@ -290,6 +291,24 @@ def shear(bilayer, files, work):
           broken > 0 and coulomb <= 1e-8 * tau)
     check("shear: the dissipated energy is G_IIc times the width (1e-9)",
           abs(float(steps[-1]["dissipated"]) - g2 * width) <= 1e-9 * g2)
+
+    # Frictionless after damage: a broken node's faces slide freely, its
+    # separation (and history) is the prescribed slip lambda U_x exactly.
+    out = os.path.join(work, "frictionless")
+    code, _, err = run(bilayer, scene, out, {"Contact/Friction": "none"})
+    check("frictionless: the run ends with exit 0", code == 0)
+    if code == 0:
+        worst, broken = 0, 0
+        for r in rows(os.path.join(out, "cohesive.csv")):
+            slip = 0.01 * float(r["load_factor"])
+            for n in zone(out, int(r["step"])):
+                if float(n["damage"]) >= 1:
+                    broken += 1
+                    worst = max(worst, abs(float(n["history"]) - slip) / slip)
+        check("frictionless: broken nodes' history is the slip lambda U_x "
+              "(1e-9)", broken > 0 and worst <= 1e-9)
+    else:
+        print(err)
 
     # Half the interface cohesive: the interface files carry each zone
     # node's damage (the zone's own file's), -1 off the zone, and no

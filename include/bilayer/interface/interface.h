@@ -117,9 +117,13 @@ namespace bilayer
       coupling_.apply_transpose(multipliers, loads);
     }
 
-    /// The jumps g (weighted or nodal, zero where no multiplier acts).
+    /// The jumps g (weighted or nodal, zero where no multiplier acts
+    /// unless @p every_component: a cohesive zone's separations, the
+    /// sliding of its frictionless crack faces included).
     void
-    jumps(const Solutions &w, dealii::BlockVector<double> &g) const;
+    jumps(const Solutions             &w,
+          dealii::BlockVector<double> &g,
+          const bool                   every_component = false) const;
 
     /// The traction (Cartesian components) that the multipliers @p mu
     /// apply to subproblem @p s at the point of parameter @p x on
