@@ -183,22 +183,30 @@ def bar(bilayer, files, work):
           not os.path.exists(out) and os.path.isdir(out + ".failed"))
 
 
+def run_dcb(bilayer, files, work, label, settings):
+    """cohesive_dcb.prm with SETTINGS (no VTU) into WORK/LABEL: (its
+    folder, its stdout), or None after a failed exit check."""
+    out = os.path.join(work, label)
+    code, stdout, err = run(bilayer, os.path.join(files, "cohesive_dcb.prm"),
+                            out, dict(settings, **{"Output/Write VTU": "false"}))
+    check("%s: the run ends with exit 0" % label, code == 0)
+    if code != 0:
+        print(err)
+        return None
+    return out, stdout
+
+
 def halving(bilayer, files, work):
     # A path-following step that does not settle is taken again with half
     # the increment: with few iterations allowed, the DCB's first steps
     # are halved, and each step then adds the fraction it announces of
     # Dissipation increment (the bisection on the load factor hits its
     # target to round-off).
-    scene = os.path.join(files, "cohesive_dcb.prm")
-    out = os.path.join(work, "halving")
-    code, stdout, err = run(bilayer, scene, out,
-                            {"Cohesive/Maximum iterations": "14",
-                             "Cohesive/Steps": "3",
-                             "Output/Write VTU": "false"})
-    check("halving: the run ends with exit 0", code == 0)
-    if code != 0:
-        print(err)
+    ran = run_dcb(bilayer, files, work, "halving",
+                  {"Cohesive/Maximum iterations": "14", "Cohesive/Steps": "3"})
+    if ran is None:
         return
+    out, stdout = ran
     fraction = {}
     for line in stdout.splitlines():
         m = re.match(r"step (\d+): the secant iteration did not settle; the "
@@ -222,18 +230,14 @@ def coarse(bilayer, files, work):
     # zone of about one node. cohesive.csv counts the nodes with
     # 0 < d < 1 of each step's zone file, and the run says in one line
     # that the zone is not resolved.
-    scene = os.path.join(files, "cohesive_dcb.prm")
-    out = os.path.join(work, "coarse")
-    code, stdout, err = run(bilayer, scene, out,
-                            {"Cohesive/Normal strength": "0.2",
-                             "Cohesive/Shear strength": "0.2",
-                             "Cohesive/Steps": "4",
-                             "Output/Written steps": "every 1",
-                             "Output/Write VTU": "false"})
-    check("coarse zone: the run ends with exit 0", code == 0)
-    if code != 0:
-        print(err)
+    ran = run_dcb(bilayer, files, work, "coarse zone",
+                  {"Cohesive/Normal strength": "0.2",
+                   "Cohesive/Shear strength": "0.2",
+                   "Cohesive/Steps": "4",
+                   "Output/Written steps": "every 1"})
+    if ran is None:
         return
+    out, stdout = ran
     counted = True
     for r in rows(os.path.join(out, "cohesive.csv")):
         inside = sum(1 for n in zone(out, int(r["step"]))
