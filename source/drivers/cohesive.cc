@@ -276,6 +276,8 @@ namespace bilayer
     growth_steps.clear();
     followed.clear();
     cohesive_steps.clear();
+    cohesive_newton.reset();
+    cohesive_newton_skipped.clear();
     point_subproblems.clear();
     for (const Point<2> &p : scene.output.displacement_points)
       point_subproblems.push_back(model.point_subproblem(p));
@@ -426,7 +428,12 @@ namespace bilayer
     // that starts at the elastic limit starts intact; the second step
     // starts from the first: the first's increment, from the unloaded
     // state, is no tangent of the path).
-    if (!to_onset && step >= 2)
+    // With Cohesive/Method = newton, the Newton method on the interface
+    // gives it instead where it converges.
+    const bool newton =
+      !to_onset && parameters.newton &&
+      newton_first_iterate(zone, lambda, fraction, target, control, work);
+    if (!newton && !to_onset && step >= 2)
       {
         iterate = zone.predicted_histories(fraction);
         zone.set_trial_histories(iterate);

@@ -6,6 +6,7 @@
 #include <bilayer/core/progress.h>
 #include <bilayer/drivers/resources.h>
 #include <bilayer/drivers/study.h>
+#include <bilayer/solvers/cohesive_newton.h>
 
 #include <iomanip>
 #include <sstream>
@@ -27,6 +28,10 @@ namespace bilayer
     , rout(out, distribution.is_root())
     , model(this->scene, distribution, pcout)
   {}
+
+
+  // (Here, where the cohesive run's Newton method is a complete type.)
+  Study::~Study() = default;
 
 
   bool

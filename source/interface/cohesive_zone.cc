@@ -79,6 +79,47 @@ namespace bilayer
   } // namespace
 
 
+  bool
+  CohesiveZone::loads(const unsigned int a, const Separation &delta) const
+  {
+    return committed_damage[a] < 1 &&
+           equivalent(delta, 1.).first >= committed_history[a];
+  }
+
+
+  CohesiveZone::NodeState
+  CohesiveZone::node_state(const unsigned int a,
+                           const Separation  &delta,
+                           const bool         loading) const
+  {
+    const auto [e, B] = equivalent(delta, 1.);
+    NodeState state;
+    if (loading)
+      {
+        state.mixity  = B;
+        state.history = e;
+        state.damage  = law.damage(e, B);
+        return state;
+      }
+    // A fully damaged node keeps its mixity (its shear is no longer a
+    // separation of the law).
+    state.mixity  = committed_damage[a] < 1 ? B : committed_mixity[a];
+    state.history = std::max(committed_history[a], e);
+    state.damage =
+      std::max(committed_damage[a], law.damage(state.history, state.mixity));
+    return state;
+  }
+
+
+  double
+  CohesiveZone::node_dissipation(const unsigned int a,
+                                 const NodeState   &state) const
+  {
+    return space.node_mass(a, b) *
+           law.dissipated_energy(state.history, state.mixity);
+  }
+
+
   double
   CohesiveZone::try_separations(const std::vector<Separation> &delta,
                                 const double                   scale)
@@ -87,17 +128,12 @@ namespace bilayer
     for (unsigned int a = 0; a < zone.size(); ++a)
       if (zone[a])
         {
-          const auto [e, B] = equivalent(delta[a], scale);
-          // A fully damaged node keeps its mixity (its shear is no longer
-          // a separation of the law).
-          if (committed_damage[a] < 1)
-            trial_mixity[a] = B;
-          trial_history[a] = std::max(committed_history[a], e);
-          const double d =
-            std::max(committed_damage[a],
-                     law.damage(trial_history[a], trial_mixity[a]));
-          change          = std::max(change, std::abs(d - trial_damage[a]));
-          trial_damage[a] = d;
+          const NodeState state =
+            node_state(a, {{delta[a][0] * scale, delta[a][1] * scale}});
+          trial_mixity[a]  = state.mixity;
+          trial_history[a] = state.history;
+          change = std::max(change, std::abs(state.damage - trial_damage[a]));
+          trial_damage[a] = state.damage;
         }
     return change;
   }

@@ -117,6 +117,19 @@ namespace bilayer
                       "200",
                       Patterns::Integer(1),
                       "Secant iterations per step before the step fails.");
+    prm.declare_entry(
+      "Method",
+      "newton",
+      Patterns::Selection("newton|secant"),
+      "How a step's state is found. newton: a semismooth Newton method on "
+      "the interface alone (the jumps are affine in the multipliers and "
+      "the load factor: a dense matrix built once from the subproblems' "
+      "factorisations, one solve per multiplier component) gives the "
+      "first iterate, which the secant iteration checks with the outer "
+      "solver and carries on from where it is not the solution; secant: "
+      "the secant iteration alone (docs/cohesive.md). Friction on the "
+      "interfaces, or more than 6000 multiplier components, take the "
+      "secant iteration.");
     prm.enter_subsection("Bilinear");
     prm.declare_entry("Penalty stiffness",
                       "1e4",
@@ -210,6 +223,7 @@ namespace bilayer
       refuse("Damage tolerance",
              "in (0, 0.1], got " + number(damage_tolerance));
     maximum_iterations = prm.get_integer("Maximum iterations");
+    newton             = prm.get("Method") == "newton";
     prm.enter_subsection("Bilinear");
     law.penalty_stiffness =
       positive(prm, "Bilinear/Penalty stiffness", prm.get("Penalty stiffness"));

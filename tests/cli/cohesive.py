@@ -203,7 +203,8 @@ def halving(bilayer, files, work):
     # Dissipation increment (the bisection on the load factor hits its
     # target to round-off).
     ran = run_dcb(bilayer, files, work, "halving",
-                  {"Cohesive/Maximum iterations": "14", "Cohesive/Steps": "3"})
+                  {"Cohesive/Maximum iterations": "14", "Cohesive/Steps": "3",
+                   "Cohesive/Method": "secant"})
     if ran is None:
         return
     out, stdout = ran
@@ -223,6 +224,34 @@ def halving(bilayer, files, work):
     check("halving: some step is halved", len(fraction) > 0)
     check("halving: each step dissipates the fraction of the increment it "
           "announces (1e-9)", len(steps) == 3 and worst <= 1e-9)
+
+
+def newton(bilayer, files, work):
+    # The Newton method on the interface and the secant iteration alone
+    # solve the same discrete problem of each step (to the Damage
+    # tolerance, 1e-6): the same curve. The Newton method's state is the
+    # secant iteration's fixed point: the steps after the first two (the
+    # first ends at the elastic limit, the second starts there, where the
+    # law's kink lies under every node) settle in one secant iteration.
+    curves = {}
+    for method in ("newton", "secant"):
+        ran = run_dcb(bilayer, files, work, "method-" + method,
+                      {"Cohesive/Steps": "8", "Cohesive/Method": method})
+        if ran is None:
+            return
+        curves[method] = rows(os.path.join(ran[0], "cohesive.csv"))
+    a, b = curves["newton"], curves["secant"]
+    worst = max(abs(float(x[c]) - float(y[c])) / abs(float(y[c]))
+                for x, y in zip(a, b) for c in ("load_factor", "q")
+                if float(y[c]) != 0)
+    print("  Newton against secant: largest relative difference %.3g" % worst)
+    check("newton: the curve of the secant iteration (8 steps, 1e-5)",
+          len(a) == len(b) == 8 and worst <= 1e-5)
+    check("newton: steps 2 on settle in one secant iteration",
+          all(int(r["iterations"]) == 1 for r in a[2:]))
+    check("newton: each step dissipates the increment (1e-9)",
+          all(abs(float(r["dissipated"]) - 4e-3 * int(r["step"])) <= 4e-12
+              for r in a))
 
 
 def coarse(bilayer, files, work):
@@ -379,6 +408,7 @@ def main():
         bar(bilayer, files, work)
         shear(bilayer, files, work)
         halving(bilayer, files, work)
+        newton(bilayer, files, work)
         coarse(bilayer, files, work)
     if failures:
         print("FAILED: " + "; ".join(failures))

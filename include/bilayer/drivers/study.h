@@ -32,6 +32,7 @@ namespace bilayer
 {
   class CohesiveZone;
   class CohesiveLaw;
+  class CohesiveNewton;
 
   /**
    * A study of one scene: a sequence of states, each solved and checked and
@@ -60,6 +61,8 @@ namespace bilayer
     Study(const Scene        &scene,
           std::ostream       &out,
           const Distribution &distribution = Distribution::world());
+
+    ~Study();
 
     /// All cycles; true if every cycle converged and passed its checks.
     /// Stops at the first cycle that does not.
@@ -308,6 +311,30 @@ namespace bilayer
                          double       &lambda,
                          const bool    to_onset,
                          const double  fraction);
+
+    /**
+     * The first iterate of a step's secant iteration by the Newton method
+     * on the interface (CohesiveNewton; Cohesive/Method = newton), built on
+     * its first use: from the state of the last step at the load factor
+     * @p lambda, the step's control (its @p target dissipation, or
+     * @p fraction of the separation increment at the node @p control, which
+     * it picks where negative). Where it converges, the zone's trial state,
+     * the springs, the multipliers and the load factor are its solution's
+     * and it returns true; else nothing changes. The solves it spends go
+     * into @p work.
+     */
+    bool
+    newton_first_iterate(CohesiveZone &zone,
+                         double       &lambda,
+                         const double  fraction,
+                         const double  target,
+                         int          &control,
+                         SolverResult &work);
+
+    /// The Newton method of the cohesive run (built on its first use), or
+    /// why it is not used.
+    std::unique_ptr<CohesiveNewton> cohesive_newton;
+    std::string                     cohesive_newton_skipped;
 
     /// settle_cohesive_step() of the whole increment; under path
     /// following, where it does not settle, again from the step's start

@@ -61,6 +61,59 @@ namespace bilayer
     double
     try_separations(const std::vector<Separation> &delta, const double scale);
 
+    /// A node's state for the separation @p delta from the committed one
+    /// (what try_separations() gives it with scale 1).
+    struct NodeState
+    {
+      double history = 0, damage = 0, mixity = 0;
+    };
+
+    /// With @p loading, the state of the law's loading branch at
+    /// @p delta (history the equivalent separation, without the committed
+    /// state's bounds): its derivatives where the node loads.
+    NodeState
+    node_state(const unsigned int a,
+               const Separation  &delta,
+               const bool         loading = false) const;
+
+    /// Whether @p delta loads node @p a: its equivalent separation at
+    /// least its committed history, the node not fully damaged.
+    bool
+    loads(const unsigned int a, const Separation &delta) const;
+
+    /// The energy that node @p a dissipates in the state @p state (the
+    /// law's at its history and mixity, with the node's weight of Sigma).
+    double
+    node_dissipation(const unsigned int a, const NodeState &state) const;
+
+    /// The law's initial stiffness k0 [stress / length].
+    double
+    initial_stiffness() const
+    {
+      return law.initial_stiffness();
+    }
+
+    /// The committed history (largest equivalent separation) of node @p a.
+    double
+    committed_history_of(const unsigned int a) const
+    {
+      return committed_history[a];
+    }
+
+    /// Whether node @p a is fully damaged in the committed state.
+    bool
+    committed_broken(const unsigned int a) const
+    {
+      return committed_damage[a] >= 1;
+    }
+
+    /// The number of nodes of the zone's block (in the zone or not).
+    unsigned int
+    n_block_nodes() const
+    {
+      return zone.size();
+    }
+
     /// The trial histories (largest equivalent separations) of the zone's
     /// nodes, in the order of the nodes.
     std::vector<double>

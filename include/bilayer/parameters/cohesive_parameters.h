@@ -43,6 +43,10 @@ namespace bilayer
     unsigned int steps              = 100;
     double       damage_tolerance   = 1e-6;
     unsigned int maximum_iterations = 200;
+    /// Whether a step starts from the Newton method on the interface
+    /// (Cohesive/Method = newton) or the secant iteration runs alone
+    /// (secant).
+    bool newton = true;
 
     bool
     active() const

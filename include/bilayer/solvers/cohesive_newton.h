@@ -1,0 +1,156 @@
+#ifndef bilayer_cohesive_newton_h
+#define bilayer_cohesive_newton_h
+
+#include <deal.II/lac/block_vector.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <bilayer/interface/cohesive_zone.h>
+#include <bilayer/solvers/subdomain_solves.h>
+
+#include <string>
+#include <vector>
+
+namespace bilayer
+{
+  /**
+   * The semismooth Newton method of a cohesive step on the interface alone
+   * (docs/cohesive.md, "The Newton method"). The jumps are affine in the
+   * multipliers and the load factor, g = lambda d - A mu (proportional
+   * loads; g = g0 - A mu at a prescribed load factor), with A the jumps of
+   * the homogeneous solves with unit multipliers: a dense matrix over the
+   * components that carry a multiplier, built once from the subproblems'
+   * factorisations (one solve per column; on Sigma, two dense triangular
+   * solves per subproblem). The step's equations are then a small dense
+   * system in (mu, lambda):
+   *  - a glued component: g = 0;
+   *  - a contact component: min(mu, -k0 g) = 0 (mu >= 0, g <= 0, mu g = 0);
+   *  - a node of the zone: mu_t = k g_t, and min(mu_n - k g_n, -k0 g_n) =
+   *    0 (a spring in tension, exact contact under pressure), with the
+   *    secant stiffness k = k0 (1 - d) of the damage d that the separations
+   *    give (CohesiveZone::node_state(): irreversible, from the committed
+   *    state); the derivatives of k by central differences of the law;
+   *  - the step's control: the zone's dissipation equals the target
+   *    (dissipation control), the control node's equivalent separation its
+   *    committed history plus the increment (separation control), or the
+   *    load factor is given.
+   * Each Newton step solves the dense Jacobian by LU with partial pivoting
+   * (a softening tangent makes it indefinite, which the dual problem's
+   * active-set method cannot take) and backtracks on the residual's norm.
+   * The result is the first iterate of the step's secant iteration, which
+   * checks it with the outer solver: a state the Newton method got right
+   * settles in one solve.
+   *
+   * Scenes it does not take (Coulomb or Tresca friction: the secant
+   * iteration with the outer solver does) report why in unsupported().
+   */
+  class CohesiveNewton
+  {
+  public:
+    /// The step's control (CohesiveControl, resolved for the step).
+    enum class Control
+    {
+      load_factor,
+      separation,
+      dissipation
+    };
+
+    /// Why @p interface's multipliers cannot be solved by this method
+    /// (@p frictional: the scene's crack faces have friction), or an empty
+    /// string.
+    static std::string
+    unsupported(const Interface &interface, const bool frictional);
+
+    /**
+     * The matrix A of the components of @p interface that carry a
+     * multiplier or lie in @p zone: one homogeneous solve of
+     * @p subproblems per component.
+     */
+    CohesiveNewton(const Subproblems  &subproblems,
+                   const Interface    &interface,
+                   const CohesiveZone &zone);
+
+    /// The number of unknown multiplier components (the size of A).
+    unsigned int
+    size() const
+    {
+      return unknowns.size();
+    }
+
+    /// The homogeneous solves spent on A.
+    unsigned int
+    subdomain_solves() const
+    {
+      return n_solves;
+    }
+
+    /// A step's data.
+    struct Step
+    {
+      Control control = Control::load_factor;
+      /// Dissipation control: the zone's dissipation wanted; separation
+      /// control: the growth of the control node's history.
+      double target = 0;
+      /// Separation control: the control node (as CohesiveZone's).
+      int control_node = -1;
+    };
+
+    /// What a Newton solve gives.
+    struct Result
+    {
+      bool         converged  = false;
+      unsigned int iterations = 0;
+      /// The largest residual of the last iterate (traction units; the
+      /// control's row relative to its target).
+      double residual = 0;
+      /// The multipliers (every component), the load factor and the
+      /// separations of the zone's nodes at the solution.
+      dealii::BlockVector<double>           mu;
+      double                                lambda = 0;
+      std::vector<CohesiveZone::Separation> delta;
+    };
+
+    /**
+     * Newton's method for the step @p step from the multipliers @p mu0 and
+     * load factor @p lambda0, with @p g0 the jumps (every component) of the
+     * solutions without multipliers at @p lambda0, and the zone's committed
+     * state. At most @p max_iterations Newton steps; converged where the
+     * largest residual falls below @p tolerance times the scale of the
+     * multipliers.
+     */
+    Result
+    solve(const CohesiveZone                &zone,
+          const dealii::BlockVector<double> &g0,
+          const dealii::BlockVector<double> &mu0,
+          const double                       lambda0,
+          const Step                        &step,
+          const unsigned int                 max_iterations,
+          const double                       tolerance) const;
+
+  private:
+    /// The role of an unknown component.
+    enum class Role
+    {
+      glued,
+      contact,
+      zone_tangential,
+      zone_normal
+    };
+
+    /// The unknowns' global indices in the multiplier vector, their roles
+    /// and, for the zone's, their node.
+    std::vector<unsigned int> unknowns;
+    std::vector<Role>         roles;
+    std::vector<unsigned int> nodes;
+    /// Per node of the zone's block: the positions of its tangential and
+    /// normal components among the unknowns (-1 off the zone).
+    std::vector<std::array<int, 2>> node_unknowns;
+    /// The jumps of the unknown components for unit multipliers:
+    /// g = g0 - A mu.
+    dealii::FullMatrix<double> A;
+    unsigned int               n_solves = 0;
+
+    class Evaluation;
+  };
+} // namespace bilayer
+
+#endif
