@@ -8,7 +8,8 @@
 // complement S = K_SS - K_SI K_II^{-1} K_IS, and (K^{-1})_SS = S^{-1}. So,
 // for loads c on the Sigma dofs:
 //  1. solve_on_sigma(c) equals solve(c) on every Sigma dof, for the whole
-//     problem and the homogeneous one (relative difference < 1e-10);
+//     problem and the homogeneous one (relative difference < 1e-10), and
+//     so does solve_homogeneous_on_sigma() of several loads at once;
 //  2. S S^{-1} c = c: apply_schur_complement() of the homogeneous solution
 //     on Sigma gives back the condensed load (relative < 1e-10);
 //  3. S is symmetric: x.S y = y.S x (relative < 1e-12);
@@ -190,6 +191,28 @@ main()
       std::cout << "  solve_on_sigma = solve on Sigma (< 1e-10): "
                 << verdict(d_whole < 1e-10 && d_homogeneous < 1e-10)
                 << std::endl;
+      // Three loads at once (blocked, LAPACK's dpotrs) against the plain
+      // homogeneous solves of each.
+      {
+        std::vector<Vector<double>> loads(3, load), together;
+        loads[1] *= -2.;
+        for (const auto i : sigma)
+          loads[2](i) = uniform(random);
+        std::vector<const Vector<double> *> pointers;
+        for (const auto &l : loads)
+          pointers.push_back(&l);
+        condensed.solve_homogeneous_on_sigma(pointers, together);
+        double worst = 0;
+        for (unsigned int k = 0; k < loads.size(); ++k)
+          {
+            plain.solve_homogeneous(loads[k], whole);
+            worst =
+              std::max(worst, largest_difference_on(sigma, together[k], whole));
+          }
+        std::cout << "  several loads at once = solve on Sigma (< 1e-10): "
+                  << verdict(together.size() == 3 && worst < 1e-10)
+                  << std::endl;
+      }
       // The whole solves of the condensed subproblem (the forward
       // substitution on Sigma alone, solve_from_trailing()) against the
       // plain sparse ones, on every dof.

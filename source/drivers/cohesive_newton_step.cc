@@ -99,12 +99,15 @@ namespace bilayer
         default:
           break;
       }
+    Timer                        timer;
     const CohesiveNewton::Result result = cohesive_newton->solve(
       zone, g0, model.multipliers(), lambda, step, 100, 1e-8);
     if (scene.output.progress_interval > 0)
       pcout << "  Newton on the interface: " << result.iterations
-            << " iterations, residual " << std::setprecision(3)
-            << result.residual
+            << " iterations, residual " << three_digits(result.residual)
+            << ", " << three_digits(timer.wall_time()) << " s, "
+            << cohesive_newton->factorisations()
+            << " factorisations of the Jacobian so far"
             << (result.converged ? "" :
                                    " (not converged: the secant "
                                    "iteration goes on alone)")

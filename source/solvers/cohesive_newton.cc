@@ -2,6 +2,7 @@
 // (docs/cohesive.md, "The Newton method").
 
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/lapack_templates.h>
 
 #include <bilayer/core/layout.h>
 #include <bilayer/solvers/cohesive_newton.h>
@@ -71,53 +72,96 @@ namespace bilayer
 
     // The columns of A: the jumps of the homogeneous solves with a unit
     // multiplier.
+    // (In batches of 64 columns: the condensed subproblems solve each
+    // batch at once.)
     const unsigned int n = unknowns.size();
     A.reinit(n, n);
-    Solutions           w;
-    BlockVector<double> g;
-    for (unsigned int j = 0; j < n; ++j)
+    std::vector<BlockVector<double>> units;
+    std::vector<Solutions>           w;
+    BlockVector<double>              g;
+    for (unsigned int first = 0; first < n; first += 64)
       {
-        mu              = 0;
-        mu(unknowns[j]) = 1;
-        solve_homogeneous_subproblems(subproblems, interface, mu, w);
-        interface.jumps(w, g, true);
-        for (unsigned int r = 0; r < n; ++r)
-          A(r, j) = -g(unknowns[r]);
-        for (const auto *s : subproblems)
-          n_solves += s != nullptr;
+        const unsigned int last = std::min(n, first + 64);
+        units.assign(last - first, mu);
+        for (unsigned int j = first; j < last; ++j)
+          units[j - first](unknowns[j]) = 1;
+        solve_homogeneous_subproblems(subproblems, interface, units, w);
+        for (unsigned int j = first; j < last; ++j)
+          {
+            interface.jumps(w[j - first], g, true);
+            for (unsigned int r = 0; r < n; ++r)
+              A(r, j) = -g(unknowns[r]);
+            for (const auto *s : subproblems)
+              n_solves += s != nullptr;
+          }
+      }
+  }
+
+
+  void
+  CohesiveNewton::multiply(const Vector<double> &x, Vector<double> &y) const
+  {
+    // (A is stored by rows: the column-major A^T of the BLAS.)
+    const types::blas_int n = size(), one = 1;
+    const double          unit = 1, zero = 0;
+    y.reinit(size());
+    if (n > 0)
+      gemv("T",
+           &n,
+           &n,
+           &unit,
+           &A(0, 0),
+           &n,
+           x.begin(),
+           &one,
+           &zero,
+           y.begin(),
+           &one);
+  }
+
+
+  void
+  CohesiveNewton::materialise(const unsigned int    r,
+                              const Row            &row,
+                              const Vector<double> &g_fixed,
+                              Vector<double>       &values) const
+  {
+    const unsigned int n = size();
+    values.reinit(n + (g_fixed.size() > 0 ? 1 : 0));
+    values(r) += row.unit;
+    for (unsigned int k = 0; k < row.n_terms; ++k)
+      {
+        const double f = row.factor[k];
+        const auto  *a = &A(row.q[k], 0);
+        for (unsigned int j = 0; j < n; ++j)
+          values(j) -= f * a[j];
+        if (g_fixed.size() > 0)
+          values(n) += f * g_fixed(row.q[k]);
       }
   }
 
 
   /**
-   * The residual and Jacobian of the step's equations at an iterate
-   * (mu, lambda): the unknowns' rows scaled by the scale of the
-   * multipliers, the control's row by its target.
+   * The residual and the rows of the Jacobian of the step's equations at an
+   * iterate (mu, lambda): the unknowns' rows scaled by the kept scale of
+   * the multipliers, the control's row by its target.
    */
   class CohesiveNewton::Evaluation
   {
   public:
-    Evaluation(const CohesiveNewton              &newton,
-               const CohesiveZone                &zone,
-               const dealii::BlockVector<double> &g0,
-               const double                       lambda0,
-               const Step                        &step,
-               const double                       scale)
+    Evaluation(const CohesiveNewton &newton,
+               const CohesiveZone   &zone,
+               const Vector<double> &g_fixed,
+               const Step           &step,
+               const double          scale)
       : newton(newton)
       , zone(zone)
       , step(step)
       , path(step.control != Control::load_factor)
       , k0(zone.initial_stiffness())
       , scale(scale)
-    {
-      const unsigned int n = newton.size();
-      g_fixed.reinit(n);
-      for (unsigned int r = 0; r < n; ++r)
-        g_fixed(r) = g0(newton.unknowns[r]);
-      // (Proportional loads: the jumps without multipliers are lambda d.)
-      if (path)
-        g_fixed /= lambda0;
-    }
+      , g_fixed(g_fixed)
+    {}
 
     /// The number of unknowns: the multipliers, and the load factor
     /// under path following.
@@ -127,31 +171,60 @@ namespace bilayer
       return newton.size() + (path ? 1 : 0);
     }
 
-    /// The residual at x (the multipliers, then the load factor).
-    Vector<double>
-    residual(const Vector<double> &x, const double lambda_fixed)
+    /// The residual at x (the multipliers, then the load factor); with
+    /// @p linear the rows of the Jacobian too. With @p given, A mu is that
+    /// (the line search's iterates: A mu - t A dmu), else it is computed.
+    const Vector<double> &
+    evaluate(const Vector<double> &x,
+             const bool            linear,
+             const Vector<double> *given = nullptr)
     {
-      evaluate(x, lambda_fixed, false);
+      const unsigned int n = newton.size();
+      Vector<double>     mu(n);
+      for (unsigned int r = 0; r < n; ++r)
+        mu(r) = x(r);
+      if (given != nullptr)
+        Amu = *given;
+      else
+        newton.multiply(mu, Amu);
+      g = g_fixed;
+      if (path)
+        g *= x(n);
+      g -= Amu;
+      R.reinit(size());
+      rows.assign(n, Row());
+      for (unsigned int r = 0; r < n; ++r)
+        row(r, mu);
+      if (path)
+        control_row(linear);
       return R;
     }
 
-    /// The residual and the Jacobian at x.
-    void
-    linearise(const Vector<double> &x,
-              const double          lambda_fixed,
-              Vector<double>       &r,
-              FullMatrix<double>   &J)
-    {
-      evaluate(x, lambda_fixed, true);
-      r = R;
-      J = jacobian;
-    }
-
-    /// The jumps of the unknowns at the last evaluation.
+    /// The jumps of the unknowns at the last evaluation, and A mu there.
     const Vector<double> &
     jumps() const
     {
       return g;
+    }
+    const Vector<double> &
+    products() const
+    {
+      return Amu;
+    }
+
+    /// The rows of the Jacobian at the last evaluation.
+    const std::vector<Row> &
+    jacobian_rows() const
+    {
+      return rows;
+    }
+
+    /// The control's row of the Jacobian (dense; empty without path
+    /// following).
+    const Vector<double> &
+    jacobian_control_row() const
+    {
+      return control;
     }
 
   private:
@@ -162,8 +235,9 @@ namespace bilayer
     const double          k0, scale;
     /// The jumps without multipliers (per unit load factor under path
     /// following).
-    Vector<double>     g_fixed, g, R;
-    FullMatrix<double> jacobian;
+    const Vector<double> &g_fixed;
+    Vector<double>        g, R, control, Amu;
+    std::vector<Row>      rows;
 
     /// The separation (normal, tangential) of the jumps (gn, gt).
     static CohesiveZone::Separation
@@ -215,72 +289,57 @@ namespace bilayer
                (f(gn, gt + h, loading) - f(gn, gt - h, loading)) / (2 * h)}};
     }
 
-    /// Row r of the Jacobian += factor times the derivative of g_q.
-    void
-    add_jump_derivative(const unsigned int r,
-                        const unsigned int q,
-                        const double       factor)
+    /// Whether min(a, b) of row r takes its first argument: a <= b, or
+    /// at a tie (within 1e-9 of the scale: a far node's traction at
+    /// round-off, whose sign is noise) the branch of the kept Jacobian's
+    /// row (both are derivatives of the min there), so that the row stays
+    /// the kept one.
+    bool
+    first_branch(const unsigned int r, const double a, const double b) const
     {
-      const unsigned int n = newton.size();
-      for (unsigned int j = 0; j < n; ++j)
-        jacobian(r, j) -= factor * newton.A(q, j);
-      if (path)
-        jacobian(r, n) += factor * g_fixed(q);
+      if (std::abs(a - b) <= 1e-9 * scale && r < newton.kept.rows.size())
+        return newton.kept.rows[r].unit != 0;
+      return a <= b;
+    }
+
+    /// Adds factor times the derivative of g_q to row r.
+    void
+    add_term(const unsigned int r, const unsigned int q, const double factor)
+    {
+      Row &row                  = rows[r];
+      row.q[row.n_terms]        = q;
+      row.factor[row.n_terms++] = factor;
     }
 
     void
-    evaluate(const Vector<double> &x, const double lambda_fixed, bool linear)
-    {
-      const unsigned int n      = newton.size();
-      const double       lambda = path ? x(n) : lambda_fixed;
-      Vector<double>     mu(n), Amu(n);
-      for (unsigned int r = 0; r < n; ++r)
-        mu(r) = x(r);
-      newton.A.vmult(Amu, mu);
-      g = g_fixed;
-      g *= path ? lambda : 1.;
-      g -= Amu;
-      R.reinit(size());
-      if (linear)
-        jacobian.reinit(size(), size());
-      for (unsigned int r = 0; r < n; ++r)
-        row(r, mu, linear);
-      if (path)
-        control_row(linear);
-    }
-
-    void
-    row(const unsigned int r, const Vector<double> &mu, const bool linear)
+    row(const unsigned int r, const Vector<double> &mu)
     {
       switch (newton.roles[r])
         {
           case Role::glued:
             R(r) = k0 * g(r) / scale;
-            if (linear)
-              add_jump_derivative(r, r, k0 / scale);
+            add_term(r, r, k0 / scale);
             return;
           case Role::contact:
-            if (mu(r) <= -k0 * g(r))
+            if (first_branch(r, mu(r), -k0 * g(r)))
               {
-                R(r) = mu(r) / scale;
-                if (linear)
-                  jacobian(r, r) += 1 / scale;
+                R(r)         = mu(r) / scale;
+                rows[r].unit = 1 / scale;
               }
             else
               {
                 R(r) = -k0 * g(r) / scale;
-                if (linear)
-                  add_jump_derivative(r, r, -k0 / scale);
+                add_term(r, r, -k0 / scale);
               }
             return;
           default:
-            zone_row(r, mu, linear);
+            zone_row(r, mu);
         }
     }
 
     /// A row of a zone's node: mu_t - k g_t, or min(mu_n - k g_n, -k0 g_n).
     void
-    zone_row(const unsigned int r, const Vector<double> &mu, const bool linear)
+    zone_row(const unsigned int r, const Vector<double> &mu)
     {
       const unsigned int a  = newton.nodes[r];
       const unsigned int rt = newton.node_unknowns[a][Layout::tangential];
@@ -288,16 +347,13 @@ namespace bilayer
       const double       gn = g(rn), gt = g(rt);
       const double       k = stiffness(a, gn, gt);
       const double       y = mu(r) - k * g(r);
-      if (newton.roles[r] == Role::zone_normal && !(y <= -k0 * gn))
+      if (newton.roles[r] == Role::zone_normal && !first_branch(r, y, -k0 * gn))
         {
           R(r) = -k0 * gn / scale;
-          if (linear)
-            add_jump_derivative(r, rn, -k0 / scale);
+          add_term(r, rn, -k0 / scale);
           return;
         }
-      R(r) = y / scale;
-      if (!linear)
-        return;
+      R(r)          = y / scale;
       const auto dk = gradient(
         [&](const double n, const double t, const bool loading) {
           return stiffness(a, n, t, loading);
@@ -305,10 +361,15 @@ namespace bilayer
         a,
         gn,
         gt);
-      jacobian(r, r) += 1 / scale;
-      add_jump_derivative(r, r, -k / scale);
-      add_jump_derivative(r, rn, -g(r) * dk[0] / scale);
-      add_jump_derivative(r, rt, -g(r) * dk[1] / scale);
+      rows[r].unit = 1 / scale;
+      add_term(r, r, -k / scale);
+      // (Zero terms left out: an intact or unloading node's row stays the
+      // one kept.)
+      if (dk[0] != 0 || dk[1] != 0)
+        {
+          add_term(r, rn, -g(r) * dk[0] / scale);
+          add_term(r, rt, -g(r) * dk[1] / scale);
+        }
     }
 
     /// The control's row: the dissipation less its target, or the control
@@ -319,8 +380,11 @@ namespace bilayer
     {
       const unsigned int n      = newton.size();
       double             value  = 0;
-      double             target = step.target;
-      const auto         node   = [&](const unsigned int a) {
+      const double       target = step.target;
+      if (linear)
+        control.reinit(n + 1);
+      Vector<double> values;
+      const auto     node = [&](const unsigned int a) {
         const int rt = newton.node_unknowns[a][Layout::tangential];
         const int rn = newton.node_unknowns[a][Layout::normal];
         if (rt < 0 || rn < 0)
@@ -336,8 +400,15 @@ namespace bilayer
           a,
           gn,
           gt);
-        add_jump_derivative(n, rn, d[0] / target);
-        add_jump_derivative(n, rt, d[1] / target);
+        if (d[0] == 0 && d[1] == 0)
+          return;
+        Row row;
+        row.n_terms = 2;
+        row.q       = {
+                {static_cast<unsigned int>(rn), static_cast<unsigned int>(rt), 0}};
+        row.factor = {{d[0] / target, d[1] / target, 0.}};
+        newton.materialise(n, row, g_fixed, values);
+        control += values;
       };
       if (step.control == Control::dissipation)
         for (unsigned int a = 0; a < newton.node_unknowns.size(); ++a)
@@ -352,6 +423,163 @@ namespace bilayer
   };
 
 
+  Vector<double>
+  CohesiveNewton::direction(const std::vector<Row> &rows,
+                            const Vector<double>   &control_row,
+                            const Vector<double>   &r) const
+  {
+    const unsigned int    n     = size();
+    const unsigned int    total = r.size();
+    const bool            path  = total > n;
+    const Vector<double>  no_load;
+    const Vector<double> &load = path ? g_unit : no_load;
+    // The rows that differ from the kept Jacobian's.
+    std::vector<unsigned int> differ;
+    if (kept.lu)
+      {
+        for (unsigned int k = 0; k < n; ++k)
+          if (!(rows[k] == kept.rows[k]))
+            differ.push_back(k);
+        if (path)
+          differ.push_back(n);
+      }
+    if (!kept.lu || differ.size() > std::max(40u, total / 8))
+      {
+        // A new factorisation of the Jacobian.
+        // (Factorised in place: a copy of a LAPACKFullMatrix is no
+        // factorisation.)
+        kept.lu = std::make_unique<LAPACKFullMatrix<double>>(total);
+        LAPACKFullMatrix<double> &J = *kept.lu;
+        Vector<double>            values;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            materialise(k, rows[k], load, values);
+            for (unsigned int j = 0; j < total; ++j)
+              J(k, j) = values(j);
+          }
+        if (path)
+          for (unsigned int j = 0; j < total; ++j)
+            J(n, j) = control_row(j);
+        J.compute_lu_factorization();
+        kept.rows        = rows;
+        kept.control_row = control_row;
+        kept.columns.clear();
+        ++kept.factorisations;
+        differ.clear();
+      }
+    Vector<double> y = r;
+    kept.lu->solve(y);
+    if (differ.empty())
+      return y;
+    // Sherman-Morrison-Woodbury: J = J_kept + P^T D with P the rows that
+    // differ, D their differences: J^{-1} r = y - W (I + D W)^{-1} D y,
+    // W = J_kept^{-1} P^T (columns kept while the factorisation is).
+    std::vector<unsigned int> missing;
+    for (const unsigned int k : differ)
+      if (kept.columns.find(k) == kept.columns.end())
+        missing.push_back(k);
+    if (!missing.empty())
+      {
+        LAPACKFullMatrix<double> units(total, missing.size());
+        for (unsigned int c = 0; c < missing.size(); ++c)
+          units(missing[c], c) = 1;
+        kept.lu->solve(units);
+        for (unsigned int c = 0; c < missing.size(); ++c)
+          {
+            Vector<double> &column = kept.columns[missing[c]];
+            column.reinit(total);
+            for (unsigned int j = 0; j < total; ++j)
+              column(j) = units(j, c);
+          }
+      }
+    const unsigned int          m = differ.size();
+    std::vector<Vector<double>> D(m);
+    Vector<double>              now, before;
+    for (unsigned int a = 0; a < m; ++a)
+      {
+        const unsigned int k = differ[a];
+        if (k == n)
+          {
+            D[a] = control_row;
+            D[a] -= kept.control_row;
+            continue;
+          }
+        materialise(k, rows[k], load, now);
+        materialise(k, kept.rows[k], load, before);
+        D[a] = now;
+        D[a] -= before;
+      }
+    // C = I + D W (BLAS 3: D by rows is the column-major D^T).
+    std::vector<double> Dt(std::size_t(total) * m), W(Dt.size()),
+      DW(std::size_t(m) * m);
+    Vector<double> Dy(m);
+    for (unsigned int a = 0; a < m; ++a)
+      {
+        Dy(a) = D[a] * y;
+        std::copy(D[a].begin(),
+                  D[a].end(),
+                  Dt.begin() + std::size_t(a) * total);
+        const Vector<double> &w = kept.columns[differ[a]];
+        std::copy(w.begin(), w.end(), W.begin() + std::size_t(a) * total);
+      }
+    {
+      const types::blas_int mm = m, nn = total;
+      const double          unit = 1, zero = 0;
+      gemm("T",
+           "N",
+           &mm,
+           &mm,
+           &nn,
+           &unit,
+           Dt.data(),
+           &nn,
+           W.data(),
+           &nn,
+           &zero,
+           DW.data(),
+           &mm);
+    }
+    LAPACKFullMatrix<double> C(m);
+    for (unsigned int a = 0; a < m; ++a)
+      for (unsigned int b = 0; b < m; ++b)
+        C(a, b) = (a == b ? 1. : 0.) + DW[std::size_t(b) * m + a];
+    C.compute_lu_factorization();
+    C.solve(Dy);
+    for (unsigned int b = 0; b < m; ++b)
+      y.add(-Dy(b), kept.columns[differ[b]]);
+    return y;
+  }
+
+
+  void
+  CohesiveNewton::predict(const CohesiveZone &zone,
+                          const Step         &step,
+                          Evaluation         &equations,
+                          Vector<double>     &x) const
+  {
+    const double increment = step.control == Control::dissipation ?
+                               step.target - zone.committed_dissipation() :
+                               step.target;
+    // (A step taken again with a smaller increment starts where it did.)
+    if (kept.start.size() != x.size() || kept.start != x)
+      {
+        kept.start_before     = kept.start;
+        kept.increment_before = kept.increment;
+        kept.start            = x;
+      }
+    kept.increment = increment;
+    if (kept.start_before.size() != x.size() || !(kept.increment_before > 0))
+      return;
+    // The last step's solution extrapolated by this step's increment.
+    const double   ratio = increment / kept.increment_before;
+    Vector<double> guess = x;
+    guess.add(ratio, x, -ratio, kept.start_before);
+    const double at_guess = equations.evaluate(guess, false).norm_sqr();
+    if (at_guess < equations.evaluate(x, false).norm_sqr())
+      x = guess;
+  }
+
+
   CohesiveNewton::Result
   CohesiveNewton::solve(const CohesiveZone        &zone,
                         const BlockVector<double> &g0,
@@ -364,25 +592,48 @@ namespace bilayer
     const unsigned int n    = size();
     const bool         path = step.control != Control::load_factor;
     Result             result;
-    double             scale = 0;
+    double             largest = 0;
     for (unsigned int r = 0; r < n; ++r)
-      scale = std::max(scale, std::abs(mu0(unknowns[r])));
-    if (!(scale > 0) || !(lambda0 != 0) || (path && !(step.target > 0)) ||
+      largest = std::max(largest, std::abs(mu0(unknowns[r])));
+    if (!(largest > 0) || !(lambda0 != 0) || (path && !(step.target > 0)) ||
         (step.control == Control::separation && step.control_node < 0))
       return result;
-    Evaluation     equations(*this, zone, g0, lambda0, step, scale);
-    Vector<double> x(equations.size()), r, dx;
+    // (The rows' scale is kept with the factorisation: a row that does not
+    // change keeps its bits.)
+    if (!(kept.row_scale > 0))
+      kept.row_scale = largest;
+    Vector<double> &g_fixed = g_unit;
+    g_fixed.reinit(n);
+    for (unsigned int r = 0; r < n; ++r)
+      g_fixed(r) = g0(unknowns[r]) / (path ? lambda0 : 1.);
+    Evaluation     equations(*this, zone, g_fixed, step, kept.row_scale);
+    Vector<double> x(equations.size());
     for (unsigned int k = 0; k < n; ++k)
       x(k) = mu0(unknowns[k]);
     if (path)
-      x(n) = lambda0;
-    FullMatrix<double>       J;
-    LAPACKFullMatrix<double> lu;
-    unsigned int             non_monotone = 0;
+      {
+        x(n) = lambda0;
+        predict(zone, step, equations, x);
+      }
+    unsigned int   non_monotone = 0;
+    Vector<double> Ax, Adx(n), dmu(n);
     for (result.iterations = 0;; ++result.iterations)
       {
-        equations.linearise(x, lambda0, r, J);
-        result.residual = r.linfty_norm();
+        // (A mu carried along the steps, computed afresh every tenth.)
+        const Vector<double> r =
+          equations.evaluate(x,
+                             true,
+                             result.iterations % 10 == 0 ? nullptr : &Ax);
+        Ax = equations.products();
+        // (Relative to the present multipliers' scale.)
+        double now = 0;
+        for (unsigned int k = 0; k < n; ++k)
+          now = std::max(now, std::abs(x(k)));
+        result.residual = 0;
+        for (unsigned int k = 0; k < r.size(); ++k)
+          result.residual =
+            std::max(result.residual,
+                     std::abs(r(k)) * (k < n ? kept.row_scale / now : 1.));
         if (!std::isfinite(result.residual))
           return result;
         if (result.residual <= tolerance)
@@ -392,35 +643,46 @@ namespace bilayer
           }
         if (result.iterations >= max_iterations)
           return result;
-        lu.reinit(J.m());
-        lu = J;
-        dx = r;
+        Vector<double> dx;
         try
           {
-            lu.compute_lu_factorization();
-            lu.solve(dx);
+            dx = direction(equations.jacobian_rows(),
+                           equations.jacobian_control_row(),
+                           r);
           }
         catch (const ExceptionBase &)
           {
             // (A singular Jacobian: the secant iteration goes on alone.)
+            kept.lu.reset();
             return result;
           }
         if (!std::isfinite(dx.linfty_norm()))
-          return result;
+          {
+            kept.lu.reset();
+            return result;
+          }
         // Backtracking on |R|^2: the best of the halved steps where none
         // decreases it enough.
-        const double   merit = r.norm_sqr();
-        double         best  = std::numeric_limits<double>::infinity();
-        Vector<double> best_x;
+        // (A is linear: A (mu - t dmu) = A mu - t A dmu, one product.)
+        for (unsigned int k = 0; k < n; ++k)
+          dmu(k) = dx(k);
+        multiply(dmu, Adx);
+        const double   merit       = r.norm_sqr();
+        double         best        = std::numeric_limits<double>::infinity();
+        double         best_length = 1;
+        Vector<double> trial, Atrial;
         for (double length = 1; length > 1e-3; length /= 2)
           {
-            Vector<double> trial = x;
+            trial = x;
             trial.add(-length, dx);
-            const double m = equations.residual(trial, lambda0).norm_sqr();
+            Atrial = Ax;
+            Atrial.add(-length, Adx);
+            const double m =
+              equations.evaluate(trial, false, &Atrial).norm_sqr();
             if (m < best)
               {
-                best   = m;
-                best_x = trial;
+                best        = m;
+                best_length = length;
               }
             if (m <= (1 - 1e-4 * length) * merit)
               break;
@@ -431,15 +693,15 @@ namespace bilayer
           {
             if (++non_monotone > 5)
               return result;
-            x.add(-1., dx);
-            continue;
+            best_length = 1;
           }
-        x = best_x;
+        x.add(-best_length, dx);
+        Ax.add(-best_length, Adx);
       }
     // The state of the solution: every component's multiplier, the zone's
     // separations.
     result.lambda = path ? x(n) : lambda0;
-    equations.residual(x, lambda0);
+    equations.evaluate(x, false);
     const Vector<double> &g = equations.jumps();
     // (An open contact component, and a broken node's open or sliding
     // one, carry no multiplier: exactly zero, as the outer solver's

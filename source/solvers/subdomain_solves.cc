@@ -88,4 +88,40 @@ namespace bilayer
   {
     solve_all(subproblems, interface, multipliers, solutions, true, false);
   }
+
+
+  void
+  solve_homogeneous_subproblems(
+    const Subproblems                      &subproblems,
+    const Interface                        &interface,
+    const std::vector<BlockVector<double>> &multipliers,
+    std::vector<Solutions>                 &solutions)
+  {
+    const unsigned int     m = multipliers.size();
+    std::vector<Solutions> loads(m);
+    for (unsigned int c = 0; c < m; ++c)
+      interface.apply(multipliers[c], loads[c]);
+    solutions.assign(m, Solutions(subproblems.size()));
+    Tasks tasks;
+    for (const unsigned int s : Layout::indices(subproblems.size()))
+      if (subproblems[s] != nullptr && subproblems[s]->owned())
+        tasks.add([&, s]() {
+          if (subproblems[s]->condensed())
+            {
+              std::vector<const Vector<double> *> couplings(m);
+              for (unsigned int c = 0; c < m; ++c)
+                couplings[c] = &loads[c][s];
+              std::vector<Vector<double>> results;
+              subproblems[s]->solve_homogeneous_on_sigma(couplings, results);
+              for (unsigned int c = 0; c < m; ++c)
+                solutions[c][s].swap(results[c]);
+            }
+          else
+            for (unsigned int c = 0; c < m; ++c)
+              subproblems[s]->solve_homogeneous(loads[c][s], solutions[c][s]);
+        });
+    tasks.join_all();
+    for (Solutions &w : solutions)
+      share_traces(subproblems, w);
+  }
 } // namespace bilayer

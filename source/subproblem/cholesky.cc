@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/lapack_templates.h>
 
 #include <bilayer/core/huge_pages.h>
 #include <bilayer/subproblem/cholesky.h>
@@ -434,6 +435,23 @@ namespace bilayer
           sum -= column[i] * x[i];
         x[j] = sum / column[j];
       }
+  }
+
+
+  void
+  SchurComplementFactor::solve_many(std::vector<double> &X,
+                                    const unsigned int   n_columns) const
+  {
+    AssertDimension(X.size(), std::size_t(size()) * n_columns);
+    if (n_columns == 0 || size() == 0)
+      return;
+    const types::blas_int n = size(), m = n_columns;
+    types::blas_int       info = 0;
+    potrs("L", &n, &m, factor.data(), &n, X.data(), &n, &info);
+    AssertThrow(info == 0,
+                ExcMessage("SchurComplementFactor::solve_many: dpotrs "
+                           "returned " +
+                           std::to_string(info)));
   }
 
 

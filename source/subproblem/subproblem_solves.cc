@@ -34,6 +34,34 @@ namespace bilayer
   }
 
 
+  void
+  ElasticSubproblem::solve_homogeneous_on_sigma(
+    const std::vector<const Vector<double> *> &couplings,
+    std::vector<Vector<double>>               &solutions) const
+  {
+    Assert(condensed(), ExcInternalError());
+    const std::size_t   n = n_schur_dofs(), m = couplings.size();
+    std::vector<double> Y(n * m);
+    for (std::size_t c = 0; c < m; ++c)
+      {
+        const std::vector<double> y = condensed_load(*couplings[c]);
+        std::copy(y.begin(), y.end(), Y.begin() + c * n);
+      }
+    factorisation.schur_complement()->solve_many(Y, m);
+    solutions.resize(m);
+    for (std::size_t c = 0; c < m; ++c)
+      {
+        const double *y = Y.data() + c * n;
+        solutions[c].reinit(n_dofs());
+        for (const auto &[i, a] : sigma_positions)
+          solutions[c](i) += y[a];
+        for (const auto &dof : constrained_sigma_dofs)
+          for (const auto &[a, weight] : dof.entries)
+            solutions[c](dof.dof) += weight * y[a];
+      }
+  }
+
+
   std::vector<double>
   ElasticSubproblem::condensed_load(const Vector<double> &coupling) const
   {

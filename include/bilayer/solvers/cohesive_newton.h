@@ -3,10 +3,14 @@
 
 #include <deal.II/lac/block_vector.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <bilayer/interface/cohesive_zone.h>
 #include <bilayer/solvers/subdomain_solves.h>
 
+#include <array>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,9 +37,17 @@ namespace bilayer
    *    (dissipation control), the control node's equivalent separation its
    *    committed history plus the increment (separation control), or the
    *    load factor is given.
-   * Each Newton step solves the dense Jacobian by LU with partial pivoting
-   * (a softening tangent makes it indefinite, which the dual problem's
-   * active-set method cannot take) and backtracks on the residual's norm.
+   * Each Newton step solves the dense Jacobian (a softening tangent makes
+   * it indefinite, which the dual problem's active-set method cannot take)
+   * and backtracks on the residual's norm. Most rows never change (glued
+   * components, intact nodes, open contact): the LU factorisation (partial
+   * pivoting) of one Jacobian is kept, across steps, and a Newton step
+   * solves with it and the Sherman-Morrison-Woodbury formula for the rows
+   * that differ from it (the process zone's, the control's, contact that
+   * changed); a new factorisation is made where more than max(40, n / 8)
+   * rows differ. The first iterate of a step under path following is the
+   * better (by the residual) of the last step's solution and its linear
+   * extrapolation from the step before.
    * The result is the first iterate of the step's secant iteration, which
    * checks it with the outer solver: a state the Newton method got right
    * settles in one solve.
@@ -81,6 +93,13 @@ namespace bilayer
     subdomain_solves() const
     {
       return n_solves;
+    }
+
+    /// The LU factorisations of the Jacobian made so far.
+    unsigned int
+    factorisations() const
+    {
+      return kept.factorisations;
     }
 
     /// A step's data.
@@ -136,6 +155,74 @@ namespace bilayer
       zone_normal
     };
 
+    /// A row of the Jacobian: unit e_r plus factor_k times the derivative
+    /// of the jump g_{q_k} (the row of -A and the load factor's column).
+    struct Row
+    {
+      double                      unit    = 0;
+      unsigned int                n_terms = 0;
+      std::array<unsigned int, 3> q{};
+      std::array<double, 3>       factor{};
+
+      bool
+      operator==(const Row &other) const
+      {
+        if (unit != other.unit || n_terms != other.n_terms)
+          return false;
+        for (unsigned int k = 0; k < n_terms; ++k)
+          if (q[k] != other.q[k] || factor[k] != other.factor[k])
+            return false;
+        return true;
+      }
+    };
+
+    /// What the Newton steps keep from one solve to the next: the scale of
+    /// the rows, the factorised Jacobian with its rows and control row, the
+    /// columns of its inverse asked so far, and the last two starts.
+    struct Kept
+    {
+      double                                            row_scale = 0;
+      std::vector<Row>                                  rows;
+      dealii::Vector<double>                            control_row;
+      std::unique_ptr<dealii::LAPACKFullMatrix<double>> lu;
+      std::map<unsigned int, dealii::Vector<double>>    columns;
+      dealii::Vector<double>                            start, start_before;
+      double       increment = 0, increment_before = 0;
+      unsigned int factorisations = 0;
+    };
+
+    /// The Newton direction J^{-1} r for the Jacobian of @p rows and
+    /// @p control_row (the kept factorisation and the rows that differ
+    /// from it, or a new one).
+    dealii::Vector<double>
+    direction(const std::vector<Row>       &rows,
+              const dealii::Vector<double> &control_row,
+              const dealii::Vector<double> &r) const;
+
+    class Evaluation;
+
+    /// The first iterate @p x of a step under path following: the start,
+    /// or its extrapolation from the start before (by the ratio of the
+    /// steps' increments), whichever has the smaller residual.
+    void
+    predict(const CohesiveZone     &zone,
+            const Step             &step,
+            Evaluation             &equations,
+            dealii::Vector<double> &x) const;
+
+    /// y = A x (BLAS).
+    void
+    multiply(const dealii::Vector<double> &x, dealii::Vector<double> &y) const;
+
+    /// Row @p r of the Jacobian of @p row (size() + 1 entries under path
+    /// following: @p g_fixed the jumps per unit load factor; size() with
+    /// an empty @p g_fixed).
+    void
+    materialise(const unsigned int            r,
+                const Row                    &row,
+                const dealii::Vector<double> &g_fixed,
+                dealii::Vector<double>       &values) const;
+
     /// The unknowns' global indices in the multiplier vector, their roles
     /// and, for the zone's, their node.
     std::vector<unsigned int> unknowns;
@@ -148,8 +235,9 @@ namespace bilayer
     /// g = g0 - A mu.
     dealii::FullMatrix<double> A;
     unsigned int               n_solves = 0;
-
-    class Evaluation;
+    /// The jumps per unit load factor of the last solve (path following).
+    mutable dealii::Vector<double> g_unit;
+    mutable Kept                   kept;
   };
 } // namespace bilayer
 

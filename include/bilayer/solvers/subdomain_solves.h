@@ -70,6 +70,16 @@ namespace bilayer
                                 const Interface                   &interface,
                                 const dealii::BlockVector<double> &multipliers,
                                 Solutions                         &solutions);
+
+  /// solve_homogeneous_subproblems() for each of @p multipliers: the
+  /// condensed subproblems solve all of them at once (blocked dense
+  /// triangular solves), the others one by one.
+  void
+  solve_homogeneous_subproblems(
+    const Subproblems                              &subproblems,
+    const Interface                                &interface,
+    const std::vector<dealii::BlockVector<double>> &multipliers,
+    std::vector<Solutions>                         &solutions);
 } // namespace bilayer
 
 #endif

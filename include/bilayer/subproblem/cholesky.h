@@ -41,6 +41,12 @@ namespace bilayer
     void
     solve(std::vector<double> &x) const;
 
+    /// X := S^{-1} X for the @p n_columns columns of X (column-major, each
+    /// of size()): LAPACK's dpotrs, blocked (BLAS 3) where solve() is a
+    /// plain loop: many right-hand sides at once.
+    void
+    solve_many(std::vector<double> &X, const unsigned int n_columns) const;
+
     /// x := L_T^{-1} x, the first of the two triangular solves of solve().
     void
     forward_solve(std::vector<double> &x) const;

@@ -131,6 +131,13 @@ namespace bilayer
      * other entries of @p solution are those of the solution without
      * coupling (or zero): not the solution there.
      */
+    /// solve_on_sigma() with @p homogeneous for the loads @p couplings at
+    /// once (SchurComplementFactor::solve_many()).
+    void
+    solve_homogeneous_on_sigma(
+      const std::vector<const dealii::Vector<double> *> &couplings,
+      std::vector<dealii::Vector<double>>               &solutions) const;
+
     void
     solve_on_sigma(const dealii::Vector<double> &coupling,
                    dealii::Vector<double>       &solution,
