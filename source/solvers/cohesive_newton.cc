@@ -98,49 +98,6 @@ namespace bilayer
   }
 
 
-  void
-  CohesiveNewton::multiply(const Vector<double> &x, Vector<double> &y) const
-  {
-    // (A is stored by rows: the column-major A^T of the BLAS.)
-    const types::blas_int n = size(), one = 1;
-    const double          unit = 1, zero = 0;
-    y.reinit(size());
-    if (n > 0)
-      gemv("T",
-           &n,
-           &n,
-           &unit,
-           &A(0, 0),
-           &n,
-           x.begin(),
-           &one,
-           &zero,
-           y.begin(),
-           &one);
-  }
-
-
-  void
-  CohesiveNewton::materialise(const unsigned int    r,
-                              const Row            &row,
-                              const Vector<double> &g_fixed,
-                              Vector<double>       &values) const
-  {
-    const unsigned int n = size();
-    values.reinit(n + (g_fixed.size() > 0 ? 1 : 0));
-    values(r) += row.unit;
-    for (unsigned int k = 0; k < row.n_terms; ++k)
-      {
-        const double f = row.factor[k];
-        const auto  *a = &A(row.q[k], 0);
-        for (unsigned int j = 0; j < n; ++j)
-          values(j) -= f * a[j];
-        if (g_fixed.size() > 0)
-          values(n) += f * g_fixed(row.q[k]);
-      }
-  }
-
-
   /**
    * The residual and the rows of the Jacobian of the step's equations at an
    * iterate (mu, lambda): the unknowns' rows scaled by the kept scale of
@@ -423,134 +380,6 @@ namespace bilayer
   };
 
 
-  Vector<double>
-  CohesiveNewton::direction(const std::vector<Row> &rows,
-                            const Vector<double>   &control_row,
-                            const Vector<double>   &r) const
-  {
-    const unsigned int    n     = size();
-    const unsigned int    total = r.size();
-    const bool            path  = total > n;
-    const Vector<double>  no_load;
-    const Vector<double> &load = path ? g_unit : no_load;
-    // The rows that differ from the kept Jacobian's.
-    std::vector<unsigned int> differ;
-    if (kept.lu)
-      {
-        for (unsigned int k = 0; k < n; ++k)
-          if (!(rows[k] == kept.rows[k]))
-            differ.push_back(k);
-        if (path)
-          differ.push_back(n);
-      }
-    if (!kept.lu || differ.size() > std::max(40u, total / 8))
-      {
-        // A new factorisation of the Jacobian.
-        // (Factorised in place: a copy of a LAPACKFullMatrix is no
-        // factorisation.)
-        kept.lu = std::make_unique<LAPACKFullMatrix<double>>(total);
-        LAPACKFullMatrix<double> &J = *kept.lu;
-        Vector<double>            values;
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            materialise(k, rows[k], load, values);
-            for (unsigned int j = 0; j < total; ++j)
-              J(k, j) = values(j);
-          }
-        if (path)
-          for (unsigned int j = 0; j < total; ++j)
-            J(n, j) = control_row(j);
-        J.compute_lu_factorization();
-        kept.rows        = rows;
-        kept.control_row = control_row;
-        kept.columns.clear();
-        ++kept.factorisations;
-        differ.clear();
-      }
-    Vector<double> y = r;
-    kept.lu->solve(y);
-    if (differ.empty())
-      return y;
-    // Sherman-Morrison-Woodbury: J = J_kept + P^T D with P the rows that
-    // differ, D their differences: J^{-1} r = y - W (I + D W)^{-1} D y,
-    // W = J_kept^{-1} P^T (columns kept while the factorisation is).
-    std::vector<unsigned int> missing;
-    for (const unsigned int k : differ)
-      if (kept.columns.find(k) == kept.columns.end())
-        missing.push_back(k);
-    if (!missing.empty())
-      {
-        LAPACKFullMatrix<double> units(total, missing.size());
-        for (unsigned int c = 0; c < missing.size(); ++c)
-          units(missing[c], c) = 1;
-        kept.lu->solve(units);
-        for (unsigned int c = 0; c < missing.size(); ++c)
-          {
-            Vector<double> &column = kept.columns[missing[c]];
-            column.reinit(total);
-            for (unsigned int j = 0; j < total; ++j)
-              column(j) = units(j, c);
-          }
-      }
-    const unsigned int          m = differ.size();
-    std::vector<Vector<double>> D(m);
-    Vector<double>              now, before;
-    for (unsigned int a = 0; a < m; ++a)
-      {
-        const unsigned int k = differ[a];
-        if (k == n)
-          {
-            D[a] = control_row;
-            D[a] -= kept.control_row;
-            continue;
-          }
-        materialise(k, rows[k], load, now);
-        materialise(k, kept.rows[k], load, before);
-        D[a] = now;
-        D[a] -= before;
-      }
-    // C = I + D W (BLAS 3: D by rows is the column-major D^T).
-    std::vector<double> Dt(std::size_t(total) * m), W(Dt.size()),
-      DW(std::size_t(m) * m);
-    Vector<double> Dy(m);
-    for (unsigned int a = 0; a < m; ++a)
-      {
-        Dy(a) = D[a] * y;
-        std::copy(D[a].begin(),
-                  D[a].end(),
-                  Dt.begin() + std::size_t(a) * total);
-        const Vector<double> &w = kept.columns[differ[a]];
-        std::copy(w.begin(), w.end(), W.begin() + std::size_t(a) * total);
-      }
-    {
-      const types::blas_int mm = m, nn = total;
-      const double          unit = 1, zero = 0;
-      gemm("T",
-           "N",
-           &mm,
-           &mm,
-           &nn,
-           &unit,
-           Dt.data(),
-           &nn,
-           W.data(),
-           &nn,
-           &zero,
-           DW.data(),
-           &mm);
-    }
-    LAPACKFullMatrix<double> C(m);
-    for (unsigned int a = 0; a < m; ++a)
-      for (unsigned int b = 0; b < m; ++b)
-        C(a, b) = (a == b ? 1. : 0.) + DW[std::size_t(b) * m + a];
-    C.compute_lu_factorization();
-    C.solve(Dy);
-    for (unsigned int b = 0; b < m; ++b)
-      y.add(-Dy(b), kept.columns[differ[b]]);
-    return y;
-  }
-
-
   void
   CohesiveNewton::predict(const CohesiveZone &zone,
                           const Step         &step,
@@ -577,6 +406,82 @@ namespace bilayer
     const double at_guess = equations.evaluate(guess, false).norm_sqr();
     if (at_guess < equations.evaluate(x, false).norm_sqr())
       x = guess;
+  }
+
+
+  double
+  CohesiveNewton::line_search(Evaluation           &equations,
+                              const Vector<double> &x,
+                              const Vector<double> &dx,
+                              const Vector<double> &Ax,
+                              const Vector<double> &r,
+                              Vector<double>       &Adx) const
+  {
+    const unsigned int n = size();
+    Vector<double>     dmu(n);
+    // Backtracking on |R|^2: the best of the halved steps where none
+    // decreases it enough.
+    // (A is linear: A (mu - t dmu) = A mu - t A dmu, one product.)
+    for (unsigned int k = 0; k < n; ++k)
+      dmu(k) = dx(k);
+    multiply(dmu, Adx);
+    const double   merit       = r.norm_sqr();
+    double         best        = std::numeric_limits<double>::infinity();
+    double         best_length = 1;
+    Vector<double> trial, Atrial;
+    for (double length = 1; length > 1e-3; length /= 2)
+      {
+        trial = x;
+        trial.add(-length, dx);
+        Atrial = Ax;
+        Atrial.add(-length, Adx);
+        const double m = equations.evaluate(trial, false, &Atrial).norm_sqr();
+        if (m < best)
+          {
+            best        = m;
+            best_length = length;
+          }
+        if (m <= (1 - 1e-4 * length) * merit)
+          break;
+      }
+    return best < merit ? best_length : 0.;
+  }
+
+
+  void
+  CohesiveNewton::solution_state(const CohesiveZone        &zone,
+                                 const Vector<double>      &g,
+                                 const Vector<double>      &x,
+                                 const BlockVector<double> &mu0,
+                                 Result                    &result) const
+  {
+    const unsigned int n = size();
+    // (An open contact component, and a broken node's open or sliding
+    // one, carry no multiplier: exactly zero, as the outer solver's
+    // bounds hold them, not the round-off of the solve.)
+    const double k0 = zone.initial_stiffness();
+    result.mu.reinit(mu0);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        bool zero = false;
+        if (roles[k] == Role::contact)
+          zero = x(k) <= -k0 * g(k);
+        else if (roles[k] != Role::glued)
+          {
+            const unsigned int a  = nodes[k];
+            const double       gn = g(node_unknowns[a][Layout::normal]);
+            const double       gt = g(node_unknowns[a][Layout::tangential]);
+            const bool broken = zone.node_state(a, {{-gn, -gt}}).damage >= 1;
+            zero =
+              broken && (roles[k] == Role::zone_tangential || x(k) <= -k0 * gn);
+          }
+        result.mu(unknowns[k]) = zero ? 0. : x(k);
+      }
+    result.delta.assign(zone.n_block_nodes(), {{0., 0.}});
+    for (unsigned int a = 0; a < node_unknowns.size(); ++a)
+      if (node_unknowns[a][0] >= 0)
+        result.delta[a] = {{-g(node_unknowns[a][Layout::normal]),
+                            -g(node_unknowns[a][Layout::tangential])}};
   }
 
 
@@ -616,7 +521,7 @@ namespace bilayer
         predict(zone, step, equations, x);
       }
     unsigned int   non_monotone = 0;
-    Vector<double> Ax, Adx(n), dmu(n);
+    Vector<double> Ax, Adx(n);
     for (result.iterations = 0;; ++result.iterations)
       {
         // (A mu carried along the steps, computed afresh every tenth.)
@@ -661,35 +566,10 @@ namespace bilayer
             kept.lu.reset();
             return result;
           }
-        // Backtracking on |R|^2: the best of the halved steps where none
-        // decreases it enough.
-        // (A is linear: A (mu - t dmu) = A mu - t A dmu, one product.)
-        for (unsigned int k = 0; k < n; ++k)
-          dmu(k) = dx(k);
-        multiply(dmu, Adx);
-        const double   merit       = r.norm_sqr();
-        double         best        = std::numeric_limits<double>::infinity();
-        double         best_length = 1;
-        Vector<double> trial, Atrial;
-        for (double length = 1; length > 1e-3; length /= 2)
-          {
-            trial = x;
-            trial.add(-length, dx);
-            Atrial = Ax;
-            Atrial.add(-length, Adx);
-            const double m =
-              equations.evaluate(trial, false, &Atrial).norm_sqr();
-            if (m < best)
-              {
-                best        = m;
-                best_length = length;
-              }
-            if (m <= (1 - 1e-4 * length) * merit)
-              break;
-          }
+        double best_length = line_search(equations, x, dx, Ax, r, Adx);
         // (No decrease along the direction: a kink of the law between the
         // iterate and the solution; the full step, a few times per solve.)
-        if (!(best < merit))
+        if (!(best_length > 0))
           {
             if (++non_monotone > 5)
               return result;
@@ -702,33 +582,7 @@ namespace bilayer
     // separations.
     result.lambda = path ? x(n) : lambda0;
     equations.evaluate(x, false);
-    const Vector<double> &g = equations.jumps();
-    // (An open contact component, and a broken node's open or sliding
-    // one, carry no multiplier: exactly zero, as the outer solver's
-    // bounds hold them, not the round-off of the solve.)
-    const double k0 = zone.initial_stiffness();
-    result.mu.reinit(mu0);
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        bool zero = false;
-        if (roles[k] == Role::contact)
-          zero = x(k) <= -k0 * g(k);
-        else if (roles[k] != Role::glued)
-          {
-            const unsigned int a  = nodes[k];
-            const double       gn = g(node_unknowns[a][Layout::normal]);
-            const double       gt = g(node_unknowns[a][Layout::tangential]);
-            const bool broken = zone.node_state(a, {{-gn, -gt}}).damage >= 1;
-            zero =
-              broken && (roles[k] == Role::zone_tangential || x(k) <= -k0 * gn);
-          }
-        result.mu(unknowns[k]) = zero ? 0. : x(k);
-      }
-    result.delta.assign(zone.n_block_nodes(), {{0., 0.}});
-    for (unsigned int a = 0; a < node_unknowns.size(); ++a)
-      if (node_unknowns[a][0] >= 0)
-        result.delta[a] = {{-g(node_unknowns[a][Layout::normal]),
-                            -g(node_unknowns[a][Layout::tangential])}};
+    solution_state(zone, equations.jumps(), x, mu0, result);
     return result;
   }
 } // namespace bilayer

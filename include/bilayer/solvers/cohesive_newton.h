@@ -210,6 +210,42 @@ namespace bilayer
             Evaluation             &equations,
             dealii::Vector<double> &x) const;
 
+    /// A new kept factorisation: the Jacobian of @p rows and
+    /// @p control_row (@p load: the jumps per unit load factor under path
+    /// following, else empty).
+    void
+    factorise(const std::vector<Row>       &rows,
+              const dealii::Vector<double> &control_row,
+              const dealii::Vector<double> &load) const;
+
+    /// The columns J_kept^{-1} e_k of the rows @p differ not kept yet.
+    void
+    add_columns(const std::vector<unsigned int> &differ) const;
+
+    /**
+     * Backtracking from @p x along -@p dx on |R|^2 (A x is @p Ax; A dx,
+     * computed here, goes into @p Adx; @p r is the residual at x): the
+     * first of the lengths 1, 1/2, ... (down to 1e-3) that decreases it
+     * enough, else the best of them, or 0 where none decreases it.
+     */
+    double
+    line_search(Evaluation                   &equations,
+                const dealii::Vector<double> &x,
+                const dealii::Vector<double> &dx,
+                const dealii::Vector<double> &Ax,
+                const dealii::Vector<double> &r,
+                dealii::Vector<double>       &Adx) const;
+
+    /// The multipliers of the iterate @p x (@p g its jumps) in
+    /// @p result, each component of @p mu0's layout, exactly zero where
+    /// open, and the zone's separations.
+    void
+    solution_state(const CohesiveZone                &zone,
+                   const dealii::Vector<double>      &g,
+                   const dealii::Vector<double>      &x,
+                   const dealii::BlockVector<double> &mu0,
+                   Result                            &result) const;
+
     /// y = A x (BLAS).
     void
     multiply(const dealii::Vector<double> &x, dealii::Vector<double> &y) const;
