@@ -192,7 +192,7 @@ namespace bilayer
             write(record, step == 0 ? total : timer);
             print_report(record);
             distribution.barrier();
-            record_cohesive_step(*zone, step, settled.iterations, lambda);
+            record_cohesive_step(*zone, step, settled, lambda);
             // (The springs of the last trial damage act from the next step
             // on: the record is the state solved, checked with the springs
             // it was solved with.)
@@ -430,9 +430,11 @@ namespace bilayer
     // state, is no tangent of the path).
     // With Cohesive/Method = newton, the Newton method on the interface
     // gives it instead where it converges.
-    const bool newton =
-      !to_onset && parameters.newton &&
-      newton_first_iterate(zone, lambda, fraction, target, control, work);
+    settled.newton_iterations =
+      !to_onset && parameters.newton ?
+        newton_first_iterate(zone, lambda, fraction, target, control, work) :
+        -1;
+    const bool newton = settled.newton_iterations >= 0;
     if (!newton && !to_onset && step >= 2)
       {
         iterate = zone.predicted_histories(fraction);
@@ -521,10 +523,10 @@ namespace bilayer
 
 
   void
-  Study::record_cohesive_step(const CohesiveZone &zone,
-                              const unsigned int  step,
-                              const unsigned int  iterations,
-                              const double        lambda)
+  Study::record_cohesive_step(const CohesiveZone   &zone,
+                              const unsigned int    step,
+                              const CohesiveSettle &settled,
+                              const double          lambda)
   {
     growth_steps.push_back(
       growth_step(cycle_records.back(), lambda, "cohesive"));
@@ -532,7 +534,8 @@ namespace bilayer
     const CohesiveZone::Summary s = zone.summary();
     CohesiveStep                row;
     row.step                   = step;
-    row.iterations             = iterations;
+    row.iterations             = settled.iterations;
+    row.newton_iterations      = settled.newton_iterations;
     row.load_factor            = lambda;
     row.conjugate_displacement = growth_steps.back().conjugate_displacement;
     // The work of the boundary forces along the path (trapezoidal rule per
@@ -572,8 +575,12 @@ namespace bilayer
          << ", process zone " << s.process_length;
     if (s.n_process > 0)
       rout << " (s " << s.process_start << " to " << s.process_end << ")";
-    rout << ", dissipated " << s.dissipated << ", " << iterations
-         << " secant iterations" << std::endl;
+    rout << ", dissipated " << s.dissipated << ", " << settled.iterations
+         << " secant iterations";
+    if (settled.newton_iterations >= 0)
+      rout << " from " << settled.newton_iterations
+           << " Newton iterations on the interface";
+    rout << std::endl;
   }
 
 
@@ -591,10 +598,13 @@ namespace bilayer
            "displacements uniform on each part); "
            "dissipated the zone's dissipated energy by the law at each node, "
            "dissipated_balance the work less the stored energy lambda q / 2; "
-           "lengths per unit width\n";
+           "lengths per unit width; iterations the secant iteration's, "
+           "newton_iterations those of the Newton method on the interface "
+           "that gave its first iterate (-1: not used)\n";
       o << "step,load_factor,q,iterations,largest_separation,largest_damage,"
            "cracked_length,process_length,process_start,process_end,"
-           "dissipated,work,dissipated_balance,process_nodes\n";
+           "dissipated,work,dissipated_balance,process_nodes,"
+           "newton_iterations\n";
       o << std::setprecision(12);
       for (const CohesiveStep &r : cohesive_steps)
         o << r.step << ',' << r.load_factor << ',' << r.conjugate_displacement
@@ -602,7 +612,8 @@ namespace bilayer
           << r.largest_damage << ',' << r.cracked_length << ','
           << r.process_length << ',' << r.process_start << ',' << r.process_end
           << ',' << r.dissipated << ',' << r.external_work << ','
-          << r.dissipated_balance << ',' << r.process_nodes << '\n';
+          << r.dissipated_balance << ',' << r.process_nodes << ','
+          << r.newton_iterations << '\n';
     });
     if (zone == nullptr)
       return;

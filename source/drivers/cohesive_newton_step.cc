@@ -26,7 +26,7 @@ namespace bilayer
     }
   } // namespace
 
-  bool
+  int
   Study::newton_first_iterate(CohesiveZone &zone,
                               double       &lambda,
                               const double  fraction,
@@ -56,7 +56,7 @@ namespace bilayer
             rout << "cohesive: the secant iteration alone (Cohesive/Method "
                     "= newton does not take "
                  << cohesive_newton_skipped << ")" << std::endl;
-            return false;
+            return -1;
           }
         Timer timer;
         cohesive_newton =
@@ -68,7 +68,7 @@ namespace bilayer
              << three_digits(timer.wall_time()) << " s" << std::endl;
       }
     if (!cohesive_newton)
-      return false;
+      return -1;
     // The jumps of the solutions without multipliers at lambda.
     BlockVector<double> zero, g0;
     interface.space().initialize(zero);
@@ -104,8 +104,8 @@ namespace bilayer
       zone, g0, model.multipliers(), lambda, step, 100, 1e-8);
     if (scene.output.progress_interval > 0)
       pcout << "  Newton on the interface: " << result.iterations
-            << " iterations, residual " << three_digits(result.residual)
-            << ", " << three_digits(timer.wall_time()) << " s, "
+            << " iterations, residual " << three_digits(result.residual) << ", "
+            << three_digits(timer.wall_time()) << " s, "
             << cohesive_newton->factorisations()
             << " factorisations of the Jacobian so far"
             << (result.converged ? "" :
@@ -113,12 +113,12 @@ namespace bilayer
                                    "iteration goes on alone)")
             << std::endl;
     if (!result.converged)
-      return false;
+      return -1;
     lambda = result.lambda;
     set_load_factor(lambda);
     model.set_multipliers(result.mu);
     zone.try_separations(result.delta, 1.);
     model.set_cohesive_compliance(zone.compliance(), parameters.interface);
-    return true;
+    return result.iterations;
   }
 } // namespace bilayer

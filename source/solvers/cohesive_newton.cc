@@ -415,6 +415,7 @@ namespace bilayer
                               const Vector<double> &dx,
                               const Vector<double> &Ax,
                               const Vector<double> &r,
+                              const bool            damped,
                               Vector<double>       &Adx) const
   {
     const unsigned int n = size();
@@ -441,8 +442,11 @@ namespace bilayer
             best        = m;
             best_length = length;
           }
-        if (m <= (1 - 1e-4 * length) * merit)
-          break;
+        // (Undamped, the full step unless its residual is not finite or
+        // grows a hundred million times.)
+        if (m <= (1 - 1e-4 * length) * merit ||
+            (!damped && length == 1 && m <= 1e8 * merit))
+          return length;
       }
     return best < merit ? best_length : 0.;
   }
@@ -566,7 +570,11 @@ namespace bilayer
             kept.lu.reset();
             return result;
           }
-        double best_length = line_search(equations, x, dx, Ax, r, Adx);
+        // (Pure semismooth Newton steps first: across the law's kinks the
+        // residual's norm is a poor guide, and damped steps crawl; after
+        // 30 iterations, damped ones.)
+        double best_length =
+          line_search(equations, x, dx, Ax, r, result.iterations >= 30, Adx);
         // (No decrease along the direction: a kink of the law between the
         // iterate and the solution; the full step, a few times per solve.)
         if (!(best_length > 0))

@@ -247,8 +247,12 @@ def newton(bilayer, files, work):
     print("  Newton against secant: largest relative difference %.3g" % worst)
     check("newton: the curve of the secant iteration (8 steps, 1e-5)",
           len(a) == len(b) == 8 and worst <= 1e-5)
-    check("newton: steps 2 on settle in one secant iteration",
-          all(int(r["iterations"]) == 1 for r in a[2:]))
+    check("newton: steps 2 on settle in one secant iteration from the "
+          "Newton method's state (newton_iterations >= 0; -1 on every step "
+          "of the secant iteration alone)",
+          all(int(r["iterations"]) == 1 and int(r["newton_iterations"]) >= 0
+              for r in a[2:]) and
+          all(int(r["newton_iterations"]) == -1 for r in b))
     check("newton: each step dissipates the increment (1e-9)",
           all(abs(float(r["dissipated"]) - 4e-3 * int(r["step"])) <= 4e-12
               for r in a))

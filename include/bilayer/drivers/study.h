@@ -259,7 +259,10 @@ namespace bilayer
     struct CohesiveStep
     {
       unsigned int step = 0, iterations = 0;
-      double       load_factor = 0, conjugate_displacement = 0;
+      /// The Newton method's iterations (-1 where it was not used or did
+      /// not converge).
+      int    newton_iterations = -1;
+      double load_factor = 0, conjugate_displacement = 0;
       /// The external work along the path (trapezoidal rule over the
       /// steps) and the energy dissipated by the energy balance: work
       /// less the stored energy lambda q / 2 (Clapeyron).
@@ -288,7 +291,10 @@ namespace bilayer
     struct CohesiveSettle
     {
       unsigned int iterations = 0;
-      bool         exhausted  = false;
+      /// The iterations of the Newton method that gave the first iterate
+      /// (-1 where it did not).
+      int  newton_iterations = -1;
+      bool exhausted         = false;
       /// Whether the iteration settled (false only under path following:
       /// the caller halves the increment), and the last damage change.
       bool   converged = true;
@@ -320,10 +326,10 @@ namespace bilayer
      * @p fraction of the separation increment at the node @p control, which
      * it picks where negative). Where it converges, the zone's trial state,
      * the springs, the multipliers and the load factor are its solution's
-     * and it returns true; else nothing changes. The solves it spends go
-     * into @p work.
+     * and it returns its iterations; else -1, and nothing changes. The
+     * solves it spends go into @p work.
      */
-    bool
+    int
     newton_first_iterate(CohesiveZone &zone,
                          double       &lambda,
                          const double  fraction,
@@ -356,10 +362,10 @@ namespace bilayer
     /// The GrowthStep and the row of cohesive.csv of the step just
     /// recorded, the files, and its line in the terminal.
     void
-    record_cohesive_step(const CohesiveZone &zone,
-                         const unsigned int  step,
-                         const unsigned int  iterations,
-                         const double        lambda);
+    record_cohesive_step(const CohesiveZone   &zone,
+                         const unsigned int    step,
+                         const CohesiveSettle &settled,
+                         const double          lambda);
 
     /// cohesive.csv (the rows so far), and with @p zone the zone's nodes
     /// of step @p step (cohesive-NNNN.csv).

@@ -223,8 +223,10 @@ namespace bilayer
     add_columns(const std::vector<unsigned int> &differ) const;
 
     /**
-     * Backtracking from @p x along -@p dx on |R|^2 (A x is @p Ax; A dx,
-     * computed here, goes into @p Adx; @p r is the residual at x): the
+     * The step length from @p x along -@p dx (A x is @p Ax; A dx, computed
+     * here, goes into @p Adx; @p r is the residual at x). Without
+     * @p damped, 1 unless the full step's residual is not finite or its
+     * |R|^2 grows more than 1e8 times; else backtracking on |R|^2: the
      * first of the lengths 1, 1/2, ... (down to 1e-3) that decreases it
      * enough, else the best of them, or 0 where none decreases it.
      */
@@ -234,6 +236,7 @@ namespace bilayer
                 const dealii::Vector<double> &dx,
                 const dealii::Vector<double> &Ax,
                 const dealii::Vector<double> &r,
+                const bool                    damped,
                 dealii::Vector<double>       &Adx) const;
 
     /// The multipliers of the iterate @p x (@p g its jumps) in
