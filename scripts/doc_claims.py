@@ -116,6 +116,10 @@ COMMANDS = {
     "friction_study": {"command": "scripts/friction_study --output {out}/f"},
     # docs/performance.md: the cost of a growth curve (about a minute).
     "bench_growth": {"command": "scripts/bench_growth --no-outputs --repeat 2 --output {out}/b"},
+    # docs/cohesive.md: 100 cohesive steps against one static solve with
+    # the Newton method (about 20 s, and 90 s at 800 cells).
+    "cohesive_bench_320": {"command": "scripts/cohesive_study --bench 320 --output {out}/c320"},
+    "cohesive_bench_800": {"command": "scripts/cohesive_study --bench 800 --output {out}/c800"},
     # docs/tour.md: the newcomer's path after the set-up (a few seconds).
     "tour": {"command": "scripts/tour --output {out}/t --bilayer {bilayer}"},
     # docs/scenes.md: the DCB debonding under a rising force (a few seconds).
@@ -397,6 +401,21 @@ CLAIMS = [
     {"id": "fracture.friction.time", "doc": "docs/fracture.md", "fast": False,
      "pattern": Q("(15 runs in {} s; 2-core x86_64 dev VM"), "command": "friction_study",
      "extract": {"regex": r"bilayer runs in (\d+) s"}, "tolerance": ("factor", 2)},
+    {"id": "cohesive.bench_320.ratio", "doc": "docs/cohesive.md", "fast": False,
+     "pattern": Q("with `Method = newton` 8.0 s, **{} times** the static solve"),
+     "command": "cohesive_bench_320",
+     "extract": {"regex": r"newton: 100 cohesive steps \S+ s \((\S+) times"},
+     "tolerance": ("factor", 2)},
+    {"id": "cohesive.bench_320.secant_iterations", "doc": "docs/cohesive.md", "fast": False,
+     "pattern": Q("**10.5 times** the static solve ({} secant"),
+     "command": "cohesive_bench_320",
+     "extract": {"regex": r"newton: .*?\((?:\S+) times; (\d+) secant iterations"},
+     "tolerance": ("exact",)},
+    {"id": "cohesive.bench_800.ratio", "doc": "docs/cohesive.md", "fast": False,
+     "pattern": Q("the 100 steps 49.9 s, **{} times** (102"),
+     "command": "cohesive_bench_800",
+     "extract": {"regex": r"newton: 100 cohesive steps \S+ s \((\S+) times"},
+     "tolerance": ("factor", 2)},
     {"id": "performance.growth.ratio", "doc": "docs/performance.md", "fast": False,
      "pattern": Q("On the otherwise idle machine (ratio {}, the performance.growth.ratio"),
      "command": "bench_growth", "extract": {"regex": r"wall \(b\) / wall \(a\) = (\S+)"},

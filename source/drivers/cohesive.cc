@@ -423,19 +423,15 @@ namespace bilayer
                          "the outer solve of " + what +
                            " did not converge: " + record.result.message);
     };
-    // The first iterate: the histories extrapolated from the last two
-    // steps, the last increment times the fraction of this one (a step
-    // that starts at the elastic limit starts intact; the second step
-    // starts from the first: the first's increment, from the unloaded
-    // state, is no tangent of the path).
-    // With Cohesive/Method = newton, the Newton method on the interface
-    // gives it instead where it converges.
+    // The first iterate: the Newton method's solution (Method = newton)
+    // where it converges, else the histories extrapolated from the last
+    // two steps by the fraction of this one (from the third step: the
+    // first's increment, from the unloaded state, is no tangent).
     settled.newton_iterations =
       !to_onset && parameters.newton ?
         newton_first_iterate(zone, lambda, fraction, target, control, work) :
         -1;
-    const bool newton = settled.newton_iterations >= 0;
-    if (!newton && !to_onset && step >= 2)
+    if (settled.newton_iterations < 0 && !to_onset && step >= 2)
       {
         iterate = zone.predicted_histories(fraction);
         zone.set_trial_histories(iterate);
