@@ -43,7 +43,10 @@ namespace bilayer
     if (!cohesive_newton && cohesive_newton_skipped.empty())
       {
         cohesive_newton_skipped =
-          CohesiveNewton::unsupported(interface, scene.contact.frictional());
+          CohesiveNewton::unsupported(interface,
+                                      scene.contact.frictional(),
+                                      parameters.control ==
+                                        CohesiveControl::load_factor);
         unsigned int n = 0;
         for (unsigned int c = 0; c < interface.space().set().size(); ++c)
           n += interface.space().set().free(c);

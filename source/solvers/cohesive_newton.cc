@@ -16,8 +16,14 @@ namespace bilayer
   using namespace dealii;
 
   std::string
-  CohesiveNewton::unsupported(const Interface &interface, const bool frictional)
+  CohesiveNewton::unsupported(const Interface &interface,
+                              const bool       frictional,
+                              const bool       prescribed)
   {
+    if (prescribed)
+      return "prescribed load factors (a softening zone has several "
+             "equilibria at one load factor; the secant iteration follows "
+             "the path's)";
     if (frictional)
       return "friction on the crack faces (the secant iteration with the "
              "outer solver takes it)";
@@ -35,8 +41,9 @@ namespace bilayer
                                  const Interface    &interface,
                                  const CohesiveZone &zone)
   {
-    AssertThrow(unsupported(interface, false).empty(),
-                ExcMessage("CohesiveNewton: " + unsupported(interface, false)));
+    AssertThrow(unsupported(interface, false, false).empty(),
+                ExcMessage("CohesiveNewton: " +
+                           unsupported(interface, false, false)));
     const MultiplierSet &set = interface.space().set();
     BlockVector<double>  mu;
     set.initialize(mu);

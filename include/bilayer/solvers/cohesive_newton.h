@@ -52,8 +52,12 @@ namespace bilayer
    * checks it with the outer solver: a state the Newton method got right
    * settles in one solve.
    *
-   * Scenes it does not take (Coulomb or Tresca friction: the secant
-   * iteration with the outer solver does) report why in unsupported().
+   * Scenes it does not take report why in unsupported(): Coulomb or
+   * Tresca friction, and prescribed load factors (a softening zone has
+   * several equilibria at one load factor, and full Newton steps from the
+   * last state can land on another branch than the one the path follows:
+   * on random scenes they broke whole zones below the peak); the secant
+   * iteration with the outer solver takes them.
    */
   class CohesiveNewton
   {
@@ -67,10 +71,13 @@ namespace bilayer
     };
 
     /// Why @p interface's multipliers cannot be solved by this method
-    /// (@p frictional: the scene's crack faces have friction), or an empty
+    /// (@p frictional: the scene's crack faces have friction;
+    /// @p prescribed: the steps are prescribed load factors), or an empty
     /// string.
     static std::string
-    unsupported(const Interface &interface, const bool frictional);
+    unsupported(const Interface &interface,
+                const bool       frictional,
+                const bool       prescribed);
 
     /**
      * The matrix A of the components of @p interface that carry a
