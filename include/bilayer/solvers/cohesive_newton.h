@@ -22,9 +22,10 @@ namespace bilayer
    * multipliers and the load factor, g = lambda d - A mu (proportional
    * loads; g = g0 - A mu at a prescribed load factor), with A the jumps of
    * the homogeneous solves with unit multipliers: a dense matrix over the
-   * components that carry a multiplier, built once from the subproblems'
-   * factorisations (one solve per column; on Sigma, two dense triangular
-   * solves per subproblem). The step's equations are then a small dense
+   * components that carry a multiplier or lie in the zone, built once
+   * from the subproblems' factorisations (on Sigma, 64 columns at a time:
+   * two blocked dense triangular solves per subproblem and batch). The
+   * step's equations are then a small dense
    * system in (mu, lambda):
    *  - a glued component: g = 0;
    *  - a contact component: min(mu, -k0 g) = 0 (mu >= 0, g <= 0, mu g = 0);
@@ -38,8 +39,9 @@ namespace bilayer
    *    committed history plus the increment (separation control), or the
    *    load factor is given.
    * Each Newton step solves the dense Jacobian (a softening tangent makes
-   * it indefinite, which the dual problem's active-set method cannot take)
-   * and backtracks on the residual's norm. Most rows never change (glued
+   * it indefinite, which the dual problem's active-set method cannot take);
+   * the first 30 are taken whole (line_search()), later ones backtrack on
+   * the residual's norm. Most rows never change (glued
    * components, intact nodes, open contact): the LU factorisation (partial
    * pivoting) of one Jacobian is kept, across steps, and a Newton step
    * solves with it and the Sherman-Morrison-Woodbury formula for the rows
