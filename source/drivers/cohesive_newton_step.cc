@@ -43,8 +43,7 @@ namespace bilayer
     if (!cohesive_newton && cohesive_newton_skipped.empty())
       {
         cohesive_newton_skipped =
-          CohesiveNewton::unsupported(interface,
-                                      scene.contact.frictional(),
+          CohesiveNewton::unsupported(scene.contact.frictional(),
                                       parameters.control ==
                                         CohesiveControl::load_factor);
         unsigned int n = 0;

@@ -16,9 +16,7 @@ namespace bilayer
   using namespace dealii;
 
   std::string
-  CohesiveNewton::unsupported(const Interface &interface,
-                              const bool       frictional,
-                              const bool       prescribed)
+  CohesiveNewton::unsupported(const bool frictional, const bool prescribed)
   {
     if (prescribed)
       return "prescribed load factors (a softening zone has several "
@@ -27,12 +25,6 @@ namespace bilayer
     if (frictional)
       return "friction on the crack faces (the secant iteration with the "
              "outer solver takes it)";
-    const MultiplierSpace &space = interface.space();
-    for (const MultiplierSet *set : {&space.set(), &space.crack_kinds()})
-      for (unsigned int i = 0; i < set->size(); ++i)
-        if (set->kind(i) == MultiplierSet::Kind::friction)
-          return "friction on the interfaces (the secant iteration with the "
-                 "outer solver takes it)";
     return "";
   }
 
@@ -41,9 +33,6 @@ namespace bilayer
                                  const Interface    &interface,
                                  const CohesiveZone &zone)
   {
-    AssertThrow(unsupported(interface, false, false).empty(),
-                ExcMessage("CohesiveNewton: " +
-                           unsupported(interface, false, false)));
     const MultiplierSet &set = interface.space().set();
     BlockVector<double>  mu;
     set.initialize(mu);

@@ -160,14 +160,6 @@ namespace bilayer
       return set_;
     }
 
-    /// The set as the crack's kinds make it (what a fully damaged node of
-    /// a cohesive zone takes back).
-    const MultiplierSet &
-    crack_kinds() const
-    {
-      return crack_set;
-    }
-
     /// Project onto the multiplier set.
     void
     project(dealii::BlockVector<double> &multipliers) const

@@ -72,14 +72,12 @@ namespace bilayer
       dissipation
     };
 
-    /// Why @p interface's multipliers cannot be solved by this method
-    /// (@p frictional: the scene's crack faces have friction;
-    /// @p prescribed: the steps are prescribed load factors), or an empty
-    /// string.
+    /// Why a scene's steps cannot be solved by this method (@p frictional:
+    /// its crack faces have friction, the only source of friction
+    /// components; @p prescribed: the steps are prescribed load factors),
+    /// or an empty string.
     static std::string
-    unsupported(const Interface &interface,
-                const bool       frictional,
-                const bool       prescribed);
+    unsupported(const bool frictional, const bool prescribed);
 
     /**
      * The matrix A of the components of @p interface that carry a
